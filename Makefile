@@ -1,0 +1,71 @@
+# facet - one non-recursive Makefile.
+#   make            build/libfacet.a, build/libfacet.so, build/facet
+#   make check      every test (gcc, clang, sanitizers, cross ports); closing
+#                   line "N passed, N failed, N skipped"
+#   make report     accuracy sweep (+ bench) -> build/report/
+#   make install PREFIX=/usr/local
+# Variables: CC, BUILD (output dir), CFLAGS (optimisation/debug/sanitizers).
+
+CC      ?= cc
+BUILD   ?= build
+CFLAGS  ?= -O2 -g
+PREFIX  ?= /usr/local
+AR      ?= ar
+
+# Baseline flags for every object: no ISA flags here (ports add their own),
+# no fast-math, no contraction (fma only where the code asks for it).
+WARN      = -std=c99 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes
+BASEFLAGS = $(WARN) -ffp-contract=off -fno-fast-math -Iinclude $(CFLAGS)
+PICFLAGS  = -fPIC
+
+LIB_SRC  := $(wildcard src/*.c)
+LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
+CLI_SRC  := $(wildcard src/cli/*.c)
+CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
+TEST_SRC := $(wildcard tests/test_*.c)
+TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+HEADERS  := $(wildcard include/*.h include/facet/*.h include/facet/detail/*.h) src/kernels.def
+
+.PHONY: all lib tests check report install clean
+all: lib $(BUILD)/facet
+lib: $(BUILD)/libfacet.a $(BUILD)/libfacet.so
+
+$(BUILD)/src/%.o: src/%.c $(HEADERS)
+	@mkdir -p $(dir $@)
+	$(CC) $(BASEFLAGS) $(PICFLAGS) -c $< -o $@
+
+$(BUILD)/libfacet.a: $(LIB_OBJ)
+	@rm -f $@
+	$(AR) rcs $@ $^
+
+$(BUILD)/libfacet.so: $(LIB_OBJ)
+	$(CC) $(CFLAGS) -shared -Wl,-soname,libfacet.so.0 -o $@ $^ -lm
+
+$(BUILD)/facet: $(CLI_OBJ) $(BUILD)/libfacet.a
+	$(CC) $(CFLAGS) -o $@ $^ -lm
+
+$(BUILD)/tests/%: tests/%.c tests/harness.h tests/sample.h $(BUILD)/libfacet.a
+	@mkdir -p $(dir $@)
+	$(CC) $(BASEFLAGS) -D_DEFAULT_SOURCE -o $@ $< $(BUILD)/libfacet.a -lm
+
+tests: $(TEST_BIN) $(BUILD)/facet
+
+check:
+	@tests/check.sh
+
+report: all
+	@tests/report.sh $(BUILD)
+
+install: lib
+	install -d $(DESTDIR)$(PREFIX)/include/facet/detail $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -m 644 include/facet.h $(DESTDIR)$(PREFIX)/include/
+	install -m 644 include/facet/*.h $(DESTDIR)$(PREFIX)/include/facet/
+	install -m 644 include/facet/detail/*.h $(DESTDIR)$(PREFIX)/include/facet/detail/
+	install -m 644 $(BUILD)/libfacet.a $(DESTDIR)$(PREFIX)/lib/
+	install -m 755 $(BUILD)/libfacet.so $(DESTDIR)$(PREFIX)/lib/libfacet.so.0
+	ln -sf libfacet.so.0 $(DESTDIR)$(PREFIX)/lib/libfacet.so
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(shell sed -n 's/^#define FACET_VERSION "\(.*\)"/\1/p' include/facet.h)|' \
+	    src/facet.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/facet.pc
+
+clean:
+	rm -rf build

@@ -1,0 +1,15 @@
+/* facet/common.h - the domain constants every format and port shares. */
+#ifndef FACET_COMMON_H
+#define FACET_COMMON_H
+
+/* Smallest GGX alpha (alpha = perceptual roughness^2) the kernels evaluate:
+ * 2^-10, i.e. perceptual roughness 1/32.  Smaller alpha (and 0, NaN) is
+ * raised to it; alpha above 1 is lowered to 1. */
+#define FACET_ALPHA_MIN 0.0009765625f
+
+/* Smallest N.L and N.V the two-cosine kernels evaluate: 2^-20 (about
+ * 9.5e-7, 89.99995 degrees).  It keeps 1/(N.L N.V)-type terms finite; a
+ * rasterizer multiplies the BRDF by N.L, so the product still goes to 0. */
+#define FACET_COS_MIN 9.5367431640625e-07f
+
+#endif

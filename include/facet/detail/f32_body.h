@@ -1,0 +1,305 @@
+/* facet/detail/f32_body.h - the one body of every f32 kernel.
+ *
+ * Deliberately without an include guard: each port header includes it once,
+ * after defining
+ *   FACET_V        the vector (or scalar) type,
+ *   FACET_OP(op)   the name of the port's op `op` (set add sub mul fma fnma
+ *                  min max sel_lt clamp rcp rsqrt sqr_err, see facet/scalar.h),
+ *   FACET_K(k)     the name to give kernel `k` in this port.
+ * Contracts (formula, domain, measured error, cost) are in facet.h; the
+ * comments here explain the numerics.
+ */
+#ifndef FACET_V
+#error "include a port header (facet/scalar.h, facet/sse2.h, ...), not this file"
+#endif
+
+#define V_ FACET_V
+#define C_(x) FACET_OP(set)(x)
+#define ADD_ FACET_OP(add)
+#define SUB_ FACET_OP(sub)
+#define MUL_ FACET_OP(mul)
+#define FMA_ FACET_OP(fma)
+#define FNMA_ FACET_OP(fnma)
+#define MIN_ FACET_OP(min)
+#define MAX_ FACET_OP(max)
+#define CLAMP_ FACET_OP(clamp)
+#define RCP_ FACET_OP(rcp)
+#define RSQRT_ FACET_OP(rsqrt)
+
+/* 1/pi, 2/pi, 1.05/pi rounded to float. */
+#define FACET_INV_PI_ 0.318309886f
+#define FACET_2_INV_PI_ 0.636619772f
+
+/* Domain handling, shared by all kernels: NaN and -Inf go to the low end. */
+static inline V_ FACET_K(x_unit)(V_ x) { return CLAMP_(x, C_(0.0f), C_(1.0f)); }
+static inline V_ FACET_K(x_cos)(V_ x) { return CLAMP_(x, C_(FACET_COS_MIN), C_(1.0f)); }
+static inline V_ FACET_K(x_alpha)(V_ x) { return CLAMP_(x, C_(FACET_ALPHA_MIN), C_(1.0f)); }
+static inline V_ FACET_K(x_lov)(V_ x) { return CLAMP_(x, C_(-1.0f), C_(1.0f)); }
+
+/* 1 - (1 - x)^5 without cancellation at small x: with y = 1 - x it is
+ * x (1 + y + y^2 + y^3 + y^4), a sum of positive terms. */
+static inline V_ FACET_K(x_one_minus_pow5)(V_ x)
+{
+    V_ y = SUB_(C_(1.0f), x);
+    V_ p = ADD_(y, C_(1.0f));
+    p = FMA_(p, y, C_(1.0f));
+    p = FMA_(p, y, C_(1.0f));
+    p = FMA_(p, y, C_(1.0f));
+    return MUL_(x, p);
+}
+
+/* alpha^2 (1 - n^2) + n^2 = alpha^2 + (1 - alpha^2) n^2, the radicand of the
+ * exact Smith terms, with 1 - n^2 formed as (1-n)(1+n): all terms >= 0. */
+static inline V_ FACET_K(x_smith_w)(V_ n, V_ a2)
+{
+    V_ q = MUL_(SUB_(C_(1.0f), n), ADD_(C_(1.0f), n));
+    return FMA_(a2, q, MUL_(n, n));
+}
+
+static inline V_ FACET_K(x_sqrt)(V_ w) { return MUL_(w, RSQRT_(w)); }
+
+/* ---- identities ------------------------------------------------------ */
+
+/* N.H = (N.L + N.V) / |L + V|, |L + V|^2 = 2 + 2 L.V.  t = 1 + L.V is raised
+ * to (N.L + N.V)^2 / 2 where the triple is inconsistent, which caps N.H at 1
+ * and keeps 2t > 0 (N.L, N.V >= FACET_COS_MIN). */
+static inline V_ FACET_K(noh_from_dots)(V_ nol, V_ nov, V_ lov)
+{
+    V_ s = ADD_(FACET_K(x_cos)(nol), FACET_K(x_cos)(nov));
+    V_ t = ADD_(C_(1.0f), FACET_K(x_lov)(lov));
+    V_ t2 = MAX_(ADD_(t, t), MUL_(s, s));
+    return MIN_(MUL_(s, RSQRT_(t2)), C_(1.0f));
+}
+
+/* L.H = |L + V| / 2 = sqrt((1 + L.V) / 2) = t * rsqrt(2t); 2t is floored at
+ * 2^-100 only so that L.V = -1 gives 0 * finite = 0. */
+static inline V_ FACET_K(loh_from_dots)(V_ lov)
+{
+    V_ t = ADD_(C_(1.0f), FACET_K(x_lov)(lov));
+    V_ t2 = MAX_(ADD_(t, t), C_(7.88860905e-31f));
+    return MIN_(MUL_(t, RSQRT_(t2)), C_(1.0f));
+}
+
+/* ---- Fresnel ---------------------------------------------------------- */
+
+/* f0 + (1 - f0) y^5 with y given as the unevaluated sum yh + yl:
+ * y^5 ~ yh^4 (yh + 5 yl), so the rounding of y is not amplified five times. */
+static inline V_ FACET_K(x_fresnel_y)(V_ f0, V_ yh, V_ yl)
+{
+    V_ y2 = MUL_(yh, yh);
+    V_ y5 = MUL_(MUL_(y2, y2), FMA_(C_(5.0f), yl, yh));
+    return FMA_(SUB_(C_(1.0f), f0), y5, f0);
+}
+
+/* y = 1 - c exactly as yh + yl (Fast2Sum: |1| >= |c|). */
+static inline V_ FACET_K(x_fresnel)(V_ f0, V_ c)
+{
+    V_ yh = SUB_(C_(1.0f), c);
+    V_ yl = SUB_(SUB_(C_(1.0f), yh), c);
+    return FACET_K(x_fresnel_y)(f0, yh, yl);
+}
+
+static inline V_ FACET_K(fresnel_schlick)(V_ f0, V_ c)
+{
+    return FACET_K(x_fresnel)(FACET_K(x_unit)(f0), FACET_K(x_unit)(c));
+}
+
+/* ---- GGX D ------------------------------------------------------------ */
+
+/* D = alpha^2 / (pi d^2), d = (1 - n^2) + (n alpha)^2 with 1 - n^2 as
+ * (1-n)(1+n), so d keeps full relative precision at the peak (d -> alpha^2).
+ * Written D = (1/pi) (alpha/d)^2: alpha/d <= 1/alpha_min, no overflow. */
+static inline V_ FACET_K(ggx_d)(V_ noh, V_ alpha)
+{
+    V_ n = FACET_K(x_unit)(noh);
+    V_ a = FACET_K(x_alpha)(alpha);
+    V_ na = MUL_(n, a);
+    V_ d = FMA_(SUB_(C_(1.0f), n), ADD_(C_(1.0f), n), MUL_(na, na));
+    V_ k = MUL_(a, RCP_(d));
+    return MUL_(MUL_(k, k), C_(FACET_INV_PI_));
+}
+
+/* ---- Smith, exact ------------------------------------------------------ */
+
+/* G1 = 2n / (n + sqrt(alpha^2 + (1 - alpha^2) n^2)) */
+static inline V_ FACET_K(smith_g1)(V_ nov, V_ alpha)
+{
+    V_ n = FACET_K(x_unit)(nov);
+    V_ a = FACET_K(x_alpha)(alpha);
+    V_ r = FACET_K(x_sqrt)(FACET_K(x_smith_w)(n, MUL_(a, a)));
+    return MIN_(MUL_(ADD_(n, n), RCP_(ADD_(n, r))), C_(1.0f));
+}
+
+/* nv sqrt(w(nl)) + nl sqrt(w(nv)): the height-correlated denominator,
+ * G2 = 2 nl nv / den, Vis = G2 / (4 nl nv) = 0.5 / den. */
+static inline V_ FACET_K(x_g2_den)(V_ nl, V_ nv, V_ a)
+{
+    V_ a2 = MUL_(a, a);
+    V_ rl = FACET_K(x_sqrt)(FACET_K(x_smith_w)(nl, a2));
+    V_ rv = FACET_K(x_sqrt)(FACET_K(x_smith_w)(nv, a2));
+    return FMA_(nv, rl, MUL_(nl, rv));
+}
+
+static inline V_ FACET_K(smith_g2)(V_ nol, V_ nov, V_ alpha)
+{
+    V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
+    V_ den = FACET_K(x_g2_den)(nl, nv, FACET_K(x_alpha)(alpha));
+    V_ p = MUL_(nl, nv);
+    return MIN_(MUL_(ADD_(p, p), RCP_(den)), C_(1.0f));
+}
+
+static inline V_ FACET_K(smith_vis)(V_ nol, V_ nov, V_ alpha)
+{
+    V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
+    V_ den = FACET_K(x_g2_den)(nl, nv, FACET_K(x_alpha)(alpha));
+    return MUL_(C_(0.5f), RCP_(den));
+}
+
+/* G1(L) G1(V) = 4 nl nv / ((nl + sqrt w(nl)) (nv + sqrt w(nv))): one reciprocal. */
+static inline V_ FACET_K(smith_g2_uncorrelated)(V_ nol, V_ nov, V_ alpha)
+{
+    V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
+    V_ a = FACET_K(x_alpha)(alpha);
+    V_ a2 = MUL_(a, a);
+    V_ dl = ADD_(nl, FACET_K(x_sqrt)(FACET_K(x_smith_w)(nl, a2)));
+    V_ dv = ADD_(nv, FACET_K(x_sqrt)(FACET_K(x_smith_w)(nv, a2)));
+    V_ p = MUL_(nl, nv);
+    return MIN_(MUL_(MUL_(C_(4.0f), p), RCP_(MUL_(dl, dv))), C_(1.0f));
+}
+
+/* ---- Smith, Hammon's approximation ---------------------------------------- */
+
+/* G1 ~ 2n / (n (2 - alpha) + alpha)  (= Schlick-GGX with k = alpha/2) */
+static inline V_ FACET_K(smith_g1_hammon)(V_ nov, V_ alpha)
+{
+    V_ n = FACET_K(x_unit)(nov);
+    V_ a = FACET_K(x_alpha)(alpha);
+    V_ den = FMA_(n, SUB_(C_(2.0f), a), a);
+    return MIN_(MUL_(ADD_(n, n), RCP_(den)), C_(1.0f));
+}
+
+/* lerp(2 nl nv, nl + nv, alpha) written (1 - alpha) 2 nl nv + alpha (nl + nv):
+ * both terms >= 0, so no cancellation; >= alpha_min * 2 FACET_COS_MIN. */
+static inline V_ FACET_K(x_hammon_den)(V_ nl, V_ nv, V_ a)
+{
+    V_ p = MUL_(nl, nv);
+    return FMA_(a, ADD_(nl, nv), MUL_(SUB_(C_(1.0f), a), ADD_(p, p)));
+}
+
+static inline V_ FACET_K(smith_g2_hammon)(V_ nol, V_ nov, V_ alpha)
+{
+    V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
+    V_ den = FACET_K(x_hammon_den)(nl, nv, FACET_K(x_alpha)(alpha));
+    V_ p = MUL_(nl, nv);
+    return MIN_(MUL_(ADD_(p, p), RCP_(den)), C_(1.0f));
+}
+
+static inline V_ FACET_K(smith_vis_hammon)(V_ nol, V_ nov, V_ alpha)
+{
+    V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
+    V_ den = FACET_K(x_hammon_den)(nl, nv, FACET_K(x_alpha)(alpha));
+    return MUL_(C_(0.5f), RCP_(den));
+}
+
+/* ---- Hammon's GGX diffuse --------------------------------------------------- */
+
+/* albedo (single + albedo multi) from the pieces the caller shares:
+ *   facing = 0.5 + 0.5 L.V = t/2
+ *   rough  = facing (0.9 - 0.4 facing) (1 + 0.5/N.H)
+ *   smooth = 1.05 (1 - (1-nl)^5) (1 - (1-nv)^5)
+ *   single = ((1 - alpha) smooth + alpha rough) / pi
+ *   multi  = 0.1159 alpha */
+static inline V_ FACET_K(x_diffuse)(V_ nl, V_ nv, V_ t, V_ inv_nh, V_ a, V_ alb)
+{
+    V_ facing = MUL_(C_(0.5f), t);
+    V_ rough = MUL_(MUL_(facing, FNMA_(C_(0.4f), facing, C_(0.9f))),
+                    FMA_(C_(0.5f), inv_nh, C_(1.0f)));
+    V_ smooth = MUL_(MUL_(C_(1.05f), FACET_K(x_one_minus_pow5)(nl)),
+                     FACET_K(x_one_minus_pow5)(nv));
+    V_ single = FMA_(a, rough, MUL_(SUB_(C_(1.0f), a), smooth));
+    V_ multi = MUL_(C_(0.364110589f), a); /* 0.1159 pi: single is not yet /pi */
+    return MUL_(MUL_(alb, C_(FACET_INV_PI_)), FMA_(alb, multi, single));
+}
+
+static inline V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
+{
+    V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
+    V_ s = ADD_(nl, nv);
+    V_ t = MAX_(ADD_(C_(1.0f), FACET_K(x_lov)(lov)), MUL_(C_(0.5f), MUL_(s, s)));
+    V_ nh = MIN_(MUL_(s, RSQRT_(ADD_(t, t))), C_(1.0f));
+    return FACET_K(x_diffuse)(nl, nv, t, RCP_(nh), FACET_K(x_alpha)(alpha),
+                              FACET_K(x_unit)(albedo));
+}
+
+/* ---- the whole model ------------------------------------------------------ */
+
+/* D(N.H) Vis_hammon F(f0, L.H) + diffuse_hammon, from the three dots.
+ *
+ * D is ill-conditioned in N.H at the peak for small alpha (d -> alpha^2), so
+ * N.H is never formed for it.  With s = N.L + N.V and t = 1 + L.V:
+ *   1 - N.H^2 = num / 2t,  num = 2t - s^2  (= |tangential part of L+V|^2)
+ *   d = (1 - N.H^2) + alpha^2 N.H^2 = e / 2t,  e = num + alpha^2 s^2
+ *   D = alpha^2 / (pi d^2) = (4/pi) (alpha t / e)^2.
+ * num cancels at the peak, so it is formed exactly: s and t as unevaluated
+ * sums (Fast2Sum), s^2 as p + pe with pe the exact rounding error.
+ * Likewise 1 - L.H, which F raises to the fifth power, is formed without
+ * cancellation as (1 - L.H^2) / (1 + L.H) = (2 - t) / (2 (1 + L.H)).
+ * With Vis = 0.5/m (m = Hammon's lerp) and L.H = t rsqrt(2t):
+ *   spec = (2/pi) (alpha t / e)^2 F / m. */
+static inline V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_ albedo)
+{
+    V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
+    V_ lv = FACET_K(x_lov)(lov);
+    V_ a = FACET_K(x_alpha)(alpha);
+    V_ big = MAX_(nl, nv), small = MIN_(nl, nv);
+    V_ sh = ADD_(big, small);
+    V_ sl = SUB_(small, SUB_(sh, big));
+    V_ th = ADD_(C_(1.0f), lv);
+    V_ tl = SUB_(lv, SUB_(th, C_(1.0f)));
+    V_ p = MUL_(sh, sh);
+    V_ pe = FACET_OP(sqr_err)(sh, p);
+    /* 2t - s^2 = (2th - p) + (2tl - (s^2 - p)); 2th - p is exact near the
+     * peak (Sterbenz), the rest is tiny; s^2 - p = pe + sl (2sh + sl). */
+    V_ s2lo = FMA_(sl, ADD_(ADD_(sh, sh), sl), pe); /* s^2 - p */
+    V_ num = MAX_(ADD_(SUB_(ADD_(th, th), p), SUB_(ADD_(tl, tl), s2lo)), C_(0.0f));
+    V_ t = MAX_(th, MUL_(C_(0.5f), p));
+    V_ a2 = MUL_(a, a);
+    V_ e = FMA_(a2, p, FMA_(a2, s2lo, num));
+    V_ m = FACET_K(x_hammon_den)(nl, nv, a);
+    V_ r = RSQRT_(ADD_(t, t));
+    V_ lh = MIN_(MUL_(t, r), C_(1.0f));
+    /* w = 2 - t = min(1 - L.V, 2 - s^2/2), each side formed without
+     * cancellation: 2 - s^2/2 = ((1 - nl) + (1 - nv)) (2 + s) / 2 */
+    V_ w = MIN_(SUB_(C_(1.0f), lv),
+                MUL_(MUL_(C_(0.5f), ADD_(SUB_(C_(1.0f), nl), SUB_(C_(1.0f), nv))),
+                     ADD_(C_(2.0f), sh)));
+    /* below L.H = 1/2, 1 - L.H itself is the better conditioned form */
+    V_ y = FACET_OP(sel_lt)(lh, C_(0.5f), SUB_(C_(1.0f), lh),
+                            MUL_(MUL_(C_(0.5f), w), RCP_(ADD_(C_(1.0f), lh))));
+    V_ f = FACET_K(x_fresnel_y)(FACET_K(x_unit)(f0), y, C_(0.0f));
+    V_ k = MUL_(MUL_(a, t), RCP_(e)); /* alpha t / e */
+    V_ spec = MUL_(MUL_(MUL_(C_(FACET_2_INV_PI_), MUL_(k, k)), RCP_(m)), f);
+    V_ inv_nh = MAX_(MUL_(MUL_(ADD_(t, t), r), RCP_(sh)), C_(1.0f)); /* 2t r / s */
+    return ADD_(spec, FACET_K(x_diffuse)(nl, nv, t, inv_nh, a, FACET_K(x_unit)(albedo)));
+}
+
+/* Lambert: albedo / pi, the baseline diffuse. */
+static inline V_ FACET_K(lambert)(V_ albedo)
+{
+    return MUL_(FACET_K(x_unit)(albedo), C_(FACET_INV_PI_));
+}
+
+#undef V_
+#undef C_
+#undef ADD_
+#undef SUB_
+#undef MUL_
+#undef FMA_
+#undef FNMA_
+#undef MIN_
+#undef MAX_
+#undef CLAMP_
+#undef RCP_
+#undef RSQRT_
+#undef FACET_INV_PI_
+#undef FACET_2_INV_PI_

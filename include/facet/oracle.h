@@ -1,0 +1,59 @@
+/* facet/oracle.h - the double-precision reference of every kernel.
+ *
+ * The oracle follows the definitional formulas, not the kernels' algebra:
+ * L and V are built as unit vectors with the given dots, H = normalize(L+V),
+ * D in its tan form, Smith G through Lambda, pow() for the Fresnel and
+ * smooth-diffuse powers, plain divisions.  It is compiled with
+ * -ffp-contract=off, uses libm freely, and shares no code with the kernels.
+ * Its only common ground with them is the contract's domain handling
+ * (clamping, and the identity extension for inconsistent dot triples), which
+ * is part of what the kernels promise.
+ *
+ * Accuracy: validated in tests/test_oracle.c (normalisation integrals,
+ * Smith closed form vs integrated Lambda, symmetry, and ill-conditioned
+ * points against long double); relative error well below 1e-12 on the
+ * domain, i.e. far below the f32 bounds it judges.
+ */
+#ifndef FACET_ORACLE_H
+#define FACET_ORACLE_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* The geometry of an (N.L, N.V, L.V) triple after the domain rules.
+ * consistent = 1 when unit vectors with these dots exist (then n_h, l_h,
+ * l_v and tan2_h come from the vectors), 0 when the identity extension was
+ * used.  tan2_h = tan^2 of the angle between N and H. */
+typedef struct facet_oracle_geom {
+    double n_l, n_v, l_v, n_h, l_h, tan2_h;
+    int consistent;
+} facet_oracle_geom;
+
+facet_oracle_geom facet_oracle_geometry(double nol, double nov, double lov);
+
+double facet_oracle_noh_from_dots(double nol, double nov, double lov);
+double facet_oracle_loh_from_dots(double lov);
+double facet_oracle_fresnel_schlick(double f0, double cos_theta);
+double facet_oracle_ggx_d(double noh, double alpha);
+/* D from tan^2(theta_h) directly (the accurate form near the peak) */
+double facet_oracle_ggx_d_tan2(double tan2_h, double cos_h, double alpha);
+double facet_oracle_smith_lambda(double nov, double alpha);
+double facet_oracle_smith_g1(double nov, double alpha);
+double facet_oracle_smith_g2(double nol, double nov, double alpha);
+double facet_oracle_smith_g2_uncorrelated(double nol, double nov, double alpha);
+double facet_oracle_smith_vis(double nol, double nov, double alpha);
+double facet_oracle_smith_g1_hammon(double nov, double alpha);
+double facet_oracle_smith_g2_hammon(double nol, double nov, double alpha);
+double facet_oracle_smith_vis_hammon(double nol, double nov, double alpha);
+double facet_oracle_diffuse_hammon(double nol, double nov, double lov, double alpha,
+                                   double albedo);
+double facet_oracle_brdf_hammon(double nol, double nov, double lov, double alpha,
+                                double f0, double albedo);
+double facet_oracle_lambert(double albedo);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

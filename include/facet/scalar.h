@@ -1,0 +1,110 @@
+/* facet/scalar.h - the scalar f32 port: every kernel as a static inline
+ * function on float, named facet_<kernel>_f32_scalar.
+ *
+ * This is the reference port and the fallback.  It needs nothing beyond C99:
+ * rsqrt is a bit-level seed plus three Newton steps (no libm sqrtf), the
+ * reciprocal is the IEEE division, and fma is used only where the target has
+ * it in hardware (__FMA__ on x86, __ARM_FEATURE_FMA on ARM); otherwise a*b+c
+ * is two rounded operations and the exact square error comes from a
+ * Dekker split.  The contracts of the kernels are in facet.h.
+ */
+#ifndef FACET_SCALAR_H
+#define FACET_SCALAR_H
+
+#include <stdint.h>
+#include "facet/common.h"
+
+#if (defined(__FMA__) || defined(__ARM_FEATURE_FMA) || defined(__riscv_flen)) \
+    && defined(__GNUC__)
+#define FACET_SCALAR_HAS_FMA 1
+#else
+#define FACET_SCALAR_HAS_FMA 0
+#endif
+
+static inline float facet_scalar_set(float x) { return x; }
+static inline float facet_scalar_add(float a, float b) { return a + b; }
+static inline float facet_scalar_sub(float a, float b) { return a - b; }
+static inline float facet_scalar_mul(float a, float b) { return a * b; }
+static inline float facet_scalar_min(float a, float b) { return a < b ? a : b; }
+static inline float facet_scalar_max(float a, float b) { return a > b ? a : b; }
+
+/* a*b + c; fused where the hardware fuses. */
+static inline float facet_scalar_fma(float a, float b, float c)
+{
+#if FACET_SCALAR_HAS_FMA
+    return __builtin_fmaf(a, b, c);
+#else
+    float p = a * b;
+    return p + c;
+#endif
+}
+
+/* c - a*b */
+static inline float facet_scalar_fnma(float a, float b, float c)
+{
+    return facet_scalar_fma(-a, b, c);
+}
+
+/* a < b ? x : y */
+static inline float facet_scalar_sel_lt(float a, float b, float x, float y)
+{
+    return a < b ? x : y;
+}
+
+/* Clamp to [lo, hi]; NaN goes to lo, -Inf to lo, +Inf to hi. */
+static inline float facet_scalar_clamp(float x, float lo, float hi)
+{
+    x = x > lo ? x : lo;
+    return x < hi ? x : hi;
+}
+
+/* 1/x for x in [2^-126, 2^126]: the IEEE division. */
+static inline float facet_scalar_rcp(float x) { return 1.0f / x; }
+
+/* 1/sqrt(x) for x in [2^-126, 2^126].  Seed: the exponent-halving bit trick
+ * with constant 0x5f375a86 (relative error <= 3.5e-2).  Each Newton step
+ * y' = y + y(1 - x y^2)/2 maps a relative error e to about 1.5 e^2:
+ * 3.5e-2 -> 1.8e-3 -> 4.9e-6 -> 3.6e-11, so three steps leave only the
+ * rounding of the steps themselves (about 1 ulp). */
+static inline float facet_scalar_rsqrt(float x)
+{
+    union { float f; uint32_t u; } b;
+    float y, e;
+    int i;
+    b.f = x;
+    b.u = 0x5f375a86u - (b.u >> 1);
+    y = b.f;
+    for (i = 0; i < 3; i++) {
+        e = facet_scalar_fnma(x * y, y, 1.0f);
+        y = facet_scalar_fma(0.5f * y, e, y);
+    }
+    return y;
+}
+
+/* Exact a*a - p for p = fl(a*a) (no overflow/underflow in range).  Without
+ * FMA: Dekker, splitting a by masking the low 12 significand bits, so the
+ * halves' products are exact whatever the compiler contracts. */
+static inline float facet_scalar_sqr_err(float a, float p)
+{
+#if FACET_SCALAR_HAS_FMA
+    return __builtin_fmaf(a, a, -p);
+#else
+    union { float f; uint32_t u; } b;
+    float hi, lo;
+    b.f = a;
+    b.u &= 0xfffff000u;
+    hi = b.f;
+    lo = a - hi;
+    return ((hi * hi - p) + 2.0f * hi * lo) + lo * lo;
+#endif
+}
+
+#define FACET_V float
+#define FACET_OP(op) facet_scalar_##op
+#define FACET_K(k) facet_##k##_f32_scalar
+#include "facet/detail/f32_body.h"
+#undef FACET_V
+#undef FACET_OP
+#undef FACET_K
+
+#endif

@@ -1,0 +1,182 @@
+/* facet - the command-line face of the library.
+ *   facet list
+ *   facet eval KERNEL [--format f32] [--port auto|scalar]
+ * Exit status: 0 success, 2 usage error or malformed input, 1 I/O error. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "facet.h"
+
+#define LINE_MAX_ 4096
+
+static const char *prog = "facet";
+
+static void usage_main(FILE *f)
+{
+    fprintf(f,
+            "usage: %s <verb> [options]\n"
+            "verbs:\n"
+            "  list                 one line per kernel: name, then its inputs in order\n"
+            "  eval KERNEL          evaluate KERNEL on samples read from stdin\n"
+            "Run '%s <verb> --help' for a verb's options.\n",
+            prog, prog);
+}
+
+static void usage_list(FILE *f)
+{
+    fprintf(f, "usage: %s list\n"
+               "Prints one line per kernel: its name, then the names of its inputs in the\n"
+               "order 'eval' reads them.\n", prog);
+}
+
+static void usage_eval(FILE *f)
+{
+    fprintf(f,
+            "usage: %s eval KERNEL [--format f32] [--port auto|scalar]\n"
+            "Reads samples from stdin, one per line: the kernel's inputs as decimal\n"
+            "numbers separated by white space, in 'facet list' order.  Writes one line\n"
+            "per sample: the output, printed with %%.9g (round-trips the float).\n"
+            "A malformed line is an error naming its line number (exit status 2).\n"
+            "  --format f32     the float kernels (default)\n"
+            "  --port P         port to run: auto (default) or scalar\n",
+            prog);
+}
+
+static int cmd_list(int argc, char **argv)
+{
+    size_t i;
+    int j;
+    if (argc > 1) {
+        if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
+            usage_list(stdout);
+            return 0;
+        }
+        fprintf(stderr, "%s list: unexpected argument '%s'\n", prog, argv[1]);
+        usage_list(stderr);
+        return 2;
+    }
+    for (i = 0; i < facet_kernel_count(); i++) {
+        const facet_kernel *k = facet_kernel_at(i);
+        printf("%s", k->name);
+        for (j = 0; j < k->n_inputs; j++)
+            printf(" %s", k->inputs[j]);
+        printf("\n");
+    }
+    return 0;
+}
+
+/* Parses exactly n numbers from line; returns 0 or an error message. */
+static const char *parse_line(char *line, int n, float *in)
+{
+    char *p = line, *end;
+    int i;
+    for (i = 0; i < n; i++) {
+        double v;
+        while (*p == ' ' || *p == '\t' || *p == '\r')
+            p++;
+        if (*p == '\0' || *p == '\n')
+            return "too few inputs";
+        errno = 0;
+        v = strtod(p, &end);
+        if (end == p || (*end && !strchr(" \t\r\n", *end)))
+            return "not a decimal number";
+        in[i] = (float)v;
+        p = end;
+    }
+    while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n')
+        p++;
+    return *p ? "too many inputs" : NULL;
+}
+
+static int cmd_eval(int argc, char **argv)
+{
+    const facet_kernel *k = NULL;
+    const char *format = "f32", *port = "auto";
+    char line[LINE_MAX_];
+    long lineno = 0;
+    int i;
+
+    for (i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            usage_eval(stdout);
+            return 0;
+        } else if (!strcmp(argv[i], "--format") && i + 1 < argc) {
+            format = argv[++i];
+        } else if (!strcmp(argv[i], "--port") && i + 1 < argc) {
+            port = argv[++i];
+        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
+            fprintf(stderr, "%s eval: unknown or incomplete option '%s'\n", prog, argv[i]);
+            usage_eval(stderr);
+            return 2;
+        } else if (!k) {
+            k = facet_kernel_find(argv[i]);
+            if (!k) {
+                fprintf(stderr, "%s eval: unknown kernel '%s' (see '%s list')\n", prog, argv[i], prog);
+                return 2;
+            }
+        } else {
+            fprintf(stderr, "%s eval: unexpected argument '%s'\n", prog, argv[i]);
+            return 2;
+        }
+    }
+    if (!k) {
+        fprintf(stderr, "%s eval: missing KERNEL\n", prog);
+        usage_eval(stderr);
+        return 2;
+    }
+    if (strcmp(format, "f32")) {
+        fprintf(stderr, "%s eval: unknown format '%s' (known: f32)\n", prog, format);
+        return 2;
+    }
+    if (strcmp(port, "auto") && strcmp(port, "scalar")) {
+        fprintf(stderr, "%s eval: unknown port '%s' (known: auto, scalar)\n", prog, port);
+        return 2;
+    }
+    while (fgets(line, sizeof line, stdin)) {
+        float in[FACET_MAX_INPUTS];
+        const char *err;
+        lineno++;
+        if (!strchr(line, '\n') && !feof(stdin)) {
+            fprintf(stderr, "%s eval: line %ld: longer than %d characters\n", prog, lineno, LINE_MAX_ - 2);
+            return 2;
+        }
+        err = parse_line(line, k->n_inputs, in);
+        if (err) {
+            fprintf(stderr, "%s eval: line %ld: %s (expected %d numbers:", prog, lineno, err, k->n_inputs);
+            for (i = 0; i < k->n_inputs; i++)
+                fprintf(stderr, " %s", k->inputs[i]);
+            fprintf(stderr, ")\n");
+            return 2;
+        }
+        printf("%.9g\n", k->f32(in));
+    }
+    if (ferror(stdin) || fflush(stdout) != 0) {
+        fprintf(stderr, "%s eval: I/O error\n", prog);
+        return 1;
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage_main(stderr);
+        return 2;
+    }
+    if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
+        usage_main(stdout);
+        return 0;
+    }
+    if (!strcmp(argv[1], "--version")) {
+        printf("facet %s\n", FACET_VERSION);
+        return 0;
+    }
+    if (!strcmp(argv[1], "list"))
+        return cmd_list(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "eval"))
+        return cmd_eval(argc - 1, argv + 1);
+    fprintf(stderr, "%s: unknown verb '%s'\n", prog, argv[1]);
+    usage_main(stderr);
+    return 2;
+}

@@ -1,0 +1,100 @@
+/* sample.h - input generators shared by the tests and the benchmarks:
+ * a seeded PRNG and samplers that aim at the hard parts of each input's
+ * domain (specular peak, grazing angles, L.V near +-1, 0 and 1). */
+#ifndef FACET_TEST_SAMPLE_H
+#define FACET_TEST_SAMPLE_H
+
+#include <stdint.h>
+#include <string.h>
+#include <math.h>
+#include "facet.h"
+
+typedef struct { uint64_t s; } smp_rng;
+
+static uint64_t smp_next(smp_rng *r) /* splitmix64 */
+{
+    uint64_t z = (r->s += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
+static double smp_u01(smp_rng *r) { return (smp_next(r) >> 11) * (1.0 / 9007199254740992.0); }
+
+/* log-uniform in [2^lo, 2^hi] */
+static double smp_log2u(smp_rng *r, double lo, double hi) { return exp2(lo + (hi - lo) * smp_u01(r)); }
+
+/* A pair (L, V) over N = z: writes N.L, N.V, L.V rounded to float. */
+static void smp_geometry(smp_rng *r, float *nl, float *nv, float *lv)
+{
+    double cl, cv, phi, sl, sv;
+    unsigned mode = (unsigned)(smp_next(r) % 8);
+    switch (mode) {
+    case 0: /* near the specular peak: mirror azimuth, nearly equal angles */
+    case 1:
+        cl = smp_u01(r);
+        cv = cl + (smp_u01(r) - 0.5) * smp_log2u(r, -30, -3);
+        phi = M_PI + (smp_u01(r) - 0.5) * smp_log2u(r, -30, -2);
+        break;
+    case 2: /* grazing L or V */
+        cl = smp_log2u(r, -20, -1);
+        cv = (smp_next(r) & 1) ? smp_log2u(r, -20, 0) : smp_u01(r);
+        phi = 2 * M_PI * smp_u01(r);
+        break;
+    case 3: /* L.V near +1: L close to V */
+        cl = smp_u01(r);
+        cv = cl + (smp_u01(r) - 0.5) * smp_log2u(r, -30, -4);
+        phi = (smp_u01(r) - 0.5) * smp_log2u(r, -30, -4);
+        break;
+    default: /* uniform in cosines and azimuth */
+        cl = smp_u01(r);
+        cv = smp_u01(r);
+        phi = 2 * M_PI * smp_u01(r);
+        break;
+    }
+    cl = fmin(fmax(cl, FACET_COS_MIN), 1.0);
+    cv = fmin(fmax(cv, FACET_COS_MIN), 1.0);
+    sl = sqrt(1 - cl * cl);
+    sv = sqrt(1 - cv * cv);
+    *nl = (float)cl;
+    *nv = (float)cv;
+    *lv = (float)fmin(fmax(cl * cv + sl * sv * cos(phi), -1.0), 1.0);
+}
+
+static float smp_alpha(smp_rng *r)
+{
+    return (float)smp_log2u(r, -10, 0);
+}
+
+/* a [0, 1] value: often 0, 1, tiny, or near 1 */
+static float smp_unit(smp_rng *r)
+{
+    switch (smp_next(r) % 8) {
+    case 0: return 0.0f;
+    case 1: return 1.0f;
+    case 2: return (float)smp_log2u(r, -40, 0);
+    case 3: return (float)(1.0 - smp_log2u(r, -24, -1));
+    default: return (float)smp_u01(r);
+    }
+}
+
+/* One in-domain sample for a kernel, by its input names. */
+static void smp_inputs(smp_rng *r, const facet_kernel *k, float *in)
+{
+    float nl, nv, lv;
+    int i;
+    smp_geometry(r, &nl, &nv, &lv);
+    for (i = 0; i < k->n_inputs; i++) {
+        const char *n = k->inputs[i];
+        if (!strcmp(n, "nol")) in[i] = nl;
+        else if (!strcmp(n, "nov")) in[i] = k->n_inputs == 2 ? smp_unit(r) : nv;
+        else if (!strcmp(n, "lov")) in[i] = k->n_inputs == 1 ? (float)(2 * smp_u01(r) - 1) : lv;
+        else if (!strcmp(n, "alpha")) in[i] = smp_alpha(r);
+        else if (!strcmp(n, "noh")) in[i] = (smp_next(r) & 1) ? smp_unit(r) : (float)(1.0 - smp_log2u(r, -24, -4));
+        else in[i] = smp_unit(r);
+    }
+    if (k->n_inputs == 1 && !strcmp(k->inputs[0], "lov") && (smp_next(r) & 3) == 0)
+        in[0] = (float)(-1.0 + smp_log2u(r, -24, 0));
+}
+
+#endif

@@ -1,0 +1,115 @@
+/* test_f32_bad_input.c - the domain contract of facet.h for every kernel:
+ * each bad value in each input position (others random and valid) gives a
+ * finite, non-negative result, bit-equal to the kernel evaluated at the
+ * documented substitute (NaN, -Inf, below-domain -> the low end; +Inf,
+ * above-domain -> the high end).  Also the named special points. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <float.h>
+#include "harness.h"
+#include "sample.h"
+#include "facet/oracle.h"
+
+static float lo_of(const facet_kernel *k, int i)
+{
+    const char *n = k->inputs[i];
+    if (!strcmp(n, "lov")) return -1.0f;
+    if (!strcmp(n, "alpha")) return FACET_ALPHA_MIN;
+    if (k->n_inputs > 2 && (!strcmp(n, "nol") || !strcmp(n, "nov"))) return FACET_COS_MIN;
+    return 0.0f;
+}
+
+static int same(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
+
+int main(void)
+{
+    const float bad[] = { NAN, -NAN, INFINITY, -INFINITY, 0.0f, -0.0f, 1.4e-45f, -1.4e-45f,
+                          1e-39f, -1e-30f, -1.0f, -2.0f, 1.0000001f, 2.0f, 1e30f, FLT_MAX, -FLT_MAX };
+    const int n_bad = (int)(sizeof bad / sizeof bad[0]);
+    smp_rng rng = { 12345 };
+    size_t ki;
+    th_name = "f32_bad_input";
+
+    for (ki = 0; ki < facet_kernel_count(); ki++) {
+        const facet_kernel *k = facet_kernel_at(ki);
+        int pos, b, rep, nan_out = 0, neg_out = 0, mismatch = 0;
+        for (rep = 0; rep < 50; rep++)
+            for (pos = 0; pos < k->n_inputs; pos++)
+                for (b = 0; b < n_bad; b++) {
+                    float in[FACET_MAX_INPUTS], ref_in[FACET_MAX_INPUTS], got, want;
+                    float lo = lo_of(k, pos), hi = 1.0f, v = bad[b];
+                    smp_inputs(&rng, k, in);
+                    memcpy(ref_in, in, sizeof in);
+                    in[pos] = v;
+                    /* the documented substitute */
+                    ref_in[pos] = (v != v || v < lo) ? lo : v > hi ? hi : v;
+                    got = k->f32(in);
+                    want = k->f32(ref_in);
+                    if (!(got == got) || got == INFINITY || got == -INFINITY)
+                        nan_out++;
+                    else if (got < 0.0f || same(got, -0.0f))
+                        neg_out++;
+                    if (!same(got, want))
+                        mismatch++;
+                    /* every bad input, also in all positions at once */
+                    if (rep == 0 && pos == 0) {
+                        int j;
+                        for (j = 0; j < k->n_inputs; j++)
+                            in[j] = v;
+                        got = k->f32(in);
+                        if (!(got == got) || got > FLT_MAX || got < 0.0f)
+                            nan_out++;
+                    }
+                }
+        CHECK(nan_out == 0, "%s: %d bad inputs gave NaN or Inf", k->name, nan_out);
+        CHECK(neg_out == 0, "%s: %d bad inputs gave a negative result", k->name, neg_out);
+        CHECK(mismatch == 0, "%s: %d bad inputs differ from the documented clamped value", k->name, mismatch);
+    }
+
+    /* named points of the contracts */
+    {
+        float a, d;
+        CHECK(facet_loh_from_dots_f32(-1.0f) == 0.0f, "L.V = -1 gives L.H = 0");
+        CHECK(facet_loh_from_dots_f32(1.0f) == 1.0f, "L.V = 1 gives L.H = 1");
+        CHECK(facet_noh_from_dots_f32(0.0f, 0.0f, -1.0f) == 1.0f,
+              "L = -V at the horizon: N.H = 1 (cos floor, t raised)");
+        CHECK(facet_noh_from_dots_f32(1.0f, 1.0f, 1.0f) == 1.0f, "L = V = N: N.H = 1");
+        CHECK(facet_noh_from_dots_f32(1.0f, 1.0f, -1.0f) == 1.0f, "inconsistent triple: N.H capped at 1");
+        for (a = FACET_ALPHA_MIN; a <= 1.0f; a *= 2.0f) {
+            CHECK(facet_fresnel_schlick_f32(a, 1.0f) == a, "F(f0, 1) = f0 (f0 = %g)", a);
+            CHECK(facet_fresnel_schlick_f32(a, 0.0f) == 1.0f, "F(f0, 0) = 1 (f0 = %g)", a);
+            CHECK(facet_smith_g1_f32(1.0f, a) == 1.0f, "G1(1) = 1 (alpha %g)", a);
+            CHECK(facet_smith_g1_f32(0.0f, a) == 0.0f, "G1(0) = 0 (alpha %g)", a);
+            CHECK(facet_smith_g1_hammon_f32(1.0f, a) == 1.0f, "G1_hammon(1) = 1 (alpha %g)", a);
+            CHECK(facet_smith_g2_f32(1.0f, 1.0f, a) == 1.0f, "G2(1, 1) = 1 (alpha %g)", a);
+            d = facet_ggx_d_f32(1.0f, a);
+            CHECK(fabs(d - 1.0 / (M_PI * a * a)) <= 2e-7 * d, "D(1) = 1/(pi alpha^2) (alpha %g): %.9g", a, d);
+        }
+        /* alpha = 0 evaluates at alpha_min */
+        CHECK(same(facet_ggx_d_f32(1.0f, 0.0f), facet_ggx_d_f32(1.0f, FACET_ALPHA_MIN)), "D: alpha 0 -> alpha_min");
+        CHECK(facet_brdf_hammon_f32(0.0f, 0.0f, -1.0f, 0.0f, 1.0f, 1.0f) < 1e16f,
+              "brdf at the all-grazing, alpha 0 corner is finite");
+        CHECK(facet_brdf_hammon_f32(1.0f, 1.0f, 1.0f, 1.0f, 0.0f, 0.0f) == 0.0f, "brdf: f0 = albedo = 0 at L = V = N is 0");
+        CHECK(facet_lambert_f32(1.0f) == (float)(1.0 / M_PI), "lambert(1) = 1/pi");
+        CHECK(facet_diffuse_hammon_f32(0.5f, 0.5f, 0.0f, 0.5f, 0.0f) == 0.0f, "diffuse: albedo 0 gives 0");
+    }
+    /* the RGB form is the scalar kernel per channel */
+    {
+        int i, bad_rgb = 0;
+        for (i = 0; i < 10000; i++) {
+            float nl, nv, lv, a = smp_alpha(&rng), f0[3], alb[3], out[3];
+            int c;
+            smp_geometry(&rng, &nl, &nv, &lv);
+            for (c = 0; c < 3; c++) {
+                f0[c] = smp_unit(&rng);
+                alb[c] = smp_unit(&rng);
+            }
+            facet_brdf_hammon_rgb_f32(out, nl, nv, lv, a, f0, alb);
+            for (c = 0; c < 3; c++)
+                if (!same(out[c], facet_brdf_hammon_f32(nl, nv, lv, a, f0[c], alb[c])))
+                    bad_rgb++;
+        }
+        CHECK(bad_rgb == 0, "brdf_hammon_rgb differs from brdf_hammon in %d channels", bad_rgb);
+    }
+    return th_done();
+}
