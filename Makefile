@@ -26,6 +26,11 @@ TEST_SRC := $(wildcard tests/test_*.c)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 HEADERS  := $(wildcard include/*.h include/facet/*.h include/facet/detail/*.h) src/kernels.def
 
+# Parts add their own rules here (ports/<isa>/port.mk, tests/*.mk, bench/*.mk);
+# they may append to LIB_OBJ, CLI_OBJ, TEST_BIN and EXTRA_TESTS.
+EXTRA_TESTS :=
+-include $(sort $(wildcard ports/*/port.mk tests/*.mk bench/*.mk))
+
 .PHONY: all lib tests check report install clean
 all: lib $(BUILD)/facet
 lib: $(BUILD)/libfacet.a $(BUILD)/libfacet.so
@@ -48,7 +53,7 @@ $(BUILD)/tests/%: tests/%.c tests/harness.h tests/sample.h $(BUILD)/libfacet.a
 	@mkdir -p $(dir $@)
 	$(CC) $(BASEFLAGS) -D_DEFAULT_SOURCE -o $@ $< $(BUILD)/libfacet.a -lm
 
-tests: $(TEST_BIN) $(BUILD)/facet
+tests: $(TEST_BIN) $(BUILD)/facet $(EXTRA_TESTS)
 
 check:
 	@tests/check.sh

@@ -158,8 +158,21 @@ static int cmd_eval(int argc, char **argv)
     return 0;
 }
 
+/* Verbs.  Parts of the library that bring a verb add a line here and
+ * implement it in their own file under src/cli/. */
+typedef struct {
+    const char *name;
+    int (*run)(int argc, char **argv); /* argv[0] is the verb */
+} verb;
+
+static const verb verbs[] = {
+    { "list", cmd_list },
+    { "eval", cmd_eval },
+};
+
 int main(int argc, char **argv)
 {
+    size_t i;
     if (argc < 2) {
         usage_main(stderr);
         return 2;
@@ -172,10 +185,9 @@ int main(int argc, char **argv)
         printf("facet %s\n", FACET_VERSION);
         return 0;
     }
-    if (!strcmp(argv[1], "list"))
-        return cmd_list(argc - 1, argv + 1);
-    if (!strcmp(argv[1], "eval"))
-        return cmd_eval(argc - 1, argv + 1);
+    for (i = 0; i < sizeof verbs / sizeof verbs[0]; i++)
+        if (!strcmp(argv[1], verbs[i].name))
+            return verbs[i].run(argc - 1, argv + 1);
     fprintf(stderr, "%s: unknown verb '%s'\n", prog, argv[1]);
     usage_main(stderr);
     return 2;
