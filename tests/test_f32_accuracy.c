@@ -123,9 +123,14 @@ static void dense_grid(const facet_kernel *k, int n, stat *st)
 int main(int argc, char **argv)
 {
     long n_random = argc > 1 ? atol(argv[1]) : getenv("FACET_TEST_QUICK") ? 30000 : 300000;
+    const char *md_path = argc > 2 ? argv[2] : NULL; /* optional Markdown table */
+    FILE *md = md_path ? fopen(md_path, "w") : NULL;
     size_t ki;
     th_name = "f32_accuracy";
     printf("%-22s %10s %8s %9s  %s\n", "kernel", "max rel", "log2", "max ulp", "argmax (inputs) -> got / oracle");
+    if (md)
+        fprintf(md, "| kernel | bound | max rel. error | log2 | max ulp | samples | argmax (inputs) |\n"
+                    "|---|---|---|---|---|---|---|\n");
     for (ki = 0; ki < facet_kernel_count(); ki++) {
         const facet_kernel *k = facet_kernel_at(ki);
         stat st;
@@ -147,8 +152,17 @@ int main(int argc, char **argv)
         for (i = 0; i < k->n_inputs; i++)
             printf("%s%.9g", i ? ", " : "", st.arg[i]);
         printf(") -> %.9g / %.17g\n", st.got, st.want);
+        if (md) {
+            fprintf(md, "| %s | 2^%.1f | %.3g | %.2f | %.2f | %ld | (", k->name, log2(k->err_f32), st.max_rel,
+                    st.max_rel > 0 ? log2(st.max_rel) : -999.0, st.max_ulp, st.n);
+            for (i = 0; i < k->n_inputs; i++)
+                fprintf(md, "%s%.9g", i ? ", " : "", st.arg[i]);
+            fprintf(md, ") |\n");
+        }
         CHECK(st.max_rel <= k->err_f32, "%s: max relative error %.3g (2^%.2f) exceeds the bound 2^%.2f",
               k->name, st.max_rel, log2(st.max_rel), log2(k->err_f32));
     }
+    if (md)
+        fclose(md);
     return th_done();
 }

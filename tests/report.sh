@@ -1,0 +1,30 @@
+#!/bin/sh
+# report.sh BUILD_DIR - `make report`: the accuracy sweep (and, below, the
+# benchmarks) written to BUILD_DIR/report/.
+set -eu
+build=${1:-build}
+out=$build/report
+mkdir -p "$out"
+n=${FACET_REPORT_SAMPLES:-3000000}
+make -s BUILD="$build" tests
+echo "report: f32 accuracy sweep, $n random samples per kernel + grids + edges ..."
+"$build/tests/test_f32_accuracy" "$n" "$out/accuracy_f32.md" > "$out/accuracy_f32.txt" || {
+    cat "$out/accuracy_f32.txt"
+    echo "report: accuracy sweep FAILED a bound (see $out/accuracy_f32.txt)"
+    exit 1
+}
+{
+    echo "# facet report"
+    echo
+    echo "Machine: $(uname -m), $(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | cut -d: -f2- | sed 's/^ *//')"
+    echo "Date: $(date -u +%Y-%m-%d)  facet $(sed -n 's/^#define FACET_VERSION "\(.*\)"/\1/p' include/facet.h)"
+    echo
+    echo "## f32 accuracy (scalar port) vs the double oracle"
+    echo
+    echo "Relative error at the same float inputs (values below 2^-100 compared absolutely)."
+    echo
+    cat "$out/accuracy_f32.md"
+} > "$out/report.md"
+# ---- bench: benchmarks, plots, rasterizer (bench/) ------------------------
+# ---- end bench --------------------------------------------------------------
+echo "report: wrote $out/report.md"
