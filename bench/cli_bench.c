@@ -1,0 +1,191 @@
+/* cli_bench.c - `facet bench`: cycles and error of every kernel x format x
+ * port x path (and the peers), as a table or JSON.  See usage below. */
+#ifndef _GNU_SOURCE
+#define _GNU_SOURCE
+#endif
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "bench.h"
+
+int facet_cmd_bench(int argc, char **argv);
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+            "usage: facet bench [KERNEL] [--port P] [--format f32|fx] [--json]\n"
+            "                   [--samples N] [--err-samples N] [--epochs E] [--quick] [--no-peers]\n"
+            "Times every kernel (or KERNEL) on every port this CPU runs, through the batch\n"
+            "API, the inline kernels and the library call, next to the peers (textbook,\n"
+            "shader, shader_fm), and measures each one's error against the double oracle.\n"
+            "Throughput: cycles per sample over an L1-resident SoA set (difference of R and\n"
+            "2R passes); latency: cycles per call in a dependent chain.  >= 11 epochs after\n"
+            "warm-up, pinned to one CPU; min, median, spread; '!' marks spread > 5%%.\n"
+            "The clock is perf's core-cycle counter when the kernel allows it, otherwise\n"
+            "the time-stamp counter in ticks (labelled so; est. cycles use a measured\n"
+            "ticks-per-cycle ratio).\n"
+            "  --port P         scalar, sse2, avx2, neon, textbook, shader, shader_fm\n"
+            "  --format F       f32 or fx\n"
+            "  --json           one JSON document on stdout\n"
+            "  --samples N      samples per timed pass (default 1024, multiple of 8)\n"
+            "  --err-samples N  samples for the error (default 65536)\n"
+            "  --epochs E       timed epochs (default and minimum 11)\n"
+            "  --quick          tiny run (for tests): few samples, short passes\n"
+            "  --no-peers       facet only\n");
+}
+
+typedef struct sink_ctx {
+    int json, first;
+    double tpc;
+} sink_ctx;
+
+/* JSON has no inf/nan: those print as null */
+static const char *jnum(double x)
+{
+    static char buf[4][32];
+    static int k;
+    k = (k + 1) & 3;
+    if (x != x || x - x != 0)
+        return "null";
+    snprintf(buf[k], sizeof buf[k], "%.6g", x);
+    return buf[k];
+}
+
+static void json_stat(const char *name, const cyc_stat *s, double tpc)
+{
+    printf("\"%s\": {\"min\": %s, \"median\": %s, \"max\": %s, \"spread\": %s, "
+           "\"noisy\": %s, \"epochs\": %d, \"est_cycles_median\": %s}",
+           name, jnum(s->min), jnum(s->median), jnum(s->max), jnum(s->spread),
+           s->noisy ? "true" : "false", s->epochs, jnum(s->median / tpc));
+}
+
+static void sink(const bench_row *r, void *vctx)
+{
+    sink_ctx *c = vctx;
+    int j;
+    if (c->json) {
+        printf("%s\n    {\"kernel\": \"%s\", \"format\": \"%s\", \"port\": \"%s\", \"path\": \"%s\", "
+               "\"lanes\": %d,\n     \"max_err\": %s, \"mean_err\": %s, \"argmax\": [",
+               c->first ? "" : ",", r->kernel, r->format, r->port, r->path, r->lanes,
+               jnum(r->err.max_rel), jnum(r->err.mean_rel));
+        for (j = 0; j < r->n_inputs; j++)
+            printf("%s%.9g", j ? ", " : "", r->err.arg[j]);
+        printf("], \"bound\": %.6g, \"within_bound\": %s,\n     ", r->bound,
+               r->within ? "true" : "false");
+        json_stat("throughput", &r->thr, c->tpc);
+        if (r->has_lat) {
+            printf(",\n     ");
+            json_stat("latency", &r->lat, c->tpc);
+        }
+        if (r->note[0])
+            printf(",\n     \"note\": \"%s\"", r->note);
+        printf("}");
+    } else {
+        char lat[48] = "-";
+        if (r->has_lat)
+            snprintf(lat, sizeof lat, "%8.2f%s", r->lat.median, r->lat.noisy ? "!" : " ");
+        printf("%-22s %-3s %-9s %-6s %9.3g %9.3g %s %8.3f %8.3f %5.1f%%%s %8.3f %s\n", r->kernel,
+               r->format, r->port, r->path, r->err.max_rel, r->err.mean_rel,
+               r->bound > 0 ? (r->within ? "ok " : "BAD") : "-  ", r->thr.min, r->thr.median,
+               100 * r->thr.spread, r->thr.noisy ? "!" : " ", r->thr.median / c->tpc, lat);
+    }
+    c->first = 0;
+    fflush(stdout);
+}
+
+int facet_cmd_bench(int argc, char **argv)
+{
+    bench_opts o;
+    sink_ctx c;
+    int i, n;
+    bench_defaults(&o);
+    memset(&c, 0, sizeof c);
+    c.first = 1;
+    for (i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            usage(stdout);
+            return 0;
+        } else if (!strcmp(a, "--json")) {
+            c.json = 1;
+        } else if (!strcmp(a, "--quick")) {
+            o.n_time = 256;
+            o.n_err = 2048;
+            o.target = 5000;
+        } else if (!strcmp(a, "--no-peers")) {
+            o.peers = 0;
+        } else if (!strcmp(a, "--port") && i + 1 < argc) {
+            o.port = argv[++i];
+        } else if (!strcmp(a, "--format") && i + 1 < argc) {
+            o.format = argv[++i];
+        } else if ((!strcmp(a, "--samples") || !strcmp(a, "--err-samples") || !strcmp(a, "--epochs"))
+                   && i + 1 < argc) {
+            char *end;
+            long v = strtol(argv[++i], &end, 10);
+            if (*end || v <= 0 || v > (1L << 26)) {
+                fprintf(stderr, "facet bench: bad value '%s' for %s\n", argv[i], a);
+                return 2;
+            }
+            if (!strcmp(a, "--samples")) {
+                if (v % 8) {
+                    fprintf(stderr, "facet bench: --samples must be a multiple of 8\n");
+                    return 2;
+                }
+                o.n_time = (size_t)v;
+            } else if (!strcmp(a, "--err-samples")) {
+                o.n_err = (size_t)v;
+            } else {
+                o.epochs = (int)v;
+            }
+        } else if (a[0] == '-' && a[1]) {
+            fprintf(stderr, "facet bench: unknown or incomplete option '%s'\n", a);
+            usage(stderr);
+            return 2;
+        } else if (!o.kernel) {
+            if (!facet_kernel_find(a)) {
+                fprintf(stderr, "facet bench: unknown kernel '%s' (see 'facet list')\n", a);
+                return 2;
+            }
+            o.kernel = a;
+        } else {
+            fprintf(stderr, "facet bench: unexpected argument '%s'\n", a);
+            return 2;
+        }
+    }
+    if (o.format && strcmp(o.format, "f32") && strcmp(o.format, "fx")) {
+        fprintf(stderr, "facet bench: unknown format '%s' (known: f32, fx)\n", o.format);
+        return 2;
+    }
+    if (o.n_err < o.n_time)
+        o.n_err = o.n_time;
+    cyc_init();
+    c.tpc = cyc_ticks_per_cycle();
+    if (c.json) {
+        printf("{\"clock\": {\"source\": \"%s\", \"unit\": \"%s\", \"measured_core_cycles\": %s, "
+               "\"ticks_per_cycle\": %.4f, \"cpu\": %d},\n \"samples\": %zu, \"err_samples\": %zu, "
+               "\"epochs\": %d,\n \"results\": [",
+               cyc_source(), cyc_unit(), cyc_is_cycles() ? "true" : "false", c.tpc, cyc_cpu(),
+               o.n_time, o.n_err, o.epochs < 11 ? 11 : o.epochs);
+    } else {
+        printf("# clock: %s (%s%s), pinned to cpu %d; %zu samples/pass, %zu for the error\n",
+               cyc_source(), cyc_unit(),
+               cyc_is_cycles() ? ", measured core cycles" : ", NOT core cycles", cyc_cpu(),
+               o.n_time, o.n_err);
+        if (!cyc_is_cycles())
+            printf("# est.cyc = ticks / %.3f (ticks per core cycle, from a chain of 1-cycle adds)\n",
+                   c.tpc);
+        printf("%-22s %-3s %-9s %-6s %9s %9s %s %8s %8s %6s %8s %s\n", "kernel", "fmt", "port",
+               "path", "max_err", "mean_err", "bnd", "thr_min", "thr_med", "spread", "est.cyc",
+               "latency/call");
+    }
+    n = bench_run(&o, sink, &c);
+    if (n < 0) {
+        fprintf(stderr, "facet bench: unknown port or format in the selection\n");
+        return 2;
+    }
+    if (c.json)
+        printf("\n ]}\n");
+    if (n == 0 && !c.json)
+        printf("# nothing to run for this selection on this machine\n");
+    return 0;
+}
