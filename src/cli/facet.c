@@ -12,6 +12,9 @@
 
 static const char *prog = "facet";
 
+int facet_cli_fx_eval(int argc, char **argv); /* src/cli/fx.c: eval --format fx */
+int facet_cli_vectors(int argc, char **argv);  /* src/cli/fx.c: vectors */
+
 static void usage_main(FILE *f)
 {
     fprintf(f,
@@ -97,6 +100,9 @@ static int cmd_eval(int argc, char **argv)
     long lineno = 0;
     int i;
 
+    for (i = 1; i + 1 < argc; i++) /* fx has its own options: src/cli/fx.c */
+        if (!strcmp(argv[i], "--format") && !strcmp(argv[i + 1], "fx"))
+            return facet_cli_fx_eval(argc, argv);
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             usage_eval(stdout);
@@ -126,7 +132,7 @@ static int cmd_eval(int argc, char **argv)
         return 2;
     }
     if (strcmp(format, "f32")) {
-        fprintf(stderr, "%s eval: unknown format '%s' (known: f32)\n", prog, format);
+        fprintf(stderr, "%s eval: unknown format '%s' (known: f32, fx)\n", prog, format);
         return 2;
     }
     if (strcmp(port, "auto") && strcmp(port, "scalar")) {
@@ -168,6 +174,7 @@ typedef struct {
 static const verb verbs[] = {
     { "list", cmd_list },
     { "eval", cmd_eval },
+    { "vectors", facet_cli_vectors }, /* src/cli/fx.c */
 };
 
 int main(int argc, char **argv)

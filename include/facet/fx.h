@@ -1,0 +1,171 @@
+/* facet/fx.h - the fixed-point kernels: integer arithmetic only, bit-exact
+ * on every target, for cores without an FPU (Cortex-M0/M3/M4, RV32IMC) and
+ * as a golden model for fixed-function hardware.
+ *
+ * Formats (Qm.n: m integer bits, n fraction bits; raw integer = value 2^n)
+ *   Inputs, all kernels: int32_t holding Q15, 1.0 = FACET_FX_ONE = 32768
+ *     exactly.  One signed 32-bit container for every input because L.V
+ *     needs -1 and +1 exactly and [0, 1] values need 32768, which no 16-bit
+ *     type holds on both ends; Q15 because the product of two inputs is a
+ *     single 32x32->32 multiply (the only multiply Cortex-M0 has) and a Q15
+ *     output feeds straight back in (noh_from_dots -> ggx_d).
+ *   Outputs:
+ *     [0, 1] kernels (noh, loh, F, G1, G2, ...)  int32_t  Q15 (UQ1.15), 0..32768
+ *     ggx_d                                      uint32_t UQ19.13  (D <= 2^20/pi = 333772.1)
+ *     smith_vis, smith_vis_hammon                uint32_t UQ16.16  (Vis <= 15894.3)
+ *     diffuse_hammon                             uint32_t UQ8.24   (<= 20.65)
+ *     brdf_hammon                                uint64_t UQ40.24  (<= 4.38e9)
+ *   The maxima are at alpha = FACET_FX_ALPHA_MIN and N.L = N.V =
+ *   FACET_FX_COS_MIN; every format holds its kernel's maximum, and every
+ *   result is additionally saturated at the format's FACET_FX_MAX_* value.
+ *
+ * Domain (every int32_t is a valid input; out-of-domain values clamp):
+ *   [0, 1] inputs (f0, albedo, cos of one-cosine kernels, noh):  [0, 32768]
+ *   alpha:                                    [FACET_FX_ALPHA_MIN, 32768]
+ *   nol, nov of the two-cosine kernels:       [FACET_FX_COS_MIN, 32768]
+ *   lov:                                      [-32768, 32768]
+ *   Inconsistent (N.L, N.V, L.V) triples: 1 + L.V is raised to (N.L+N.V)^2/2
+ *   exactly as in facet.h (integer compare, no rounding).
+ *   FACET_FX_COS_MIN = 2^-8 (cos 89.78 deg), higher than the f32 floor 2^-20:
+ *   it keeps Vis below 2^14 and the BRDF below 2^33, so their formats keep
+ *   16 and 24 fraction bits.  A renderer multiplies by N.L (< 0.0039 there).
+ *
+ * Rounding: one rule everywhere - round to nearest, ties up (toward
+ * +infinity).  Quotients and square roots are exact (floor plus remainder)
+ * before that rounding; see src/fx_core.h.  No value is an error marker:
+ * every raw output is the rounded (or saturated) function value.
+ *
+ * Arithmetic: uint32/uint64 only (no signed overflow), no float, no divide
+ * instruction, no libgcc helper; 32x32->64 products are one UMULL where the
+ * core has it and four 16x16 MULS on ARMv6-M (exact either way).  Shared
+ * primitives (src/fx_core.c): one reciprocal (facet_fx_rcp32: 32-entry
+ * 16-bit seed table, 3 Newton steps, exact fix-up), one rsqrt
+ * (facet_fx_rsqrt32: 24-entry table, 3 Newton steps) giving an exact integer
+ * square root, the exact 2-by-1 division of Moller-Granlund.
+ *
+ * Per-kernel contracts (formula, intermediates, overflow argument, measured
+ * error, cost) are next to each function in src/fx_kernels.c and in the
+ * README's fixed-point section; the measured errors are the FACET_FX_ERR_*
+ * bounds below, enforced by tests/test_fx_accuracy.c.
+ */
+#ifndef FACET_FX_H
+#define FACET_FX_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define FACET_FX_ONE       32768 /* 1.0 in Q15 */
+#define FACET_FX_ALPHA_MIN 32    /* 2^-10 = FACET_ALPHA_MIN */
+#define FACET_FX_COS_MIN   128   /* 2^-8, the fixed-point cos floor */
+
+/* output fraction bits and saturation values (raw) */
+#define FACET_FX_Q15_FRAC  15
+#define FACET_FX_D_FRAC    13
+#define FACET_FX_VIS_FRAC  16
+#define FACET_FX_BRDF_FRAC 24 /* diffuse_hammon and brdf_hammon */
+#define FACET_FX_MAX_Q15   32768u
+#define FACET_FX_MAX_D     0xFFFFFFFFu
+#define FACET_FX_MAX_VIS   0xFFFFFFFFu
+#define FACET_FX_MAX_DIFF  0xFFFFFFFFu
+#define FACET_FX_MAX_BRDF  0xFFFFFFFFFFFFFFFFull
+
+/* ---- measured error bounds (max |raw - round(oracle 2^frac)| in LSB over
+ * tests/test_fx_accuracy.c's sweep; enforced there) --------------------- */
+#define FACET_FX_ERR_NOH_FROM_DOTS         1
+#define FACET_FX_ERR_LOH_FROM_DOTS         1
+#define FACET_FX_ERR_FRESNEL_SCHLICK       1
+#define FACET_FX_ERR_GGX_D                 1
+#define FACET_FX_ERR_SMITH_G1              1
+#define FACET_FX_ERR_SMITH_G2              1
+#define FACET_FX_ERR_SMITH_G2_UNCORRELATED 1
+#define FACET_FX_ERR_SMITH_VIS             1
+#define FACET_FX_ERR_SMITH_G1_HAMMON       1
+#define FACET_FX_ERR_SMITH_G2_HAMMON       1
+#define FACET_FX_ERR_SMITH_VIS_HAMMON      1
+#define FACET_FX_ERR_DIFFUSE_HAMMON        1
+#define FACET_FX_ERR_BRDF_HAMMON           1
+
+/* ---- kernels (inputs Q15, in `facet list` order) ----------------------- */
+int32_t facet_noh_from_dots_fx(int32_t nol, int32_t nov, int32_t lov);
+int32_t facet_loh_from_dots_fx(int32_t lov);
+int32_t facet_fresnel_schlick_fx(int32_t f0, int32_t cos_theta);
+uint32_t facet_ggx_d_fx(int32_t noh, int32_t alpha);
+int32_t facet_smith_g1_fx(int32_t nov, int32_t alpha);
+int32_t facet_smith_g2_fx(int32_t nol, int32_t nov, int32_t alpha);
+int32_t facet_smith_g2_uncorrelated_fx(int32_t nol, int32_t nov, int32_t alpha);
+uint32_t facet_smith_vis_fx(int32_t nol, int32_t nov, int32_t alpha);
+int32_t facet_smith_g1_hammon_fx(int32_t nov, int32_t alpha);
+int32_t facet_smith_g2_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
+uint32_t facet_smith_vis_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
+uint32_t facet_diffuse_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
+                                 int32_t albedo);
+uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
+                              int32_t f0, int32_t albedo);
+
+/* ---- batches: out[i] = kernel(in1[i], ...), i < n; bit-identical to the
+ * scalar kernel.  Arrays may not overlap out. ---------------------------- */
+void facet_noh_from_dots_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                  const int32_t *lov, size_t n);
+void facet_loh_from_dots_fx_batch(int32_t *out, const int32_t *lov, size_t n);
+void facet_fresnel_schlick_fx_batch(int32_t *out, const int32_t *f0, const int32_t *cos_theta,
+                                    size_t n);
+void facet_ggx_d_fx_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
+void facet_smith_g1_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
+void facet_smith_g2_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                             const int32_t *alpha, size_t n);
+void facet_smith_g2_uncorrelated_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                          const int32_t *alpha, size_t n);
+void facet_smith_vis_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                              const int32_t *alpha, size_t n);
+void facet_smith_g1_hammon_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
+                                    size_t n);
+void facet_smith_g2_hammon_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                    const int32_t *alpha, size_t n);
+void facet_smith_vis_hammon_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                     const int32_t *alpha, size_t n);
+void facet_diffuse_hammon_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                   const int32_t *lov, const int32_t *alpha,
+                                   const int32_t *albedo, size_t n);
+void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t *nov,
+                                const int32_t *lov, const int32_t *alpha, const int32_t *f0,
+                                const int32_t *albedo, size_t n);
+
+/* ---- the shared primitives (exposed for the tests and for ports) ------- */
+/* floor((2^64 - 1) / d) - 2^32, d in [2^31, 2^32) */
+uint32_t facet_fx_rcp32(uint32_t d);
+/* ~ 2^47 / sqrt(x), x in [2^30, 2^32), relative error <= 2^-29 */
+uint32_t facet_fx_rsqrt32(uint32_t x);
+/* floor((u1 2^32 + u0) / d), remainder in *r; d in [2^31, 2^32), u1 < d, v = rcp32(d) */
+uint32_t facet_fx_div2by1(uint32_t u1, uint32_t u0, uint32_t d, uint32_t v, uint32_t *r);
+/* floor(sqrt(x)) */
+uint32_t facet_fx_isqrt64(uint64_t x);
+
+/* ---- the fx kernel table (same order and input names as facet_kernel) -- */
+#define FACET_FX_MAX_INPUTS 6
+
+typedef struct facet_fx_kernel {
+    const char *name;                       /* "ggx_d" */
+    int n_inputs;
+    const char *inputs[FACET_FX_MAX_INPUTS];
+    int32_t lo[FACET_FX_MAX_INPUTS];        /* domain of each input, raw Q15 */
+    int32_t hi[FACET_FX_MAX_INPUTS];
+    int out_frac;                           /* fraction bits of the output */
+    int out_bits;                           /* 32 or 64 (container) */
+    const char *out_format;                 /* "Q15", "UQ19.13", ... */
+    uint64_t (*fx)(const int32_t *in);      /* the kernel, raw output widened */
+    double err_lsb;                         /* FACET_FX_ERR_<NAME>: max |error| in LSB */
+} facet_fx_kernel;
+
+size_t facet_fx_kernel_count(void);
+const facet_fx_kernel *facet_fx_kernel_at(size_t i);
+const facet_fx_kernel *facet_fx_kernel_find(const char *name); /* NULL if unknown */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,357 @@
+/* fx_core.h - integer primitives shared by the fixed-point kernels
+ * (src/fx_*.c only; not installed).  Integer arithmetic only: no float, no
+ * division instruction, no libgcc helper (so a freestanding RV32IMC or
+ * ARMv6-M link needs nothing but this code).
+ *
+ * Rounding rule, the only one used anywhere in the fx kernels:
+ *   every value that loses bits is rounded to nearest, ties up (toward
+ *   +infinity): round(x / 2^k) = (x >> k) + ((x >> (k - 1)) & 1), which is
+ *   floor(x / 2^k + 1/2) and cannot overflow.  Quotients and square roots
+ *   are computed exactly (floor + remainder) and rounded by the same rule.
+ * Every helper is monotone non-decreasing in each argument (the reciprocal
+ * non-increasing), so a formula built from monotone pieces stays monotone.
+ *
+ * fxf: an unsigned pseudo-float m * 2^e with m in [2^31, 2^32) (or m = 0 for
+ * zero), the intermediate of the kernels whose ranges are too wide for one
+ * Q format; each fxf operation has relative error <= 2^-32 (half an ulp).
+ */
+#ifndef FACET_FX_CORE_H
+#define FACET_FX_CORE_H
+
+#include <stdint.h>
+
+/* ---- 32x32 -> 64 multiply ---------------------------------------------
+ * ARMv6-M (Cortex-M0) has only MULS (32x32 -> low 32): there the product
+ * is assembled from four 16x16 partial products, so no __aeabi_lmul call.
+ * Both versions return the exact product; tests/test_fx_prims.c checks it. */
+static inline uint64_t fx_mul64_portable(uint32_t a, uint32_t b)
+{
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
+    uint32_t mid = lh + (ll >> 16);          /* < 2^32: (2^16-1)^2 + 2^16 */
+    uint32_t mid2 = hl + (mid & 0xFFFFu);    /* < 2^32 likewise */
+    uint32_t hi = hh + (mid >> 16) + (mid2 >> 16);
+    uint32_t lo = (mid2 << 16) | (ll & 0xFFFFu);
+    return ((uint64_t)hi << 32) | lo;
+}
+
+#if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_6SM__) || defined(FACET_FX_PORTABLE)
+#define fx_mul64 fx_mul64_portable
+#else
+static inline uint64_t fx_mul64(uint32_t a, uint32_t b) { return (uint64_t)a * b; }
+#endif
+
+/* ---- count leading zeros (x != 0) ------------------------------------------
+ * The builtin only where it is one instruction; ARMv6-M and RV32IMC have
+ * none (the builtin would call __clzsi2), so they take the portable binary
+ * search. */
+static inline int fx_clz32_portable(uint32_t x)
+{
+    int n = 0;
+    if (!(x & 0xFFFF0000u)) { n += 16; x <<= 16; }
+    if (!(x & 0xFF000000u)) { n += 8; x <<= 8; }
+    if (!(x & 0xF0000000u)) { n += 4; x <<= 4; }
+    if (!(x & 0xC0000000u)) { n += 2; x <<= 2; }
+    if (!(x & 0x80000000u)) { n += 1; }
+    return n;
+}
+
+#if !defined(FACET_FX_PORTABLE) && defined(__GNUC__) && \
+    (defined(__x86_64__) || defined(__i386__) || defined(__aarch64__) || defined(__ARM_FEATURE_CLZ))
+static inline int fx_clz32(uint32_t x) { return __builtin_clz(x); }
+#else
+#define fx_clz32 fx_clz32_portable
+#endif
+
+static inline int fx_clz64(uint64_t x) /* x != 0 */
+{
+    uint32_t hi = (uint32_t)(x >> 32);
+    return hi ? fx_clz32(hi) : 32 + fx_clz32((uint32_t)x);
+}
+
+/* 64-bit shifts by a variable amount built from 32-bit ones (a variable
+ * 64-bit shift is a libgcc call on Thumb-1).  0 <= k <= 63. */
+static inline uint64_t fx_shl64(uint64_t x, int k)
+{
+    uint32_t hi = (uint32_t)(x >> 32), lo = (uint32_t)x;
+    if (k == 0)
+        return x;
+    if (k >= 32)
+        return (uint64_t)(lo << (k - 32)) << 32;
+    return ((uint64_t)((hi << k) | (lo >> (32 - k))) << 32) | (uint32_t)(lo << k);
+}
+
+static inline uint64_t fx_shr64(uint64_t x, int k)
+{
+    uint32_t hi = (uint32_t)(x >> 32), lo = (uint32_t)x;
+    if (k == 0)
+        return x;
+    if (k >= 32)
+        return hi >> (k - 32);
+    return ((uint64_t)(hi >> k) << 32) | ((lo >> k) | (hi << (32 - k)));
+}
+
+/* round(x / 2^k), ties up, 1 <= k <= 63 */
+static inline uint64_t fx_rshr64(uint64_t x, int k)
+{
+    return fx_shr64(x, k) + (fx_shr64(x, k - 1) & 1u);
+}
+
+/* ---- the shared reciprocal, division and square root (fx_core.c) ---- */
+
+/* v = floor((2^64 - 1) / d) - 2^32 for d in [2^31, 2^32): the reciprocal in
+ * the form the 2-by-1 division uses.  Table + 3 Newton steps + exact fix. */
+uint32_t facet_fx_rcp32(uint32_t d);
+
+/* y ~ 2^47 / sqrt(x) for x in [2^30, 2^32), |error| <= 2^-29 relative.
+ * Table + 3 Newton steps (the square root is then fixed exactly). */
+uint32_t facet_fx_rsqrt32(uint32_t x);
+
+/* q = floor((u1 2^32 + u0) / d), *r = the remainder; needs d in [2^31, 2^32),
+ * u1 < d and v = facet_fx_rcp32(d).  Exact (Moller-Granlund, 2 fix-ups). */
+uint32_t facet_fx_div2by1(uint32_t u1, uint32_t u0, uint32_t d, uint32_t v, uint32_t *r);
+
+/* floor(sqrt(x)), exact, any x. */
+uint32_t facet_fx_isqrt64(uint64_t x);
+
+/* round(sqrt(x)), ties up (sqrt is never exactly k + 1/2 for integer x). */
+static inline uint64_t fx_isqrt64_rnd(uint64_t x)
+{
+    uint32_t g = facet_fx_isqrt64(x);
+    return (uint64_t)g + (x - fx_mul64(g, g) > g);
+}
+
+/* ---- fxf: m 2^e --------------------------------------------------------- */
+typedef struct { uint32_t m; int32_t e; } fxf;
+
+/* x 2^e, rounded to 32 significant bits */
+static inline fxf fxf_u64(uint64_t x, int32_t e)
+{
+    fxf r;
+    int lz;
+    if (!x) {
+        r.m = 0;
+        r.e = 0;
+        return r;
+    }
+    lz = fx_clz64(x);
+    if (lz >= 32) {
+        r.m = (uint32_t)x << (lz - 32);
+        r.e = e - (lz - 32);
+    } else {
+        uint64_t m = fx_rshr64(x, 32 - lz);
+        r.e = e + (32 - lz);
+        if (m >> 32) { /* rounded up to 2^32 */
+            m >>= 1;
+            r.e++;
+        }
+        r.m = (uint32_t)m;
+    }
+    return r;
+}
+
+/* round(p / 2^32) of a product p in [2^62, 2^64) as a normalised fxf */
+static inline fxf fxf_from_prod(uint64_t p, int32_t e)
+{
+    fxf r;
+    uint64_t m;
+    if (p >> 63) {
+        m = (p >> 32) + ((p >> 31) & 1u);
+        r.e = e + 32;
+    } else {
+        m = (p >> 31) + ((p >> 30) & 1u);
+        r.e = e + 31;
+    }
+    if (m >> 32) {
+        m >>= 1;
+        r.e++;
+    }
+    r.m = (uint32_t)m;
+    return r;
+}
+
+static inline fxf fxf_mul(fxf a, fxf b)
+{
+    if (!a.m || !b.m) {
+        a.m = 0;
+        a.e = 0;
+        return a;
+    }
+    return fxf_from_prod(fx_mul64(a.m, b.m), a.e + b.e);
+}
+
+/* a + b, both >= 0 */
+static inline fxf fxf_add(fxf a, fxf b)
+{
+    int32_t d;
+    uint64_t s;
+    if (!b.m)
+        return a;
+    if (!a.m)
+        return b;
+    if (a.e < b.e) {
+        fxf t = a;
+        a = b;
+        b = t;
+    }
+    d = a.e - b.e;
+    if (d > 32)
+        return a; /* b < half an ulp of a */
+    /* a.m 2^31 + b.m 2^(31 - d) < 2^64; the bit b loses at d = 32 is below
+     * the rounding position and the truncation is monotone */
+    s = ((uint64_t)a.m << 31) + (d == 32 ? (uint64_t)(b.m >> 1) : fx_shl64(b.m, 31 - d));
+    return fxf_u64(s, a.e - 31);
+}
+
+/* 1 / a, a > 0: (2^32 + v) / 2^64 rounded to 32 bits */
+static inline fxf fxf_rcp(fxf a)
+{
+    fxf r;
+    uint32_t v = facet_fx_rcp32(a.m);
+    r.e = -a.e - 63;
+    if (v == 0xFFFFFFFFu) { /* a.m = 2^31: 1/a.m = 2^-31 exactly */
+        r.m = 0x80000000u;
+        r.e++;
+    } else {
+        r.m = 0x80000000u + (v >> 1) + (v & 1u);
+    }
+    return r;
+}
+
+/* a / b (b > 0), correctly rounded to 32 bits */
+static inline fxf fxf_div(fxf a, fxf b)
+{
+    fxf r;
+    uint32_t v, q, rem;
+    if (!a.m)
+        return a;
+    v = facet_fx_rcp32(b.m);
+    q = facet_fx_div2by1(a.m >> 1, a.m << 31, b.m, v, &rem); /* a.m 2^31 / b.m */
+    r.e = a.e - b.e - 31;
+    if (q >> 31) {
+        uint64_t m = (uint64_t)q + (rem >= b.m - rem);
+        if (m >> 32) {
+            m >>= 1;
+            r.e++;
+        }
+        r.m = (uint32_t)m;
+    } else {
+        /* one more quotient bit: 2 rem / b.m */
+        uint32_t bit = rem >= b.m - rem;
+        uint32_t rem2 = bit ? rem - (b.m - rem) : 2 * rem;
+        uint64_t m = ((uint64_t)q << 1 | bit) + (rem2 >= b.m - rem2);
+        r.e--;
+        if (m >> 32) {
+            m >>= 1;
+            r.e++;
+        }
+        r.m = (uint32_t)m;
+    }
+    return r;
+}
+
+/* sqrt(a), correctly rounded to 32 bits */
+static inline fxf fxf_sqrt(fxf a)
+{
+    fxf r;
+    uint64_t x, g;
+    int32_t e2;
+    if (!a.m)
+        return a;
+    if ((uint32_t)a.e & 1u) { /* odd exponent: m 2^31 (e - 31 even) */
+        x = (uint64_t)a.m << 31;
+        e2 = a.e - 31;
+    } else {
+        x = (uint64_t)a.m << 32;
+        e2 = a.e - 32;
+    }
+    g = fx_isqrt64_rnd(x); /* in [2^31, 2^32] */
+    r.e = e2 / 2; /* e2 is even: exact */
+    if (g >> 32) {
+        g >>= 1;
+        r.e++;
+    }
+    r.m = (uint32_t)g;
+    return r;
+}
+
+/* sqrt(x 2^e) of an exact 64-bit x, correctly rounded to 32 bits: x is
+ * normalised by an even shift to [2^62, 2^64) before the integer root, so
+ * no bit of x is lost first. */
+static inline fxf fxf_sqrt64(uint64_t x, int32_t e)
+{
+    fxf r;
+    uint64_t g;
+    int s;
+    if (!x) {
+        r.m = 0;
+        r.e = 0;
+        return r;
+    }
+    s = fx_clz64(x);
+    if ((uint32_t)(e - s) & 1u) /* keep the exponent even */
+        s--;
+    if (s >= 0) {
+        x = fx_shl64(x, s);
+    } else { /* s = -1: x >= 2^63 with an odd exponent; drop one bit, rounded */
+        uint64_t lost = x & 1u;
+        x = (x >> 1) + lost; /* x < 2^64 - 1: no wrap; monotone */
+    }
+    g = fx_isqrt64_rnd(x);
+    r.e = (e - s) / 2;
+    if (g >> 32) {
+        g >>= 1;
+        r.e++;
+    }
+    r.m = (uint32_t)g;
+    return r;
+}
+
+/* round(a 2^f), saturated at max */
+static inline uint64_t fxf_fixed(fxf a, int32_t f, uint64_t max)
+{
+    int32_t k = -(a.e + f);
+    uint64_t v;
+    if (!a.m)
+        return 0;
+    if (k <= 0) {
+        if (-k > 31 || (uint64_t)a.m > fx_shr64(max, -k))
+            return max;
+        v = fx_shl64(a.m, -k);
+    } else if (k > 32) {
+        return 0;
+    } else {
+        v = fx_rshr64(a.m, k);
+    }
+    return v > max ? max : v;
+}
+
+/* round(a / b 2^f) with a single rounding, saturated at max (< 2^31 + 2^30). */
+static inline uint32_t fxf_div_fixed(fxf a, fxf b, int32_t f, uint32_t max)
+{
+    uint32_t v, q, rem, raw;
+    int32_t k;
+    if (!a.m)
+        return 0;
+    /* a/b 2^f = (q31 + rem/b.m) 2^-k, q31 = floor(a.m 2^31 / b.m) in [2^30, 2^32) */
+    k = 31 - (a.e - b.e + f);
+    if (k < 0)
+        return max; /* >= 2^31 */
+    if (k > 32)
+        return 0;   /* < 2^32 2^-33 = 1/2 */
+    v = facet_fx_rcp32(b.m);
+    q = facet_fx_div2by1(a.m >> 1, a.m << 31, b.m, v, &rem);
+    if (k == 0) {
+        if (q == 0xFFFFFFFFu)
+            return max;
+        raw = q + (rem >= b.m - rem);
+    } else if (k == 32) {
+        raw = q >> 31;
+    } else {
+        /* rem/b.m < 1 cannot move q across a rounding boundary (integers) */
+        raw = (q >> k) + ((q >> (k - 1)) & 1u);
+    }
+    return raw > max ? max : raw;
+}
+
+#endif

@@ -1,0 +1,63 @@
+# fx.mk - cross and bare-metal builds of the fixed-point kernels (included
+# by the Makefile; driven by tests/suites/50-fx-targets.sh).  Every build
+# compiles only src/fx_core.c, src/fx_kernels.c (and the table for tests),
+# so nothing else of the library has to port.
+#   $(BUILD)/fx/<target>/test_fx_hash[.elf]   the pinned-hash test per target
+#   $(BUILD)/fx/<cpu>/fx_kernels.o            Cortex-M objects for the size table
+#   $(BUILD)/fx/rv32/fx.elf                   freestanding RV32IMC link check
+FX_KSRC   := src/fx_core.c src/fx_kernels.c
+FX_TSRC   := $(FX_KSRC) src/fx_table.c
+FX_HDRS   := include/facet/fx.h src/fx_core.h tests/harness.h
+FX_CFLAGS := $(WARN) -Iinclude -O2
+FX_CM_CC  ?= arm-none-eabi-gcc
+FX_RV_CC  ?= riscv64-linux-gnu-gcc
+FX_A64_CC ?= aarch64-linux-gnu-gcc
+FX_A32_CC ?= arm-linux-gnueabihf-gcc
+FX_CM_FLAGS = -mthumb -ffunction-sections -fdata-sections
+FX_CM_LINK  = --specs=rdimon.specs -nostartfiles -T tests/cortexm/mps2.ld tests/cortexm/startup.c
+
+.PHONY: fx-cortex-m fx-rv32 fx-linux-cross fx-portable
+fx-cortex-m: $(BUILD)/fx/cortex-m0/test_fx_hash.elf $(BUILD)/fx/cortex-m4/test_fx_hash.elf \
+             $(BUILD)/fx/cortex-m0/fx_kernels.o $(BUILD)/fx/cortex-m4/fx_kernels.o \
+             $(BUILD)/fx/cortex-m0/fx_core.o $(BUILD)/fx/cortex-m4/fx_core.o
+fx-rv32: $(BUILD)/fx/rv32/fx.elf
+fx-linux-cross: $(BUILD)/fx/aarch64/test_fx_hash $(BUILD)/fx/armv7/test_fx_hash \
+                $(BUILD)/fx/aarch64/integer-only.stamp
+fx-portable: $(BUILD)/fx/portable/test_fx_hash
+
+$(BUILD)/fx/cortex-m%/test_fx_hash.elf: tests/test_fx_hash.c $(FX_TSRC) $(FX_HDRS) tests/cortexm/startup.c tests/cortexm/mps2.ld
+	@mkdir -p $(dir $@)
+	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_CM_FLAGS) $(FX_CFLAGS) $(FX_CM_LINK) $(FX_TSRC) $< -o $@
+
+# -Os objects: the size table (README) and the no-helper-call check
+$(BUILD)/fx/cortex-m%/fx_kernels.o: src/fx_kernels.c $(FX_HDRS)
+	@mkdir -p $(dir $@)
+	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_CM_FLAGS) $(WARN) -Iinclude -Os -c $< -o $@
+$(BUILD)/fx/cortex-m%/fx_core.o: src/fx_core.c $(FX_HDRS)
+	@mkdir -p $(dir $@)
+	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_CM_FLAGS) $(WARN) -Iinclude -Os -c $< -o $@
+
+# RV32IMC, freestanding, no libc, no libgcc: the link fails on any
+# undefined symbol (a float, division or clz helper call would be one)
+$(BUILD)/fx/rv32/fx.elf: $(FX_KSRC) $(FX_HDRS)
+	@mkdir -p $(dir $@)
+	$(FX_RV_CC) -march=rv32imc -mabi=ilp32 -ffreestanding -nostdlib $(FX_CFLAGS) \
+	    -Wl,-e,facet_brdf_hammon_fx -Wl,--no-gc-sections $(FX_KSRC) -o $@
+
+$(BUILD)/fx/aarch64/test_fx_hash: tests/test_fx_hash.c $(FX_TSRC) $(FX_HDRS)
+	@mkdir -p $(dir $@)
+	$(FX_A64_CC) $(FX_CFLAGS) $(FX_TSRC) $< -o $@
+$(BUILD)/fx/armv7/test_fx_hash: tests/test_fx_hash.c $(FX_TSRC) $(FX_HDRS)
+	@mkdir -p $(dir $@)
+	$(FX_A32_CC) $(FX_CFLAGS) $(FX_TSRC) $< -o $@
+# integer only, enforced: with -mgeneral-regs-only any float or SIMD
+# register use in the kernels is a compile error
+$(BUILD)/fx/aarch64/integer-only.stamp: $(FX_TSRC) $(FX_HDRS)
+	@mkdir -p $(dir $@)
+	for f in $(FX_TSRC); do $(FX_A64_CC) $(FX_CFLAGS) -mgeneral-regs-only -c $$f -o $(dir $@)/gro.o || exit 1; done
+	touch $@
+
+# the host with the ARMv6-M code paths (16x16 partial products, portable clz)
+$(BUILD)/fx/portable/test_fx_hash: tests/test_fx_hash.c $(FX_TSRC) $(FX_HDRS)
+	@mkdir -p $(dir $@)
+	$(CC) $(FX_CFLAGS) -DFACET_FX_PORTABLE $(FX_TSRC) $< -o $@

@@ -1,0 +1,100 @@
+/* test_fx_prims.c - the shared integer primitives of the fixed-point kernels
+ * against exact references: the portable 16x16 multiply and clz (the
+ * Cortex-M0 / RV32 paths) against the native ones, the reciprocal, the
+ * 2-by-1 division and the integer square root against 128-bit or exhaustive
+ * checks, and the Newton fix-up counts that the docs state. */
+#include <stdio.h>
+#include <stdlib.h>
+#include "harness.h"
+#include "fx_test.h"
+#include "facet/fx.h"
+#include "../src/fx_core.h"
+
+int main(void)
+{
+    fx_rng r = { 0xf1c0 };
+    long i, n = getenv("FACET_TEST_QUICK") ? 200000 : 3000000, bad;
+    th_name = "fx_prims";
+
+    /* mul64: portable == native */
+    for (bad = 0, i = 0; i < n; i++) {
+        uint32_t a = (uint32_t)fx_next(&r), b = (uint32_t)fx_next(&r);
+        if (i < 64) { a = i & 1 ? 0xFFFFFFFFu : a; b = i & 2 ? 0xFFFFFFFFu : i & 4 ? 0 : b; }
+        bad += fx_mul64_portable(a, b) != (uint64_t)a * b;
+    }
+    CHECK(bad == 0, "portable mul64 differs from native in %ld cases", bad);
+
+    /* clz: portable == native for every bit length and random values */
+    for (bad = 0, i = 0; i < 32; i++) {
+        uint32_t x = 1u << i;
+        bad += fx_clz32_portable(x) != 31 - i || fx_clz32_portable(x | (x - 1)) != 31 - i;
+    }
+    for (i = 0; i < n; i++) {
+        uint32_t x = (uint32_t)fx_next(&r) >> (fx_next(&r) % 32);
+        if (x)
+            bad += fx_clz32_portable(x) != fx_clz32(x);
+    }
+    CHECK(bad == 0, "portable clz wrong in %ld cases", bad);
+
+#ifdef __SIZEOF_INT128__
+    /* rcp32: exact floor((2^64-1)/d) - 2^32 at the ends, every table bin edge, random */
+    for (bad = 0, i = 0; i < n + 64 * 4; i++) {
+        uint32_t d;
+        unsigned __int128 want;
+        if (i < 64 * 4)
+            d = (uint32_t)((32 + i / 4) << 26) + (uint32_t)(i % 4 == 0 ? 0 : i % 4 == 1 ? 1 : i % 4 == 2 ? (1 << 26) - 1 : (1 << 25));
+        else
+            d = (uint32_t)fx_next(&r) | 0x80000000u;
+        if (i / 4 >= 32 && i < 64 * 4)
+            d = 0xFFFFFFFFu - (uint32_t)i;
+        want = (((unsigned __int128)1 << 64) - 1) / d - ((unsigned __int128)1 << 32);
+        bad += facet_fx_rcp32(d) != (uint32_t)want;
+    }
+    CHECK(bad == 0, "rcp32 not exact in %ld cases", bad);
+
+    /* div2by1: exact quotient and remainder */
+    for (bad = 0, i = 0; i < n; i++) {
+        uint32_t d = (uint32_t)fx_next(&r) | 0x80000000u, u1 = (uint32_t)fx_next(&r), u0 = (uint32_t)fx_next(&r), rem, q;
+        uint64_t u;
+        if (i & 1)
+            d = 0x80000000u + (uint32_t)(fx_next(&r) % 1024);
+        u1 = (uint32_t)(u1 % d);
+        if (i % 5 == 0)
+            u1 = d - 1;
+        u = ((uint64_t)u1 << 32) | u0;
+        q = facet_fx_div2by1(u1, u0, d, facet_fx_rcp32(d), &rem);
+        bad += q != (uint32_t)(((unsigned __int128)u) / d) || rem != (uint32_t)(u % d);
+    }
+    CHECK(bad == 0, "div2by1 wrong in %ld cases", bad);
+#else
+    SKIP("no 128-bit integer type for the rcp/div references");
+#endif
+
+    /* isqrt64: floor root, exact, all bit lengths */
+    for (bad = 0, i = 0; i < n; i++) {
+        uint64_t x = fx_next(&r) >> (fx_next(&r) % 64), g;
+        if (i < 64)
+            x = (i & 1) ? ((uint64_t)1 << (i / 2)) - 1 : (uint64_t)1 << (i / 2);
+        if (i == 64)
+            x = 0xFFFFFFFFFFFFFFFFull;
+        if (i == 65)
+            x = 0xFFFFFFFE00000001ull; /* (2^32 - 1)^2 */
+        g = facet_fx_isqrt64(x);
+        bad += g * g > x || (g < 0xFFFFFFFFu && (g + 1) * (g + 1) <= x);
+    }
+    CHECK(bad == 0, "isqrt64 wrong in %ld cases", bad);
+
+    /* rsqrt32 accuracy: the documented 2^-29 relative bound, every seed bin */
+    {
+        double worst = 0;
+        for (i = 0; i < n; i++) {
+            uint32_t x = (uint32_t)(0x40000000u + fx_next(&r) % 0xC0000000u);
+            double y = facet_fx_rsqrt32(x), want = ldexp(1.0, 47) / sqrt((double)x);
+            if (fabs(y - want) / want > worst)
+                worst = fabs(y - want) / want;
+        }
+        printf("rsqrt32 max relative error 2^%.2f\n", log2(worst));
+        CHECK(worst <= ldexp(1.0, -29), "rsqrt32 error 2^%.2f exceeds 2^-29", log2(worst));
+    }
+    return th_done();
+}
