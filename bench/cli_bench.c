@@ -156,6 +156,18 @@ int facet_cmd_bench(int argc, char **argv)
         fprintf(stderr, "facet bench: unknown format '%s' (known: f32, fx)\n", o.format);
         return 2;
     }
+    if (o.port) {
+        int known = !strcmp(o.port, "textbook") || !strcmp(o.port, "shader") ||
+                    !strcmp(o.port, "shader_fm");
+        size_t p;
+        for (p = 0; p < facet_port_count(); p++)
+            if (!strcmp(facet_port_at(p, NULL, NULL), o.port))
+                known = 1;
+        if (!known) {
+            fprintf(stderr, "facet bench: unknown port '%s'\n", o.port);
+            return 2;
+        }
+    }
     if (o.n_err < o.n_time)
         o.n_err = o.n_time;
     cyc_init();

@@ -1,0 +1,77 @@
+#!/bin/sh
+# bench/report.sh BUILD_DIR - the benchmark part of `make report` (called
+# from the marked block at the end of tests/report.sh).  Writes, under
+# BUILD_DIR/report/: mca.tsv (llvm-mca cycles per sample of each port's
+# batch loop), size.tsv (bytes of each batch function), arm.tsv (Cortex-M
+# figures for the fixed-point kernels, when they and the tools exist), then
+# runs build/facet-report, which measures everything else and writes
+# bench.md and index.html.  Progress goes to the terminal.
+set -u
+build=${1:-build}
+out=$build/report
+mkdir -p "$out"
+MAKE=${MAKE:-make}
+$MAKE -s BUILD="$build" bench-report || exit 1
+lanes_of() { case $1 in avx2) echo 8 ;; sse2|neon) echo 4 ;; *) echo 1 ;; esac; }
+obj_of() { if [ "$1" = scalar ]; then echo "$build/src/f32_batch_scalar.o"; else echo "$build/ports/$1/f32_$1.o"; fi; }
+kernels=$("$build/facet" list | cut -d' ' -f1)
+
+# ---- x86: llvm-mca on each batch loop, code size ---------------------------
+: > "$out/mca.tsv"
+: > "$out/size.tsv"
+echo "# port kernel cpu cycles_per_sample (llvm-mca, modelled)" >> "$out/mca.tsv"
+echo "# format port kernel bytes" >> "$out/size.tsv"
+case $(${CC:-cc} -dumpmachine) in
+x86_64*|i?86*) x86=1 ;;
+*) x86=0 ;;
+esac
+for port in scalar sse2 avx2 neon; do
+    obj=$(obj_of $port)
+    [ -f "$obj" ] || continue
+    lanes=$(lanes_of $port)
+    for k in $kernels; do
+        sz=$(nm -S --defined-only "$obj" 2>/dev/null | awk -v s="batch_${k}_" '$4 == s { print $2 }')
+        [ -n "$sz" ] && echo "f32 $port $k $(printf '%d' "0x$sz")" >> "$out/size.tsv"
+        if [ $x86 = 1 ] && command -v llvm-mca >/dev/null 2>&1; then
+            sh bench/mca.sh objdump "$obj" "batch_${k}_" x86_64 znver3 skylake |
+                while read -r cpu cyc; do
+                    echo "$port $k $cpu $(awk -v c="$cyc" -v l="$lanes" 'BEGIN { printf "%.3f", c / l }')"
+                done >> "$out/mca.tsv"
+        fi
+    done
+    echo "report: llvm-mca + sizes: $port done"
+done
+
+# ---- Cortex-M: fixed-point kernels (issue 4) --------------------------------
+: > "$out/arm.tsv"
+if command -v arm-none-eabi-gcc >/dev/null 2>&1 && command -v llvm-mca >/dev/null 2>&1 &&
+   [ -f include/facet/fx.h ] && ls src/fx_*.c >/dev/null 2>&1; then
+    echo "# what kernel cpu value source" >> "$out/arm.tsv"
+    adir=$build/bench/arm
+    mkdir -p "$adir"
+    # one translation unit so the shared primitives can be inlined into the loops
+    cat src/fx_*.c > "$adir/fx_all.c"
+    for cpu in cortex-m4 cortex-m7 cortex-m33; do
+        case $cpu in
+        cortex-m33) triple=thumbv8m.main-none-eabi ;;
+        *) triple=thumbv7em-none-eabi ;;
+        esac
+        if arm-none-eabi-gcc -mcpu=$cpu -mthumb -O2 -std=c99 -Iinclude -Isrc -c "$adir/fx_all.c" \
+                -o "$adir/fx_$cpu.o" 2>"$adir/fx_$cpu.log"; then
+            # the batch loops call the scalar kernel, so model the kernel body:
+            # straight line, every instruction once, callees NOT included
+            for k in $kernels; do
+                MCA_WHOLE=1 sh bench/mca.sh arm-none-eabi-objdump "$adir/fx_$cpu.o" "facet_${k}_fx" "$triple" "$cpu" |
+                    while read -r c cyc; do echo "fx-body $k $cpu $cyc llvm-mca-straight-line-no-callees"; done >> "$out/arm.tsv"
+            done
+        else
+            echo "report: arm-none-eabi-gcc failed for $cpu (see $adir/fx_$cpu.log)"
+        fi
+        echo "report: Cortex-M fixed point, llvm-mca $cpu done"
+    done
+else
+    echo "report: skipping Cortex-M figures (needs arm-none-eabi-gcc, llvm-mca, facet/fx.h)"
+fi
+
+echo "report: measuring (benchmarks, tradeoffs, pictures, rasterizer) ..."
+"$build/facet-report" "$out" ${FACET_REPORT_QUICK:+--quick}
