@@ -18,6 +18,8 @@ WARN      = -std=c99 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes
 BASEFLAGS = $(WARN) -ffp-contract=off -fno-fast-math -Iinclude $(CFLAGS)
 PICFLAGS  = -fPIC
 
+TARGET  := $(shell $(CC) -dumpmachine)
+
 LIB_SRC  := $(wildcard src/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 CLI_SRC  := $(wildcard src/cli/*.c)
@@ -35,7 +37,7 @@ EXTRA_TESTS :=
 all: lib $(BUILD)/facet
 lib: $(BUILD)/libfacet.a $(BUILD)/libfacet.so
 
-$(BUILD)/src/%.o: src/%.c $(HEADERS)
+$(BUILD)/src/%.o: src/%.c $(HEADERS) $(wildcard src/*.h)
 	@mkdir -p $(dir $@)
 	$(CC) $(BASEFLAGS) $(PICFLAGS) -c $< -o $@
 

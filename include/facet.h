@@ -13,11 +13,17 @@
  *   - Outside the domain every input is clamped to the nearest domain value;
  *     NaN and -Inf count as the low end, +Inf as the high end.  So finite or
  *     not, every input gives a finite, non-negative result and nothing traps.
+ *   - Denormal inputs are values like any other, except on ports that run
+ *     with flush-to-zero (armv7 NEON): there they act as 0 (the tests judge
+ *     such a port at the flushed input), and an intermediate below 2^-126
+ *     becomes 0, so results below 2^-60 are only good to bound * 2^-60
+ *     absolutely (elsewhere: below 2^-100, to bound * 2^-100).
  *   - (N.L, N.V, L.V) triples that no pair of unit vectors can form (e.g.
  *     after rounding the dots of a real pair) are evaluated by the identities
  *     below with 1 + L.V raised to (N.L + N.V)^2 / 2 where it is smaller;
  *     this caps N.H at 1 and is continuous with the geometric definition.
- *   - Error: relative to the oracle evaluated at the same float inputs,
+ *   - Error: relative to the oracle evaluated at the same float inputs
+ *     (values below the absolute floor of the previous point excepted),
  *     maximum over the test sweep (tests/test_f32_accuracy.c), in units of
  *     2^-k; FACET_ERR_* below are the bounds the tests enforce.  Where a
  *     bound has an absolute floor it is said so.  Cost counts float
@@ -156,6 +162,51 @@ void facet_brdf_hammon_rgb_f32(float out[3], float nol, float nov, float lov,
  * Error: FACET_ERR_LAMBERT_F32.  Cost: 3 ops. */
 float facet_lambert_f32(float albedo);
 
+/* ---- batch API -------------------------------------------------------------
+ * facet_<kernel>_f32_batch(out, in1, ..., n): out[i] = kernel(in1[i], ...)
+ * for i < n, structure-of-arrays, inputs in the order above.  Any n (tails
+ * are handled), no alignment requirement, out may alias any input.  Runs on
+ * the best port for this CPU, chosen once and thread-safely on first use:
+ * avx2 > sse2 on x86, neon on ARM, else scalar.  Every port meets the
+ * bounds above (tests/test_f32_accuracy.c runs each kernel on each port);
+ * results may differ between ports by rounding, within those bounds. */
+void facet_noh_from_dots_f32_batch(float *out, const float *nol, const float *nov,
+                                   const float *lov, size_t n);
+void facet_loh_from_dots_f32_batch(float *out, const float *lov, size_t n);
+void facet_fresnel_schlick_f32_batch(float *out, const float *f0, const float *cos_theta, size_t n);
+void facet_ggx_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_smith_g1_f32_batch(float *out, const float *nov, const float *alpha, size_t n);
+void facet_smith_g2_f32_batch(float *out, const float *nol, const float *nov, const float *alpha,
+                              size_t n);
+void facet_smith_g2_uncorrelated_f32_batch(float *out, const float *nol, const float *nov,
+                                           const float *alpha, size_t n);
+void facet_smith_vis_f32_batch(float *out, const float *nol, const float *nov, const float *alpha,
+                               size_t n);
+void facet_smith_g1_hammon_f32_batch(float *out, const float *nov, const float *alpha, size_t n);
+void facet_smith_g2_hammon_f32_batch(float *out, const float *nol, const float *nov,
+                                     const float *alpha, size_t n);
+void facet_smith_vis_hammon_f32_batch(float *out, const float *nol, const float *nov,
+                                      const float *alpha, size_t n);
+void facet_diffuse_hammon_f32_batch(float *out, const float *nol, const float *nov,
+                                    const float *lov, const float *alpha, const float *albedo,
+                                    size_t n);
+void facet_brdf_hammon_f32_batch(float *out, const float *nol, const float *nov, const float *lov,
+                                 const float *alpha, const float *f0, const float *albedo, size_t n);
+void facet_lambert_f32_batch(float *out, const float *albedo, size_t n);
+
+/* Ports.  facet_set_port(name) forces one for all batch calls in the process:
+ * "scalar", "sse2", "avx2", "neon", or "auto" (the automatic choice).  Returns
+ * 0 on success, 1 for a name not compiled into this build, 2 for a port this
+ * CPU cannot run (the active port is then unchanged).  The environment
+ * variable FACET_PORT names the initial choice the same way (an unknown or
+ * unsupported name there falls back to auto; facet_port_name() tells).
+ * facet_port_at(i, &supported, &lanes) lists the ports compiled in, best
+ * first (NULL past the end). */
+int facet_set_port(const char *name);
+const char *facet_port_name(void);
+size_t facet_port_count(void);
+const char *facet_port_at(size_t i, int *supported, int *lanes);
+
 /* ---- the kernel table ----------------------------------------------------
  * One entry per kernel, in `facet list` order, for tools that drive every
  * kernel the same way (the facet command, the tests, the benchmarks). */
@@ -167,6 +218,8 @@ typedef struct facet_kernel {
     const char *inputs[FACET_MAX_INPUTS];      /* "noh", "alpha" */
     float (*f32)(const float *in);             /* scalar f32 kernel */
     double (*oracle)(const double *in);        /* double oracle */
+    /* batch on the active port: out[i] = kernel(in[0][i], in[1][i], ...) */
+    void (*f32_batch)(float *out, const float *const *in, size_t n);
     double err_f32;                            /* FACET_ERR_<NAME>_F32 */
 } facet_kernel;
 

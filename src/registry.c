@@ -15,9 +15,20 @@
 #include "kernels.def"
 #undef K
 
+#define B1(f, in) f(out, in[0], n)
+#define B2(f, in) f(out, in[0], in[1], n)
+#define B3(f, in) f(out, in[0], in[1], in[2], n)
+#define B5(f, in) f(out, in[0], in[1], in[2], in[3], in[4], n)
+#define B6(f, in) f(out, in[0], in[1], in[2], in[3], in[4], in[5], n)
+#define K(name, NAME, n_in, ...)                                                     \
+    static void batch_##name(float *out, const float *const *in, size_t n)          \
+    { B##n_in(facet_##name##_f32_batch, in); }
+#include "kernels.def"
+#undef K
+
 static const facet_kernel table[] = {
 #define K(name, NAME, n, ...) \
-    { #name, n, { __VA_ARGS__ }, f32_##name, oracle_##name, FACET_ERR_##NAME##_F32 },
+    { #name, n, { __VA_ARGS__ }, f32_##name, oracle_##name, batch_##name, FACET_ERR_##NAME##_F32 },
 #include "kernels.def"
 #undef K
 };

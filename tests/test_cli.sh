@@ -2,6 +2,12 @@
 # test_cli.sh BUILD_DIR - the `facet` command's contract: list, eval,
 # round-tripping output, malformed lines, exit statuses, --help.
 facet=${1:-build}/facet
+# FACET_EXEC runs target binaries (e.g. "qemu-aarch64 -L /usr/aarch64-linux-gnu")
+if [ -n "${FACET_EXEC:-}" ]; then
+    real_facet=$facet
+    facet=facet_exec
+    facet_exec() { $FACET_EXEC "$real_facet" "$@"; }
+fi
 pass=0 fail=0
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAIL cli: $*"; }
@@ -49,6 +55,26 @@ printf '0.5 0.5x\n' | "$facet" eval ggx_d > /dev/null 2>&1; expect "trailing jun
 "$facet" eval ggx_d --format q99 < /dev/null > /dev/null 2>&1; expect "unknown format exit" 2 $?
 "$facet" frobnicate > /dev/null 2>&1; expect "unknown verb exit" 2 $?
 "$facet" > /dev/null 2>&1; expect "no verb exit" 2 $?
+
+# ports: every port compiled in evaluates through the batch path and agrees
+# with the scalar port to within the kernel's bound; others are refused
+ports=$("$facet" eval --help | sed -n 's/^ports compiled in://p')
+[ -n "$ports" ] && ok || bad "eval --help does not list the ports"
+ref=$(echo "0.6 0.7 0.5 0.1 0.04 0.5" | "$facet" eval brdf_hammon --port scalar)
+for p in $(echo "$ports" | tr ' ' '\n' | grep -v '^(' | grep -vE '^(not|on|this|CPU\))$'); do
+    if echo "$ports" | grep -q "$p (not on this CPU)"; then
+        echo "0.5 0.5" | "$facet" eval ggx_d --port "$p" > /dev/null 2> "$tmp/err"; expect "unsupported port $p exit" 2 $?
+        grep -q 'cannot run' "$tmp/err" && ok || bad "unsupported port $p: $(cat "$tmp/err")"
+        continue
+    fi
+    out=$(echo "0.6 0.7 0.5 0.1 0.04 0.5" | "$facet" eval brdf_hammon --port "$p"); expect "port $p exit" 0 $?
+    awk -v a="$out" -v b="$ref" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 6e-6 * b) }' && ok ||
+        bad "port $p: $out vs scalar $ref"
+    out=$(echo "0.6 0.7 0.5 0.1 0.04 0.5" | FACET_PORT="$p" "$facet" eval brdf_hammon); expect "FACET_PORT=$p exit" 0 $?
+done
+echo "0.5 0.5" | "$facet" eval ggx_d --port no_such_port > /dev/null 2> "$tmp/err"; expect "bogus port exit" 2 $?
+grep -q "unknown port" "$tmp/err" && ok || bad "bogus port: $(cat "$tmp/err")"
+echo "0.5 0.5" | FACET_PORT=no_such_port "$facet" eval ggx_d > /dev/null 2>&1; expect "bogus FACET_PORT exit" 2 $?
 
 # help for each verb
 for v in "" "list" "eval"; do

@@ -12,4 +12,12 @@
  * rasterizer multiplies the BRDF by N.L, so the product still goes to 0. */
 #define FACET_COS_MIN 9.5367431640625e-07f
 
+/* Kernels and port ops are always inlined: a caller's SIMD loop then keeps
+ * constants in registers and pays no call. */
+#if defined(__GNUC__) || defined(__clang__)
+#define FACET_INLINE static inline __attribute__((always_inline))
+#else
+#define FACET_INLINE static inline
+#endif
+
 #endif

@@ -21,15 +21,15 @@
 #define FACET_SCALAR_HAS_FMA 0
 #endif
 
-static inline float facet_scalar_set(float x) { return x; }
-static inline float facet_scalar_add(float a, float b) { return a + b; }
-static inline float facet_scalar_sub(float a, float b) { return a - b; }
-static inline float facet_scalar_mul(float a, float b) { return a * b; }
-static inline float facet_scalar_min(float a, float b) { return a < b ? a : b; }
-static inline float facet_scalar_max(float a, float b) { return a > b ? a : b; }
+FACET_INLINE float facet_scalar_set(float x) { return x; }
+FACET_INLINE float facet_scalar_add(float a, float b) { return a + b; }
+FACET_INLINE float facet_scalar_sub(float a, float b) { return a - b; }
+FACET_INLINE float facet_scalar_mul(float a, float b) { return a * b; }
+FACET_INLINE float facet_scalar_min(float a, float b) { return a < b ? a : b; }
+FACET_INLINE float facet_scalar_max(float a, float b) { return a > b ? a : b; }
 
 /* a*b + c; fused where the hardware fuses. */
-static inline float facet_scalar_fma(float a, float b, float c)
+FACET_INLINE float facet_scalar_fma(float a, float b, float c)
 {
 #if FACET_SCALAR_HAS_FMA
     return __builtin_fmaf(a, b, c);
@@ -40,33 +40,33 @@ static inline float facet_scalar_fma(float a, float b, float c)
 }
 
 /* c - a*b */
-static inline float facet_scalar_fnma(float a, float b, float c)
+FACET_INLINE float facet_scalar_fnma(float a, float b, float c)
 {
     return facet_scalar_fma(-a, b, c);
 }
 
 /* a < b ? x : y */
-static inline float facet_scalar_sel_lt(float a, float b, float x, float y)
+FACET_INLINE float facet_scalar_sel_lt(float a, float b, float x, float y)
 {
     return a < b ? x : y;
 }
 
 /* Clamp to [lo, hi]; NaN goes to lo, -Inf to lo, +Inf to hi. */
-static inline float facet_scalar_clamp(float x, float lo, float hi)
+FACET_INLINE float facet_scalar_clamp(float x, float lo, float hi)
 {
     x = x > lo ? x : lo;
     return x < hi ? x : hi;
 }
 
 /* 1/x for x in [2^-126, 2^126]: the IEEE division. */
-static inline float facet_scalar_rcp(float x) { return 1.0f / x; }
+FACET_INLINE float facet_scalar_rcp(float x) { return 1.0f / x; }
 
 /* 1/sqrt(x) for x in [2^-126, 2^126].  Seed: the exponent-halving bit trick
  * with constant 0x5f375a86 (relative error <= 3.5e-2).  Each Newton step
  * y' = y + y(1 - x y^2)/2 maps a relative error e to about 1.5 e^2:
  * 3.5e-2 -> 1.8e-3 -> 4.9e-6 -> 3.6e-11, so three steps leave only the
  * rounding of the steps themselves (about 1 ulp). */
-static inline float facet_scalar_rsqrt(float x)
+FACET_INLINE float facet_scalar_rsqrt(float x)
 {
     union { float f; uint32_t u; } b;
     float y, e;
@@ -84,7 +84,7 @@ static inline float facet_scalar_rsqrt(float x)
 /* Exact a*a - p for p = fl(a*a) (no overflow/underflow in range).  Without
  * FMA: Dekker, splitting a by masking the low 12 significand bits, so the
  * halves' products are exact whatever the compiler contracts. */
-static inline float facet_scalar_sqr_err(float a, float p)
+FACET_INLINE float facet_scalar_sqr_err(float a, float p)
 {
 #if FACET_SCALAR_HAS_FMA
     return __builtin_fmaf(a, a, -p);

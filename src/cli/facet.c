@@ -1,6 +1,6 @@
 /* facet - the command-line face of the library.
  *   facet list
- *   facet eval KERNEL [--format f32] [--port auto|scalar]
+ *   facet eval KERNEL [--format f32] [--port auto|scalar|sse2|avx2|neon]
  * Exit status: 0 success, 2 usage error or malformed input, 1 I/O error. */
 #include <errno.h>
 #include <stdio.h>
@@ -9,6 +9,7 @@
 #include "facet.h"
 
 #define LINE_MAX_ 4096
+#define CHUNK 1024 /* samples per batch call */
 
 static const char *prog = "facet";
 
@@ -36,14 +37,26 @@ static void usage_list(FILE *f)
 static void usage_eval(FILE *f)
 {
     fprintf(f,
-            "usage: %s eval KERNEL [--format f32] [--port auto|scalar]\n"
+            "usage: %s eval KERNEL [--format f32] [--port P]\n"
             "Reads samples from stdin, one per line: the kernel's inputs as decimal\n"
             "numbers separated by white space, in 'facet list' order.  Writes one line\n"
             "per sample: the output, printed with %%.9g (round-trips the float).\n"
             "A malformed line is an error naming its line number (exit status 2).\n"
             "  --format f32     the float kernels (default)\n"
-            "  --port P         port to run: auto (default) or scalar\n",
+            "  --port P         port to run the batch kernels on: auto (default: the\n"
+            "                   best this CPU runs, or $FACET_PORT), or one of the\n"
+            "                   ports compiled in (listed below)\n",
             prog);
+    {
+        size_t i;
+        fprintf(f, "ports compiled in:");
+        for (i = 0; i < facet_port_count(); i++) {
+            int sup;
+            const char *n = facet_port_at(i, &sup, NULL);
+            fprintf(f, " %s%s", n, sup ? "" : " (not on this CPU)");
+        }
+        fprintf(f, "\n");
+    }
 }
 
 static int cmd_list(int argc, char **argv)
@@ -97,6 +110,7 @@ static int cmd_eval(int argc, char **argv)
     const facet_kernel *k = NULL;
     const char *format = "f32", *port = "auto";
     char line[LINE_MAX_];
+    static float cols[FACET_MAX_INPUTS][CHUNK], out[CHUNK];
     long lineno = 0;
     int i;
 
@@ -135,27 +149,50 @@ static int cmd_eval(int argc, char **argv)
         fprintf(stderr, "%s eval: unknown format '%s' (known: f32, fx)\n", prog, format);
         return 2;
     }
-    if (strcmp(port, "auto") && strcmp(port, "scalar")) {
-        fprintf(stderr, "%s eval: unknown port '%s' (known: auto, scalar)\n", prog, port);
+    if (!strcmp(port, "auto") && getenv("FACET_PORT") && *getenv("FACET_PORT"))
+        port = getenv("FACET_PORT");
+    switch (facet_set_port(port)) {
+    case 0:
+        break;
+    case 2:
+        fprintf(stderr, "%s eval: port '%s' is compiled in but this CPU cannot run it\n", prog, port);
+        return 2;
+    default:
+        fprintf(stderr, "%s eval: unknown port '%s' (see '%s eval --help')\n", prog, port, prog);
         return 2;
     }
-    while (fgets(line, sizeof line, stdin)) {
-        float in[FACET_MAX_INPUTS];
-        const char *err;
-        lineno++;
-        if (!strchr(line, '\n') && !feof(stdin)) {
-            fprintf(stderr, "%s eval: line %ld: longer than %d characters\n", prog, lineno, LINE_MAX_ - 2);
-            return 2;
-        }
-        err = parse_line(line, k->n_inputs, in);
-        if (err) {
-            fprintf(stderr, "%s eval: line %ld: %s (expected %d numbers:", prog, lineno, err, k->n_inputs);
+    for (;;) {
+        int n = 0;
+        while (n < CHUNK && fgets(line, sizeof line, stdin)) {
+            float in[FACET_MAX_INPUTS];
+            const char *err;
+            lineno++;
+            if (!strchr(line, '\n') && !feof(stdin)) {
+                fprintf(stderr, "%s eval: line %ld: longer than %d characters\n", prog, lineno, LINE_MAX_ - 2);
+                return 2;
+            }
+            err = parse_line(line, k->n_inputs, in);
+            if (err) {
+                fprintf(stderr, "%s eval: line %ld: %s (expected %d numbers:", prog, lineno, err, k->n_inputs);
+                for (i = 0; i < k->n_inputs; i++)
+                    fprintf(stderr, " %s", k->inputs[i]);
+                fprintf(stderr, ")\n");
+                return 2;
+            }
             for (i = 0; i < k->n_inputs; i++)
-                fprintf(stderr, " %s", k->inputs[i]);
-            fprintf(stderr, ")\n");
-            return 2;
+                cols[i][n] = in[i];
+            n++;
         }
-        printf("%.9g\n", k->f32(in));
+        if (n == 0)
+            break;
+        {
+            const float *ptr[FACET_MAX_INPUTS];
+            for (i = 0; i < FACET_MAX_INPUTS; i++)
+                ptr[i] = cols[i];
+            k->f32_batch(out, ptr, (size_t)n);
+        }
+        for (i = 0; i < n; i++)
+            printf("%.9g\n", out[i]);
     }
     if (ferror(stdin) || fflush(stdout) != 0) {
         fprintf(stderr, "%s eval: I/O error\n", prog);
@@ -171,10 +208,12 @@ typedef struct {
     int (*run)(int argc, char **argv); /* argv[0] is the verb */
 } verb;
 
+int facet_cmd_bench(int argc, char **argv); /* bench/cli_bench.c */
 static const verb verbs[] = {
     { "list", cmd_list },
     { "eval", cmd_eval },
     { "vectors", facet_cli_vectors }, /* src/cli/fx.c */
+    { "bench", facet_cmd_bench },
 };
 
 int main(int argc, char **argv)

@@ -31,14 +31,14 @@
 #define FACET_2_INV_PI_ 0.636619772f
 
 /* Domain handling, shared by all kernels: NaN and -Inf go to the low end. */
-static inline V_ FACET_K(x_unit)(V_ x) { return CLAMP_(x, C_(0.0f), C_(1.0f)); }
-static inline V_ FACET_K(x_cos)(V_ x) { return CLAMP_(x, C_(FACET_COS_MIN), C_(1.0f)); }
-static inline V_ FACET_K(x_alpha)(V_ x) { return CLAMP_(x, C_(FACET_ALPHA_MIN), C_(1.0f)); }
-static inline V_ FACET_K(x_lov)(V_ x) { return CLAMP_(x, C_(-1.0f), C_(1.0f)); }
+FACET_INLINE V_ FACET_K(x_unit)(V_ x) { return CLAMP_(x, C_(0.0f), C_(1.0f)); }
+FACET_INLINE V_ FACET_K(x_cos)(V_ x) { return CLAMP_(x, C_(FACET_COS_MIN), C_(1.0f)); }
+FACET_INLINE V_ FACET_K(x_alpha)(V_ x) { return CLAMP_(x, C_(FACET_ALPHA_MIN), C_(1.0f)); }
+FACET_INLINE V_ FACET_K(x_lov)(V_ x) { return CLAMP_(x, C_(-1.0f), C_(1.0f)); }
 
 /* 1 - (1 - x)^5 without cancellation at small x: with y = 1 - x it is
  * x (1 + y + y^2 + y^3 + y^4), a sum of positive terms. */
-static inline V_ FACET_K(x_one_minus_pow5)(V_ x)
+FACET_INLINE V_ FACET_K(x_one_minus_pow5)(V_ x)
 {
     V_ y = SUB_(C_(1.0f), x);
     V_ p = ADD_(y, C_(1.0f));
@@ -50,20 +50,20 @@ static inline V_ FACET_K(x_one_minus_pow5)(V_ x)
 
 /* alpha^2 (1 - n^2) + n^2 = alpha^2 + (1 - alpha^2) n^2, the radicand of the
  * exact Smith terms, with 1 - n^2 formed as (1-n)(1+n): all terms >= 0. */
-static inline V_ FACET_K(x_smith_w)(V_ n, V_ a2)
+FACET_INLINE V_ FACET_K(x_smith_w)(V_ n, V_ a2)
 {
     V_ q = MUL_(SUB_(C_(1.0f), n), ADD_(C_(1.0f), n));
     return FMA_(a2, q, MUL_(n, n));
 }
 
-static inline V_ FACET_K(x_sqrt)(V_ w) { return MUL_(w, RSQRT_(w)); }
+FACET_INLINE V_ FACET_K(x_sqrt)(V_ w) { return MUL_(w, RSQRT_(w)); }
 
 /* ---- identities ------------------------------------------------------ */
 
 /* N.H = (N.L + N.V) / |L + V|, |L + V|^2 = 2 + 2 L.V.  t = 1 + L.V is raised
  * to (N.L + N.V)^2 / 2 where the triple is inconsistent, which caps N.H at 1
  * and keeps 2t > 0 (N.L, N.V >= FACET_COS_MIN). */
-static inline V_ FACET_K(noh_from_dots)(V_ nol, V_ nov, V_ lov)
+FACET_INLINE V_ FACET_K(noh_from_dots)(V_ nol, V_ nov, V_ lov)
 {
     V_ s = ADD_(FACET_K(x_cos)(nol), FACET_K(x_cos)(nov));
     V_ t = ADD_(C_(1.0f), FACET_K(x_lov)(lov));
@@ -73,7 +73,7 @@ static inline V_ FACET_K(noh_from_dots)(V_ nol, V_ nov, V_ lov)
 
 /* L.H = |L + V| / 2 = sqrt((1 + L.V) / 2) = t * rsqrt(2t); 2t is floored at
  * 2^-100 only so that L.V = -1 gives 0 * finite = 0. */
-static inline V_ FACET_K(loh_from_dots)(V_ lov)
+FACET_INLINE V_ FACET_K(loh_from_dots)(V_ lov)
 {
     V_ t = ADD_(C_(1.0f), FACET_K(x_lov)(lov));
     V_ t2 = MAX_(ADD_(t, t), C_(7.88860905e-31f));
@@ -84,7 +84,7 @@ static inline V_ FACET_K(loh_from_dots)(V_ lov)
 
 /* f0 + (1 - f0) y^5 with y given as the unevaluated sum yh + yl:
  * y^5 ~ yh^4 (yh + 5 yl), so the rounding of y is not amplified five times. */
-static inline V_ FACET_K(x_fresnel_y)(V_ f0, V_ yh, V_ yl)
+FACET_INLINE V_ FACET_K(x_fresnel_y)(V_ f0, V_ yh, V_ yl)
 {
     V_ y2 = MUL_(yh, yh);
     V_ y5 = MUL_(MUL_(y2, y2), FMA_(C_(5.0f), yl, yh));
@@ -92,14 +92,14 @@ static inline V_ FACET_K(x_fresnel_y)(V_ f0, V_ yh, V_ yl)
 }
 
 /* y = 1 - c exactly as yh + yl (Fast2Sum: |1| >= |c|). */
-static inline V_ FACET_K(x_fresnel)(V_ f0, V_ c)
+FACET_INLINE V_ FACET_K(x_fresnel)(V_ f0, V_ c)
 {
     V_ yh = SUB_(C_(1.0f), c);
     V_ yl = SUB_(SUB_(C_(1.0f), yh), c);
     return FACET_K(x_fresnel_y)(f0, yh, yl);
 }
 
-static inline V_ FACET_K(fresnel_schlick)(V_ f0, V_ c)
+FACET_INLINE V_ FACET_K(fresnel_schlick)(V_ f0, V_ c)
 {
     return FACET_K(x_fresnel)(FACET_K(x_unit)(f0), FACET_K(x_unit)(c));
 }
@@ -109,7 +109,7 @@ static inline V_ FACET_K(fresnel_schlick)(V_ f0, V_ c)
 /* D = alpha^2 / (pi d^2), d = (1 - n^2) + (n alpha)^2 with 1 - n^2 as
  * (1-n)(1+n), so d keeps full relative precision at the peak (d -> alpha^2).
  * Written D = (1/pi) (alpha/d)^2: alpha/d <= 1/alpha_min, no overflow. */
-static inline V_ FACET_K(ggx_d)(V_ noh, V_ alpha)
+FACET_INLINE V_ FACET_K(ggx_d)(V_ noh, V_ alpha)
 {
     V_ n = FACET_K(x_unit)(noh);
     V_ a = FACET_K(x_alpha)(alpha);
@@ -122,7 +122,7 @@ static inline V_ FACET_K(ggx_d)(V_ noh, V_ alpha)
 /* ---- Smith, exact ------------------------------------------------------ */
 
 /* G1 = 2n / (n + sqrt(alpha^2 + (1 - alpha^2) n^2)) */
-static inline V_ FACET_K(smith_g1)(V_ nov, V_ alpha)
+FACET_INLINE V_ FACET_K(smith_g1)(V_ nov, V_ alpha)
 {
     V_ n = FACET_K(x_unit)(nov);
     V_ a = FACET_K(x_alpha)(alpha);
@@ -132,7 +132,7 @@ static inline V_ FACET_K(smith_g1)(V_ nov, V_ alpha)
 
 /* nv sqrt(w(nl)) + nl sqrt(w(nv)): the height-correlated denominator,
  * G2 = 2 nl nv / den, Vis = G2 / (4 nl nv) = 0.5 / den. */
-static inline V_ FACET_K(x_g2_den)(V_ nl, V_ nv, V_ a)
+FACET_INLINE V_ FACET_K(x_g2_den)(V_ nl, V_ nv, V_ a)
 {
     V_ a2 = MUL_(a, a);
     V_ rl = FACET_K(x_sqrt)(FACET_K(x_smith_w)(nl, a2));
@@ -140,7 +140,7 @@ static inline V_ FACET_K(x_g2_den)(V_ nl, V_ nv, V_ a)
     return FMA_(nv, rl, MUL_(nl, rv));
 }
 
-static inline V_ FACET_K(smith_g2)(V_ nol, V_ nov, V_ alpha)
+FACET_INLINE V_ FACET_K(smith_g2)(V_ nol, V_ nov, V_ alpha)
 {
     V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
     V_ den = FACET_K(x_g2_den)(nl, nv, FACET_K(x_alpha)(alpha));
@@ -148,7 +148,7 @@ static inline V_ FACET_K(smith_g2)(V_ nol, V_ nov, V_ alpha)
     return MIN_(MUL_(ADD_(p, p), RCP_(den)), C_(1.0f));
 }
 
-static inline V_ FACET_K(smith_vis)(V_ nol, V_ nov, V_ alpha)
+FACET_INLINE V_ FACET_K(smith_vis)(V_ nol, V_ nov, V_ alpha)
 {
     V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
     V_ den = FACET_K(x_g2_den)(nl, nv, FACET_K(x_alpha)(alpha));
@@ -156,7 +156,7 @@ static inline V_ FACET_K(smith_vis)(V_ nol, V_ nov, V_ alpha)
 }
 
 /* G1(L) G1(V) = 4 nl nv / ((nl + sqrt w(nl)) (nv + sqrt w(nv))): one reciprocal. */
-static inline V_ FACET_K(smith_g2_uncorrelated)(V_ nol, V_ nov, V_ alpha)
+FACET_INLINE V_ FACET_K(smith_g2_uncorrelated)(V_ nol, V_ nov, V_ alpha)
 {
     V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
     V_ a = FACET_K(x_alpha)(alpha);
@@ -170,7 +170,7 @@ static inline V_ FACET_K(smith_g2_uncorrelated)(V_ nol, V_ nov, V_ alpha)
 /* ---- Smith, Hammon's approximation ---------------------------------------- */
 
 /* G1 ~ 2n / (n (2 - alpha) + alpha)  (= Schlick-GGX with k = alpha/2) */
-static inline V_ FACET_K(smith_g1_hammon)(V_ nov, V_ alpha)
+FACET_INLINE V_ FACET_K(smith_g1_hammon)(V_ nov, V_ alpha)
 {
     V_ n = FACET_K(x_unit)(nov);
     V_ a = FACET_K(x_alpha)(alpha);
@@ -180,13 +180,13 @@ static inline V_ FACET_K(smith_g1_hammon)(V_ nov, V_ alpha)
 
 /* lerp(2 nl nv, nl + nv, alpha) written (1 - alpha) 2 nl nv + alpha (nl + nv):
  * both terms >= 0, so no cancellation; >= alpha_min * 2 FACET_COS_MIN. */
-static inline V_ FACET_K(x_hammon_den)(V_ nl, V_ nv, V_ a)
+FACET_INLINE V_ FACET_K(x_hammon_den)(V_ nl, V_ nv, V_ a)
 {
     V_ p = MUL_(nl, nv);
     return FMA_(a, ADD_(nl, nv), MUL_(SUB_(C_(1.0f), a), ADD_(p, p)));
 }
 
-static inline V_ FACET_K(smith_g2_hammon)(V_ nol, V_ nov, V_ alpha)
+FACET_INLINE V_ FACET_K(smith_g2_hammon)(V_ nol, V_ nov, V_ alpha)
 {
     V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
     V_ den = FACET_K(x_hammon_den)(nl, nv, FACET_K(x_alpha)(alpha));
@@ -194,7 +194,7 @@ static inline V_ FACET_K(smith_g2_hammon)(V_ nol, V_ nov, V_ alpha)
     return MIN_(MUL_(ADD_(p, p), RCP_(den)), C_(1.0f));
 }
 
-static inline V_ FACET_K(smith_vis_hammon)(V_ nol, V_ nov, V_ alpha)
+FACET_INLINE V_ FACET_K(smith_vis_hammon)(V_ nol, V_ nov, V_ alpha)
 {
     V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
     V_ den = FACET_K(x_hammon_den)(nl, nv, FACET_K(x_alpha)(alpha));
@@ -209,7 +209,7 @@ static inline V_ FACET_K(smith_vis_hammon)(V_ nol, V_ nov, V_ alpha)
  *   smooth = 1.05 (1 - (1-nl)^5) (1 - (1-nv)^5)
  *   single = ((1 - alpha) smooth + alpha rough) / pi
  *   multi  = 0.1159 alpha */
-static inline V_ FACET_K(x_diffuse)(V_ nl, V_ nv, V_ t, V_ inv_nh, V_ a, V_ alb)
+FACET_INLINE V_ FACET_K(x_diffuse)(V_ nl, V_ nv, V_ t, V_ inv_nh, V_ a, V_ alb)
 {
     V_ facing = MUL_(C_(0.5f), t);
     V_ rough = MUL_(MUL_(facing, FNMA_(C_(0.4f), facing, C_(0.9f))),
@@ -221,7 +221,7 @@ static inline V_ FACET_K(x_diffuse)(V_ nl, V_ nv, V_ t, V_ inv_nh, V_ a, V_ alb)
     return MUL_(MUL_(alb, C_(FACET_INV_PI_)), FMA_(alb, multi, single));
 }
 
-static inline V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
+FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
 {
     V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
     V_ s = ADD_(nl, nv);
@@ -246,7 +246,7 @@ static inline V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ al
  * cancellation as (1 - L.H^2) / (1 + L.H) = (2 - t) / (2 (1 + L.H)).
  * With Vis = 0.5/m (m = Hammon's lerp) and L.H = t rsqrt(2t):
  *   spec = (2/pi) (alpha t / e)^2 F / m. */
-static inline V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_ albedo)
+FACET_INLINE V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_ albedo)
 {
     V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
     V_ lv = FACET_K(x_lov)(lov);
@@ -284,7 +284,7 @@ static inline V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V
 }
 
 /* Lambert: albedo / pi, the baseline diffuse. */
-static inline V_ FACET_K(lambert)(V_ albedo)
+FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
 {
     return MUL_(FACET_K(x_unit)(albedo), C_(FACET_INV_PI_));
 }

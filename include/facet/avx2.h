@@ -1,0 +1,83 @@
+/* facet/avx2.h - the AVX2 + FMA f32 port: every kernel as a static inline
+ * function on __m256 (8 lanes), named facet_<kernel>_f32_avx2.  Contracts:
+ * facet.h; the same bounds hold in every lane.
+ *
+ * Reciprocal and rsqrt: vrcpps / vrsqrtps (relative error <= 1.5 * 2^-12
+ * on every x86 vendor, so Intel's and AMD's different tables are both
+ * covered) refined by one third-order step each (below), which leaves only
+ * rounding.  Checked with this CPU's estimates and with estimates emulated
+ * at the architectural bound (FACET_AVX2_TEST_WORST_ESTIMATES,
+ * tests/suites/15-worst-estimates.sh). */
+#ifndef FACET_AVX2_H
+#define FACET_AVX2_H
+
+#if !defined(__AVX2__) || !defined(__FMA__)
+#error "facet/avx2.h needs AVX2 and FMA (-mavx2 -mfma)"
+#endif
+#include <immintrin.h>
+#include "facet/common.h"
+
+FACET_INLINE __m256 facet_avx2_set(float x) { return _mm256_set1_ps(x); }
+FACET_INLINE __m256 facet_avx2_add(__m256 a, __m256 b) { return _mm256_add_ps(a, b); }
+FACET_INLINE __m256 facet_avx2_sub(__m256 a, __m256 b) { return _mm256_sub_ps(a, b); }
+FACET_INLINE __m256 facet_avx2_mul(__m256 a, __m256 b) { return _mm256_mul_ps(a, b); }
+FACET_INLINE __m256 facet_avx2_fma(__m256 a, __m256 b, __m256 c) { return _mm256_fmadd_ps(a, b, c); }
+FACET_INLINE __m256 facet_avx2_fnma(__m256 a, __m256 b, __m256 c) { return _mm256_fnmadd_ps(a, b, c); }
+FACET_INLINE __m256 facet_avx2_min(__m256 a, __m256 b) { return _mm256_min_ps(a, b); }
+FACET_INLINE __m256 facet_avx2_max(__m256 a, __m256 b) { return _mm256_max_ps(a, b); }
+FACET_INLINE __m256 facet_avx2_sel_lt(__m256 a, __m256 b, __m256 x, __m256 y)
+{
+    return _mm256_blendv_ps(y, x, _mm256_cmp_ps(a, b, _CMP_LT_OQ));
+}
+/* vmaxps returns the second operand when either is NaN: NaN -> lo. */
+FACET_INLINE __m256 facet_avx2_clamp(__m256 x, __m256 lo, __m256 hi)
+{
+    return _mm256_min_ps(_mm256_max_ps(x, lo), hi);
+}
+#ifdef FACET_AVX2_TEST_WORST_ESTIMATES
+/* Test builds only: estimates off by exactly the architectural bound
+ * 1.5 * 2^-12, the sign taken from bit 12 of x so that it varies. */
+FACET_INLINE __m256 facet_avx2_worst_(__m256 exact, __m256 x)
+{
+    __m256i b = _mm256_slli_epi32(_mm256_srli_epi32(_mm256_castps_si256(x), 12), 31);
+    __m256 d = _mm256_xor_ps(_mm256_set1_ps(1.5f / 4096.0f), _mm256_castsi256_ps(b));
+    return _mm256_fmadd_ps(exact, d, exact);
+}
+#define facet_avx2_rcp_est_(x) facet_avx2_worst_(_mm256_div_ps(_mm256_set1_ps(1.0f), (x)), (x))
+#define facet_avx2_rsqrt_est_(x) \
+    facet_avx2_worst_(_mm256_div_ps(_mm256_set1_ps(1.0f), _mm256_sqrt_ps(x)), (x))
+#else
+#define facet_avx2_rcp_est_(x) _mm256_rcp_ps(x)
+#define facet_avx2_rsqrt_est_(x) _mm256_rsqrt_ps(x)
+#endif
+
+/* 1/x: estimate r, e = 1 - x r, then r (1 + e + e^2): the third-order step
+ * (one fma more than Newton's r (1 + e)) takes any estimate within the
+ * architectural bound |e| <= 1.5 * 2^-12 to |e|^3 < 5e-11, so only the
+ * step's own rounding (<= 1 ulp) remains. */
+FACET_INLINE __m256 facet_avx2_rcp(__m256 x)
+{
+    __m256 r = facet_avx2_rcp_est_(x);
+    __m256 e = _mm256_fnmadd_ps(x, r, _mm256_set1_ps(1.0f));
+    return _mm256_fmadd_ps(_mm256_fmadd_ps(e, e, e), r, r);
+}
+/* 1/sqrt(x): estimate y, e = 1 - x y^2, then y (1 + e/2 + 3e^2/8) (the
+ * series of (1 - e)^-1/2 to second order): error (5/16)|e|^3 < 2e-11. */
+FACET_INLINE __m256 facet_avx2_rsqrt(__m256 x)
+{
+    __m256 y = facet_avx2_rsqrt_est_(x);
+    __m256 e = _mm256_fnmadd_ps(_mm256_mul_ps(x, y), y, _mm256_set1_ps(1.0f));
+    __m256 p = _mm256_fmadd_ps(e, _mm256_set1_ps(0.375f), _mm256_set1_ps(0.5f));
+    return _mm256_fmadd_ps(_mm256_mul_ps(e, p), y, y);
+}
+FACET_INLINE __m256 facet_avx2_sqr_err(__m256 a, __m256 p) { return _mm256_fmsub_ps(a, a, p); }
+
+#define FACET_V __m256
+#define FACET_OP(op) facet_avx2_##op
+#define FACET_K(k) facet_##k##_f32_avx2
+#include "facet/detail/f32_body.h"
+#undef FACET_V
+#undef FACET_OP
+#undef FACET_K
+
+#endif

@@ -1,0 +1,73 @@
+/* facet/neon.h - the NEON f32 port (aarch64, and armv7 with
+ * -mfpu=neon-vfpv4 -mfloat-abi=hard): every kernel as a FACET_INLINE function
+ * on float32x4_t, named facet_<kernel>_f32_neon.  Contracts: facet.h; the
+ * same bounds hold in every lane.
+ *
+ * vrecpe/vrsqrte give only ~8 bits (relative error <= 2^-8), so three Newton
+ * steps follow (vrecps / vrsqrts: 2^-8 -> 2^-16 -> 2^-32 -> rounding).
+ * armv7 NEON always flushes denormals to zero: denormal inputs act as 0 and
+ * intermediates below 2^-126 become 0, so on armv7 results below 2^-60 are
+ * good to (bound * 2^-60) absolutely rather than relatively (facet.h);
+ * aarch64 keeps denormals unless the caller sets FPCR.FZ. */
+#ifndef FACET_NEON_H
+#define FACET_NEON_H
+
+#if !defined(__ARM_NEON)
+#error "facet/neon.h needs NEON (aarch64, or armv7 with -mfpu=neon-vfpv4 -mfloat-abi=hard)"
+#endif
+#if !defined(__aarch64__) && !defined(__ARM_FEATURE_FMA)
+#error "facet/neon.h on armv7 needs VFPv4 fused multiply-add (-mfpu=neon-vfpv4)"
+#endif
+#include <arm_neon.h>
+#include "facet/common.h"
+
+FACET_INLINE float32x4_t facet_neon_set(float x) { return vdupq_n_f32(x); }
+FACET_INLINE float32x4_t facet_neon_add(float32x4_t a, float32x4_t b) { return vaddq_f32(a, b); }
+FACET_INLINE float32x4_t facet_neon_sub(float32x4_t a, float32x4_t b) { return vsubq_f32(a, b); }
+FACET_INLINE float32x4_t facet_neon_mul(float32x4_t a, float32x4_t b) { return vmulq_f32(a, b); }
+FACET_INLINE float32x4_t facet_neon_fma(float32x4_t a, float32x4_t b, float32x4_t c) { return vfmaq_f32(c, a, b); }
+FACET_INLINE float32x4_t facet_neon_fnma(float32x4_t a, float32x4_t b, float32x4_t c) { return vfmsq_f32(c, a, b); }
+/* vminq/vmaxq propagate NaN; the kernels pass only NaN-free values here. */
+FACET_INLINE float32x4_t facet_neon_min(float32x4_t a, float32x4_t b) { return vminq_f32(a, b); }
+FACET_INLINE float32x4_t facet_neon_max(float32x4_t a, float32x4_t b) { return vmaxq_f32(a, b); }
+FACET_INLINE float32x4_t facet_neon_sel_lt(float32x4_t a, float32x4_t b, float32x4_t x, float32x4_t y)
+{
+    return vbslq_f32(vcltq_f32(a, b), x, y);
+}
+/* compare-and-select, not vmaxq: a NaN input must become lo */
+FACET_INLINE float32x4_t facet_neon_clamp(float32x4_t x, float32x4_t lo, float32x4_t hi)
+{
+    x = vbslq_f32(vcgtq_f32(x, lo), x, lo);
+    return vbslq_f32(vcltq_f32(x, hi), x, hi);
+}
+FACET_INLINE float32x4_t facet_neon_rcp(float32x4_t x)
+{
+    float32x4_t r = vrecpeq_f32(x);
+    r = vmulq_f32(r, vrecpsq_f32(x, r));
+    r = vmulq_f32(r, vrecpsq_f32(x, r));
+    /* last step fused: r + r (1 - x r) */
+    return vfmaq_f32(r, r, vfmsq_f32(vdupq_n_f32(1.0f), x, r));
+}
+FACET_INLINE float32x4_t facet_neon_rsqrt(float32x4_t x)
+{
+    float32x4_t y = vrsqrteq_f32(x), e;
+    y = vmulq_f32(y, vrsqrtsq_f32(vmulq_f32(x, y), y));
+    y = vmulq_f32(y, vrsqrtsq_f32(vmulq_f32(x, y), y));
+    /* last step fused: y + y (1 - x y^2) / 2 */
+    e = vfmsq_f32(vdupq_n_f32(1.0f), vmulq_f32(x, y), y);
+    return vfmaq_f32(y, vmulq_n_f32(y, 0.5f), e);
+}
+FACET_INLINE float32x4_t facet_neon_sqr_err(float32x4_t a, float32x4_t p)
+{
+    return vfmsq_f32(vnegq_f32(p), a, vnegq_f32(a)); /* a*a - p, one rounding */
+}
+
+#define FACET_V float32x4_t
+#define FACET_OP(op) facet_neon_##op
+#define FACET_K(k) facet_##k##_f32_neon
+#include "facet/detail/f32_body.h"
+#undef FACET_V
+#undef FACET_OP
+#undef FACET_K
+
+#endif

@@ -1,0 +1,58 @@
+/* facet/sse2.h - the SSE2 f32 port: every kernel as a FACET_INLINE function
+ * on __m128 (4 lanes), named facet_<kernel>_f32_sse2.  Contracts: facet.h;
+ * the same bounds hold in every lane.
+ *
+ * SSE2 has no FMA, so fma is a multiply and an add, and the exact square
+ * error comes from a Dekker split by bit mask.  Reciprocal and rsqrt use the
+ * IEEE divps and sqrtps ("precise"): a 12-bit rcpps would need two Newton
+ * steps of three dependent operations each to meet the bounds, which costs
+ * about what divps does on the cores that lack AVX2. */
+#ifndef FACET_SSE2_H
+#define FACET_SSE2_H
+
+#if !defined(__SSE2__)
+#error "facet/sse2.h needs SSE2 (-msse2; always on for x86-64)"
+#endif
+#include <emmintrin.h>
+#include "facet/common.h"
+
+FACET_INLINE __m128 facet_sse2_set(float x) { return _mm_set1_ps(x); }
+FACET_INLINE __m128 facet_sse2_add(__m128 a, __m128 b) { return _mm_add_ps(a, b); }
+FACET_INLINE __m128 facet_sse2_sub(__m128 a, __m128 b) { return _mm_sub_ps(a, b); }
+FACET_INLINE __m128 facet_sse2_mul(__m128 a, __m128 b) { return _mm_mul_ps(a, b); }
+FACET_INLINE __m128 facet_sse2_fma(__m128 a, __m128 b, __m128 c) { return _mm_add_ps(_mm_mul_ps(a, b), c); }
+FACET_INLINE __m128 facet_sse2_fnma(__m128 a, __m128 b, __m128 c) { return _mm_sub_ps(c, _mm_mul_ps(a, b)); }
+/* minps/maxps return the second operand when either is NaN; the kernels
+ * only pass NaN-free values here (clamp handles the inputs). */
+FACET_INLINE __m128 facet_sse2_min(__m128 a, __m128 b) { return _mm_min_ps(a, b); }
+FACET_INLINE __m128 facet_sse2_max(__m128 a, __m128 b) { return _mm_max_ps(a, b); }
+FACET_INLINE __m128 facet_sse2_sel_lt(__m128 a, __m128 b, __m128 x, __m128 y)
+{
+    __m128 m = _mm_cmplt_ps(a, b);
+    return _mm_or_ps(_mm_and_ps(m, x), _mm_andnot_ps(m, y));
+}
+/* max(x, lo) returns lo for NaN x (second operand), then min(., hi). */
+FACET_INLINE __m128 facet_sse2_clamp(__m128 x, __m128 lo, __m128 hi)
+{
+    return _mm_min_ps(_mm_max_ps(x, lo), hi);
+}
+FACET_INLINE __m128 facet_sse2_rcp(__m128 x) { return _mm_div_ps(_mm_set1_ps(1.0f), x); }
+FACET_INLINE __m128 facet_sse2_rsqrt(__m128 x) { return _mm_div_ps(_mm_set1_ps(1.0f), _mm_sqrt_ps(x)); }
+FACET_INLINE __m128 facet_sse2_sqr_err(__m128 a, __m128 p)
+{
+    __m128 hi = _mm_and_ps(a, _mm_castsi128_ps(_mm_set1_epi32((int)0xfffff000u)));
+    __m128 lo = _mm_sub_ps(a, hi);
+    __m128 t = _mm_sub_ps(_mm_mul_ps(hi, hi), p);
+    t = _mm_add_ps(t, _mm_mul_ps(_mm_add_ps(hi, hi), lo));
+    return _mm_add_ps(t, _mm_mul_ps(lo, lo));
+}
+
+#define FACET_V __m128
+#define FACET_OP(op) facet_sse2_##op
+#define FACET_K(k) facet_##k##_f32_sse2
+#include "facet/detail/f32_body.h"
+#undef FACET_V
+#undef FACET_OP
+#undef FACET_K
+
+#endif

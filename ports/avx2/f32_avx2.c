@@ -1,0 +1,9 @@
+/* f32_avx2.c - the AVX2 + FMA port's batch functions (8 lanes). */
+#include "facet/avx2.h"
+#include "../../src/port.h"
+
+#define BATCH_PORT avx2
+#define BATCH_W 8
+#define BATCH_LOAD(p) _mm256_loadu_ps(p)
+#define BATCH_STORE(p, v) _mm256_storeu_ps((p), (v))
+#include "../../src/batch_body.h"

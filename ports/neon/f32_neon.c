@@ -1,0 +1,9 @@
+/* f32_neon.c - the NEON port's batch functions (4 lanes; aarch64, armv7). */
+#include "facet/neon.h"
+#include "../../src/port.h"
+
+#define BATCH_PORT neon
+#define BATCH_W 4
+#define BATCH_LOAD(p) vld1q_f32(p)
+#define BATCH_STORE(p, v) vst1q_f32((p), (v))
+#include "../../src/batch_body.h"

@@ -1,0 +1,9 @@
+/* f32_sse2.c - the SSE2 port's batch functions (4 lanes). */
+#include "facet/sse2.h"
+#include "../../src/port.h"
+
+#define BATCH_PORT sse2
+#define BATCH_W 4
+#define BATCH_LOAD(p) _mm_loadu_ps(p)
+#define BATCH_STORE(p, v) _mm_storeu_ps((p), (v))
+#include "../../src/batch_body.h"

@@ -1,0 +1,9 @@
+/* f32_batch_scalar.c - the scalar port's batch functions (the fallback). */
+#include "facet/scalar.h"
+#include "port.h"
+
+#define BATCH_PORT scalar
+#define BATCH_W 1
+#define BATCH_LOAD(p) (*(p))
+#define BATCH_STORE(p, v) (*(p) = (v))
+#include "batch_body.h"

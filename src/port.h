@@ -1,0 +1,29 @@
+/* port.h - what a port gives the dispatcher: a batch function per kernel.
+ * Private to the library. */
+#ifndef FACET_PORT_H
+#define FACET_PORT_H
+
+#include <stddef.h>
+
+typedef void (*facet_batch1)(float *, const float *, size_t);
+typedef void (*facet_batch2)(float *, const float *, const float *, size_t);
+typedef void (*facet_batch3)(float *, const float *, const float *, const float *, size_t);
+typedef void (*facet_batch5)(float *, const float *, const float *, const float *, const float *,
+                             const float *, size_t);
+typedef void (*facet_batch6)(float *, const float *, const float *, const float *, const float *,
+                             const float *, const float *, size_t);
+
+typedef struct facet_f32_port {
+    const char *name;
+    int lanes;
+#define K(name, NAME, n, ...) facet_batch##n name;
+#include "kernels.def"
+#undef K
+} facet_f32_port;
+
+extern const facet_f32_port facet_port_scalar_f32;
+extern const facet_f32_port facet_port_sse2_f32;
+extern const facet_f32_port facet_port_avx2_f32;
+extern const facet_f32_port facet_port_neon_f32;
+
+#endif

@@ -1,0 +1,35 @@
+# The library, the NEON port and every C test cross-built for aarch64 and
+# armv7 (hard float; NEON objects alone get -mfpu=neon-vfpv4) and run under
+# qemu-user; then the facet command's tests through qemu.  Skipped, with the
+# reason, where the cross compiler or qemu is missing (.ci/run installs them).
+. tests/suite_lib.sh
+for target in aarch64 armv7; do
+    case $target in
+    aarch64) cc=aarch64-linux-gnu-gcc qemu=qemu-aarch64 sysroot=/usr/aarch64-linux-gnu ;;
+    armv7) cc=arm-linux-gnueabihf-gcc qemu=qemu-arm sysroot=/usr/arm-linux-gnueabihf ;;
+    esac
+    if ! command -v $cc > /dev/null 2>&1; then
+        echo "SKIP $target: $cc not installed (apt-get install gcc-${cc%-gcc})"
+        echo "$target: 0 passed, 0 failed, 1 skipped"
+        continue
+    fi
+    if ! command -v $qemu > /dev/null 2>&1; then
+        echo "SKIP $target: $qemu not installed (apt-get install qemu-user)"
+        echo "$target: 0 passed, 0 failed, 1 skipped"
+        continue
+    fi
+    dir=build/$target
+    bins=""
+    for t in tests/test_*.c; do
+        bins="$bins $dir/tests/$(basename "$t" .c)"
+    done
+    if ! $MAKE -s -j"$JOBS" BUILD=$dir CC=$cc CFLAGS="-O2 -g" lib $dir/facet $bins > $dir.build.log 2>&1; then
+        cat $dir.build.log
+        echo "ERROR $target: cross build failed (log: $dir.build.log)"
+        continue
+    fi
+    for t in $bins; do
+        FACET_TEST_QUICK=1 run_one $target $qemu -L $sysroot "$t"
+    done
+    FACET_EXEC="$qemu -L $sysroot" run_one $target sh tests/test_cli.sh $dir
+done
