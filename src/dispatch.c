@@ -26,7 +26,7 @@
 #endif
 
 #if FACET_X86
-static int have_avx2_fma(void)
+int facet_cpu_avx2_fma(void)
 {
     unsigned a, b, c, d, xlo, xhi;
     if (!__get_cpuid(1, &a, &b, &c, &d))
@@ -40,7 +40,12 @@ static int have_avx2_fma(void)
         return 0;
     return (b >> 5) & 1u; /* AVX2 */
 }
-static int have_sse2(void)
+int facet_cpu_sse41(void)
+{
+    unsigned a, b, c, d;
+    return __get_cpuid(1, &a, &b, &c, &d) && ((c >> 19) & 1u);
+}
+int facet_cpu_sse2(void)
 {
 #if defined(__x86_64__)
     return 1;
@@ -52,7 +57,7 @@ static int have_sse2(void)
 #endif
 
 #if FACET_ARM
-static int have_neon(void)
+int facet_cpu_neon(void)
 {
 #if defined(__aarch64__)
     return 1;
@@ -73,11 +78,11 @@ typedef struct {
 /* best first */
 static const port_entry ports[] = {
 #if FACET_X86
-    { &facet_port_avx2_f32, have_avx2_fma },
-    { &facet_port_sse2_f32, have_sse2 },
+    { &facet_port_avx2_f32, facet_cpu_avx2_fma },
+    { &facet_port_sse2_f32, facet_cpu_sse2 },
 #endif
 #if FACET_ARM
-    { &facet_port_neon_f32, have_neon },
+    { &facet_port_neon_f32, facet_cpu_neon },
 #endif
     { &facet_port_scalar_f32, always },
 };

@@ -21,6 +21,15 @@ typedef struct facet_f32_port {
 #undef K
 } facet_f32_port;
 
+/* CPU features (dispatch.c); each exists only on its architecture. */
+#if defined(__x86_64__) || defined(__i386__)
+int facet_cpu_avx2_fma(void); /* AVX2 + FMA, and the OS saves YMM state */
+int facet_cpu_sse41(void);
+int facet_cpu_sse2(void);
+#elif defined(__aarch64__) || (defined(__arm__) && defined(__linux__))
+int facet_cpu_neon(void); /* armv7: NEON and VFPv4 in HWCAP */
+#endif
+
 extern const facet_f32_port facet_port_scalar_f32;
 extern const facet_f32_port facet_port_sse2_f32;
 extern const facet_f32_port facet_port_avx2_f32;
