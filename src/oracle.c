@@ -72,7 +72,28 @@ static dd dd_sqrt(dd a)
     return dd_norm(r0, dd_sub(a, dd_mul(dd_d(r0), dd_d(r0))).hi / (2.0 * r0));
 }
 
-facet_oracle_geom facet_oracle_geometry(double nol, double nov, double lov)
+/* dd within [-1, 1], judged on the whole value: c = -1 - 1e-17 has c.hi = -1 */
+static int dd_in_unit(dd c)
+{
+    if (c.hi == -1.0)
+        return c.lo >= 0.0;
+    if (c.hi == 1.0)
+        return c.lo <= 0.0;
+    return c.hi > -1.0 && c.hi < 1.0;
+}
+
+static dd dd_half(dd a) { a.hi *= 0.5; a.lo *= 0.5; return a; } /* exact */
+
+/* The geometry, and y = 1 - L.H to full relative precision: L.H is close to
+ * 1 wherever L is close to V, and Fresnel raises 1 - L.H to the fifth power.
+ *
+ * tan^2(theta_h) is |h_t|^2 / h_z^2 with h = L + V, formed for both branches
+ * from the identities |h|^2 = 2 + 2 L.V, h_z = N.L + N.V on the exact inputs:
+ * |h_t|^2 = 2t - s^2 (t = 1 + L.V, s = N.L + N.V) in double-double has an
+ * error of ~2^-105 (2t), whereas through the built vectors it inherits the
+ * error of the azimuth cosine c, which where L is nearly opposite V at
+ * grazing angles (1 + c ~ 1e-19) is 1e-13 of tan^2. */
+static facet_oracle_geom geometry_y(double nol, double nov, double lov, double *y)
 {
     facet_oracle_geom g;
     double nl = cosd(nol), nv = cosd(nov), lv = clampd(lov, -1.0, 1.0);
@@ -81,13 +102,18 @@ facet_oracle_geom facet_oracle_geometry(double nol, double nov, double lov)
     dd sv = dd_sqrt(dd_sub(one, dd_mul(dd_d(nv), dd_d(nv))));
     dd slsv = dd_mul(sl, sv);
     dd c = dd_d(0.0);
+    dd s = dd_add(dd_d(nl), dd_d(nv));
+    dd t = dd_add(one, dd_d(lv));
+    dd s2 = dd_mul(s, s);
+    dd num = dd_sub(dd_add(t, t), s2); /* |h|^2 - h_z^2 = |h_t|^2 */
+    dd l_h;
 
     g.n_l = nl;
     g.n_v = nv;
     if (slsv.hi > 0.0) {
         /* cos of the azimuth between L and V */
         c = dd_div(dd_sub(dd_d(lv), dd_mul(dd_d(nl), dd_d(nv))), slsv);
-        g.consistent = c.hi >= -1.0 && c.hi <= 1.0;
+        g.consistent = dd_in_unit(c);
     } else {
         g.consistent = lv == nl * nv; /* L or V is N: L.V must be the other cosine */
     }
@@ -103,30 +129,40 @@ facet_oracle_geom facet_oracle_geometry(double nol, double nov, double lov)
         /* L.h = sl c (sl c + sv) + sl^2 (1 - c^2) + nl (nl + nv) */
         dd lh = dd_add(dd_add(dd_mul(dd_mul(sl, c), hx), dd_mul(hy, hy)), dd_mul(dd_d(nl), hz));
         dd lvv = dd_add(dd_mul(dd_mul(sl, c), sv), dd_mul(dd_d(nl), dd_d(nv)));
+        l_h = dd_div(lh, len);
         g.n_h = dd_div(hz, len).hi;
-        g.l_h = dd_div(lh, len).hi;
         g.l_v = lvv.hi;
-        g.tan2_h = dd_div(hxy2, dd_mul(hz, hz)).hi;
-        if (g.n_h > 1.0)
-            g.n_h = 1.0;
-        if (g.l_h > 1.0)
-            g.l_h = 1.0;
     } else {
-        /* No unit vectors have these dots: the identities, with 1 + L.V
-         * raised to (N.L + N.V)^2 / 2 (the contract's extension). */
-        double s = nl + nv, t = 1.0 + lv;
-        if (t < 0.5 * s * s)
-            t = 0.5 * s * s;
-        g.n_h = s / sqrt(2.0 * t);
-        if (g.n_h > 1.0)
-            g.n_h = 1.0;
-        g.l_h = sqrt(0.5 * t);
-        g.l_v = t - 1.0;
-        g.tan2_h = (2.0 * t - s * s) / (s * s);
-        if (g.tan2_h < 0.0)
-            g.tan2_h = 0.0;
+        /* No unit vectors have these dots: the identities, with t = 1 + L.V
+         * raised to (N.L + N.V)^2 / 2 (the contract's extension).  Rounding
+         * turns mirror pairs into such triples all the time, so these are
+         * peak values too: double-double as well. */
+        if (num.hi < 0.0) {
+            t = dd_half(s2);
+            num = dd_d(0.0);
+        }
+        l_h = dd_sqrt(dd_half(t));
+        g.n_h = dd_div(s, dd_sqrt(dd_add(t, t))).hi;
+        g.l_v = dd_sub(t, one).hi;
     }
+    g.l_h = l_h.hi;
+    g.tan2_h = num.hi > 0.0 ? dd_div(num, s2).hi : 0.0;
+    /* 1 - L.H = (1 - L.H^2) / (1 + L.H), L.H^2 = |h|^2 / 4 = t / 2; exact 0
+     * at L = V, where 1 - L.h/|h| would leave the double-double's rounding */
+    *y = dd_div(dd_sub(one, dd_half(t)), dd_add(one, l_h)).hi;
+    if (g.n_h > 1.0)
+        g.n_h = 1.0;
+    if (g.l_h > 1.0)
+        g.l_h = 1.0;
+    if (*y < 0.0)
+        *y = 0.0;
     return g;
+}
+
+facet_oracle_geom facet_oracle_geometry(double nol, double nov, double lov)
+{
+    double y;
+    return geometry_y(nol, nov, lov, &y);
 }
 
 double facet_oracle_noh_from_dots(double nol, double nov, double lov)
@@ -139,13 +175,24 @@ double facet_oracle_loh_from_dots(double lov)
     double lv = clampd(lov, -1.0, 1.0);
     if (lv == -1.0)
         return 0.0; /* H undefined; the contract says 0 */
-    return cos(0.5 * acos(lv)); /* the half angle between L and V */
+    /* the cosine of half the angle between L and V; for an obtuse angle
+     * pi - acos(-L.V), whose half-angle cosine is sin(acos(-L.V) / 2): acos
+     * near pi has lost the small angle that the result is made of */
+    if (lv < 0.0)
+        return sin(0.5 * acos(-lv));
+    return cos(0.5 * acos(lv));
+}
+
+/* F from y = 1 - cos */
+static double fresnel_y(double f0, double y)
+{
+    f0 = unitd(f0);
+    return f0 + (1.0 - f0) * pow(y, 5.0);
 }
 
 double facet_oracle_fresnel_schlick(double f0, double cos_theta)
 {
-    f0 = unitd(f0);
-    return f0 + (1.0 - f0) * pow(1.0 - unitd(cos_theta), 5.0);
+    return fresnel_y(f0, 1.0 - unitd(cos_theta));
 }
 
 /* D(m) = alpha^2 / (pi cos^4(theta_m) (alpha^2 + tan^2(theta_m))^2) */
@@ -160,16 +207,23 @@ double facet_oracle_ggx_d(double noh, double alpha)
     double c = unitd(noh), a = alphad(alpha);
     if (c == 0.0)
         return a * a / PI; /* the limit theta_m -> 90 degrees */
-    return facet_oracle_ggx_d_tan2((1.0 - c * c) / (c * c), c, a);
+    /* sin^2 as (1 - c)(1 + c), exact but for two roundings: 1 - c*c would
+     * cost 2^-53 absolute, ~1e-10 of D at the peak for alpha = 2^-10 */
+    return facet_oracle_ggx_d_tan2((1.0 - c) * (1.0 + c) / (c * c), c, a);
 }
 
-/* Lambda(theta) = (-1 + sqrt(1 + alpha^2 tan^2 theta)) / 2 */
+/* Lambda(theta) = (-1 + sqrt(1 + x)) / 2, x = alpha^2 tan^2 theta; for
+ * x < 1 as x / (2 (1 + sqrt(1 + x))), which does not cancel (Lambda is
+ * tiny near the normal and for small alpha). */
 double facet_oracle_smith_lambda(double nov, double alpha)
 {
-    double c = nov, a = alpha;
+    double c = nov, a = alpha, x;
     if (c <= 0.0)
         return INFINITY;
-    return 0.5 * (-1.0 + sqrt(1.0 + a * a * (1.0 - c * c) / (c * c)));
+    x = a * a * ((1.0 - c) * (1.0 + c)) / (c * c);
+    if (x < 1.0)
+        return 0.5 * x / (1.0 + sqrt(1.0 + x));
+    return 0.5 * (sqrt(1.0 + x) - 1.0);
 }
 
 double facet_oracle_smith_g1(double nov, double alpha)
@@ -235,11 +289,12 @@ double facet_oracle_diffuse_hammon(double nol, double nov, double lov, double al
 double facet_oracle_brdf_hammon(double nol, double nov, double lov, double alpha,
                                 double f0, double albedo)
 {
-    facet_oracle_geom g = facet_oracle_geometry(nol, nov, lov);
+    double y;
+    facet_oracle_geom g = geometry_y(nol, nov, lov, &y);
     double a = alphad(alpha);
     double d = facet_oracle_ggx_d_tan2(g.tan2_h, g.n_h, a);
     double g2 = facet_oracle_smith_g2_hammon(g.n_l, g.n_v, a);
-    double f = facet_oracle_fresnel_schlick(f0, g.l_h);
+    double f = fresnel_y(f0, y); /* not 1 - g.l_h: l_h is rounded near 1 */
     return d * g2 * f / (4.0 * g.n_l * g.n_v) + diffuse_from_geom(&g, a, albedo);
 }
 
