@@ -167,7 +167,7 @@ float facet_lambert_f32(float albedo);
  * for i < n, structure-of-arrays, inputs in the order above.  Any n (tails
  * are handled), no alignment requirement, out may alias any input.  Runs on
  * the best port for this CPU, chosen once and thread-safely on first use:
- * avx2 > sse2 on x86, neon on ARM, else scalar.  Every port meets the
+ * avx512 > avx2 > sse2 on x86, neon on ARM, else scalar.  Every port meets the
  * bounds above (tests/test_f32_accuracy.c runs each kernel on each port);
  * results may differ between ports by rounding, within those bounds. */
 void facet_noh_from_dots_f32_batch(float *out, const float *nol, const float *nov,
@@ -195,7 +195,7 @@ void facet_brdf_hammon_f32_batch(float *out, const float *nol, const float *nov,
 void facet_lambert_f32_batch(float *out, const float *albedo, size_t n);
 
 /* Ports.  facet_set_port(name) forces one for all batch calls in the process:
- * "scalar", "sse2", "avx2", "neon", or "auto" (the automatic choice).  Returns
+ * "scalar", "sse2", "avx2", "avx512", "neon", or "auto" (the automatic choice).  Returns
  * 0 on success, 1 for a name not compiled into this build, 2 for a port this
  * CPU cannot run (the active port is then unchanged).  The environment
  * variable FACET_PORT names the initial choice the same way (an unknown or

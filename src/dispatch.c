@@ -1,9 +1,11 @@
 /* dispatch.c - picks the f32 port for the running CPU, once, and routes the
  * public facet_<kernel>_f32_batch functions to it.
  *
- * Ports compiled in follow the target: x86 -> avx2, sse2; aarch64/armv7 ->
+ * Ports compiled in follow the target: x86-64 -> avx512, avx2, sse2
+ * (i386: avx2, sse2); aarch64/armv7 ->
  * neon; everywhere -> scalar.  "Supported" means the CPU and OS can run the
- * port: x86 checks CPUID (AVX2, FMA, OSXSAVE) and XCR0 (the OS saves YMM);
+ * port: x86 checks CPUID (AVX-512F / AVX2, FMA, OSXSAVE) and XCR0 (the OS
+ * saves the YMM / ZMM and opmask state);
  * armv7 checks HWCAP (NEON and VFPv4); aarch64 always has NEON.
  * The choice is a pointer published with an atomic store: threads racing on
  * the first call compute the same choice, so no lock is needed. */
@@ -40,6 +42,20 @@ int facet_cpu_avx2_fma(void)
         return 0;
     return (b >> 5) & 1u; /* AVX2 */
 }
+#if defined(__x86_64__)
+int facet_cpu_avx512f(void)
+{
+    unsigned a, b, c, d, xlo, xhi;
+    if (!__get_cpuid(1, &a, &b, &c, &d) || !(c & (1u << 27))) /* OSXSAVE */
+        return 0;
+    __asm__ volatile("xgetbv" : "=a"(xlo), "=d"(xhi) : "c"(0));
+    if ((xlo & 0xe6u) != 0xe6u) /* XMM, YMM, opmask, ZMM0-15 upper, ZMM16-31 */
+        return 0;
+    if (!__get_cpuid_count(7, 0, &a, &b, &c, &d))
+        return 0;
+    return (b >> 16) & 1u; /* AVX512F */
+}
+#endif
 int facet_cpu_sse41(void)
 {
     unsigned a, b, c, d;
@@ -78,6 +94,9 @@ typedef struct {
 /* best first */
 static const port_entry ports[] = {
 #if FACET_X86
+#if defined(__x86_64__)
+    { &facet_port_avx512_f32, facet_cpu_avx512f },
+#endif
     { &facet_port_avx2_f32, facet_cpu_avx2_fma },
     { &facet_port_sse2_f32, facet_cpu_sse2 },
 #endif

@@ -24,6 +24,9 @@ typedef struct facet_f32_port {
 /* CPU features (dispatch.c); each exists only on its architecture. */
 #if defined(__x86_64__) || defined(__i386__)
 int facet_cpu_avx2_fma(void); /* AVX2 + FMA, and the OS saves YMM state */
+#if defined(__x86_64__)
+int facet_cpu_avx512f(void);  /* AVX-512F, and the OS saves ZMM and opmask state */
+#endif
 int facet_cpu_sse41(void);
 int facet_cpu_sse2(void);
 #elif defined(__aarch64__) || (defined(__arm__) && defined(__linux__))
@@ -33,6 +36,7 @@ int facet_cpu_neon(void); /* armv7: NEON and VFPv4 in HWCAP */
 extern const facet_f32_port facet_port_scalar_f32;
 extern const facet_f32_port facet_port_sse2_f32;
 extern const facet_f32_port facet_port_avx2_f32;
+extern const facet_f32_port facet_port_avx512_f32;
 extern const facet_f32_port facet_port_neon_f32;
 
 #endif

@@ -12,9 +12,9 @@ cd "$(dirname "$0")/.." || exit 2
 MAKE=${MAKE:-make}
 JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 export MAKE JOBS
-log=build/check.log
 mkdir -p build
-: > "$log"
+log=$(mktemp build/check.XXXXXX.log) # private: concurrent runs must not mix
+ln -sf "$(basename "$log")" build/check.log
 start=$(date +%s)
 for s in tests/suites/${FACET_SUITES:-*}.sh; do
     [ -f "$s" ] || continue

@@ -5,10 +5,11 @@
 # tests/test_*.sh; a build failure counts as one failure.
 run_build_and_tests() {
     dir=$1 label=$2 cc=$3 cflags=$4
-    if ! $MAKE -s -j"$JOBS" BUILD="$dir" CC="$cc" CFLAGS="$cflags" tests >"$dir.build.log" 2>&1; then
+    mkdir -p "$dir"
+    if ! $MAKE -s -j"$JOBS" BUILD="$dir" CC="$cc" CFLAGS="$cflags" tests >"$dir/build.log" 2>&1; then
         mkdir -p "$dir"
-        cat "$dir.build.log"
-        echo "ERROR $label: build failed (log: $dir.build.log)"
+        cat "$dir/build.log"
+        echo "ERROR $label: build failed (log: $dir/build.log)"
         return
     fi
     for t in "$dir"/tests/test_*; do

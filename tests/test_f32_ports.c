@@ -102,6 +102,20 @@ static void test_port(const char *port, int lanes)
             for (i = 0; i < k->n_inputs; i++)
                 free(a[i]);
         }
+        /* reciprocity: swapping N.L and N.V gives the same bits */
+        if (k->n_inputs >= 3 && !strcmp(k->inputs[0], "nol") && !strcmp(k->inputs[1], "nov")) {
+            int bad_sym = 0;
+            float *swapped[FACET_MAX_INPUTS];
+            for (i = 0; i < k->n_inputs; i++)
+                swapped[i] = src[i];
+            swapped[0] = src[1];
+            swapped[1] = src[0];
+            k->f32_batch(out, (const float *const *)swapped, MAXN);
+            for (i = 0; i < MAXN; i++)
+                if (!same(out[i], ref[i]))
+                    bad_sym++;
+            CHECK(bad_sym == 0, "%s/%s: not symmetric in N.L and N.V (%d values)", port, k->name, bad_sym);
+        }
         CHECK(bad_lane == 0, "%s/%s: result depends on the lane (%d cases)", port, k->name, bad_lane);
         CHECK(bad_tail == 0, "%s/%s: tails differ from the full batch (%d values)", port, k->name, bad_tail);
         CHECK(bad_align == 0, "%s/%s: unaligned buffers change results (%d values)", port, k->name, bad_align);

@@ -1,15 +1,16 @@
-# The AVX2 port with its rcp/rsqrt estimates replaced by values off by the
-# architectural error bound (1.5 * 2^-12): the Newton steps must keep every
+# The AVX2 and AVX-512 ports with their rcp/rsqrt estimates replaced by values off by the
+# architectural error bound (1.5 * 2^-12, 2^-14): the Newton steps must keep every
 # kernel inside its bound whatever a vendor's tables return.
 . tests/suite_lib.sh
 case "$(${CC:-cc} -dumpmachine)" in
 x86_64*|i?86*)
     dir=build/worst-est
-    if $MAKE -s -j"$JOBS" BUILD=$dir CFLAGS="-O2 -g -DFACET_AVX2_TEST_WORST_ESTIMATES" \
-        $dir/tests/test_f32_accuracy > $dir.build.log 2>&1; then
+    mkdir -p $dir
+    if $MAKE -s -j"$JOBS" BUILD=$dir CFLAGS="-O2 -g -DFACET_AVX2_TEST_WORST_ESTIMATES -DFACET_AVX512_TEST_WORST_ESTIMATES" \
+        $dir/tests/test_f32_accuracy > $dir/build.log 2>&1; then
         FACET_TEST_QUICK=1 run_one worst-estimates $dir/tests/test_f32_accuracy
     else
-        cat $dir.build.log; echo "ERROR worst-estimates: build failed"
+        cat $dir/build.log; echo "ERROR worst-estimates: build failed"
     fi ;;
 *)
     echo "SKIP worst-estimates: not an x86 target"

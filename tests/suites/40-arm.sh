@@ -19,13 +19,14 @@ for target in aarch64 armv7; do
         continue
     fi
     dir=build/$target
+    mkdir -p $dir
     bins=""
     for t in tests/test_*.c; do
         bins="$bins $dir/tests/$(basename "$t" .c)"
     done
-    if ! $MAKE -s -j"$JOBS" BUILD=$dir CC=$cc CFLAGS="-O2 -g" lib $dir/facet $bins > $dir.build.log 2>&1; then
-        cat $dir.build.log
-        echo "ERROR $target: cross build failed (log: $dir.build.log)"
+    if ! $MAKE -s -j"$JOBS" BUILD=$dir CC=$cc CFLAGS="-O2 -g" lib $dir/facet $bins > $dir/build.log 2>&1; then
+        cat $dir/build.log
+        echo "ERROR $target: cross build failed (log: $dir/build.log)"
         continue
     fi
     for t in $bins; do

@@ -137,7 +137,7 @@ FACET_INLINE V_ FACET_K(x_g2_den)(V_ nl, V_ nv, V_ a)
     V_ a2 = MUL_(a, a);
     V_ rl = FACET_K(x_sqrt)(FACET_K(x_smith_w)(nl, a2));
     V_ rv = FACET_K(x_sqrt)(FACET_K(x_smith_w)(nv, a2));
-    return FMA_(nv, rl, MUL_(nl, rv));
+    return ADD_(MUL_(nv, rl), MUL_(nl, rv)); /* not fused: symmetric in nl, nv to the bit */
 }
 
 FACET_INLINE V_ FACET_K(smith_g2)(V_ nol, V_ nov, V_ alpha)
@@ -203,22 +203,23 @@ FACET_INLINE V_ FACET_K(smith_vis_hammon)(V_ nol, V_ nov, V_ alpha)
 
 /* ---- Hammon's GGX diffuse --------------------------------------------------- */
 
-/* albedo (single + albedo multi) from the pieces the caller shares:
- *   facing = 0.5 + 0.5 L.V = t/2
- *   rough  = facing (0.9 - 0.4 facing) (1 + 0.5/N.H)
+/* pi * diffuse, from the pieces the caller shares (h = 0.5 / N.H):
+ *   facing = 0.5 + 0.5 L.V = t/2, so facing (0.9 - 0.4 facing) = t (0.45 - 0.1 t)
+ *   rough  = t (0.45 - 0.1 t) (1 + h)
  *   smooth = 1.05 (1 - (1-nl)^5) (1 - (1-nv)^5)
- *   single = ((1 - alpha) smooth + alpha rough) / pi
- *   multi  = 0.1159 alpha */
-FACET_INLINE V_ FACET_K(x_diffuse)(V_ nl, V_ nv, V_ t, V_ inv_nh, V_ a, V_ alb)
+ *   pi single = (1 - alpha) smooth + alpha rough,  pi multi = 0.1159 pi alpha
+ *   pi diffuse = albedo (pi single + albedo pi multi)
+ * The caller applies the 1/pi (brdf_hammon folds it with the specular). */
+FACET_INLINE V_ FACET_K(x_diffuse_pi)(V_ nl, V_ nv, V_ t, V_ h, V_ a, V_ alb)
 {
-    V_ facing = MUL_(C_(0.5f), t);
-    V_ rough = MUL_(MUL_(facing, FNMA_(C_(0.4f), facing, C_(0.9f))),
-                    FMA_(C_(0.5f), inv_nh, C_(1.0f)));
-    V_ smooth = MUL_(MUL_(C_(1.05f), FACET_K(x_one_minus_pow5)(nl)),
-                     FACET_K(x_one_minus_pow5)(nv));
-    V_ single = FMA_(a, rough, MUL_(SUB_(C_(1.0f), a), smooth));
-    V_ multi = MUL_(C_(0.364110589f), a); /* 0.1159 pi: single is not yet /pi */
-    return MUL_(MUL_(alb, C_(FACET_INV_PI_)), FMA_(alb, multi, single));
+    V_ rough = MUL_(MUL_(t, FNMA_(C_(0.1f), t, C_(0.45f))), ADD_(C_(1.0f), h));
+    /* 1 - alpha is exact for alpha >= 1/2; the product of the two powers is
+     * formed first so that swapping N.L and N.V gives the same bits */
+    V_ c = MUL_(C_(1.05f), SUB_(C_(1.0f), a));
+    V_ smooth = MUL_(c, MUL_(FACET_K(x_one_minus_pow5)(nl), FACET_K(x_one_minus_pow5)(nv)));
+    V_ single = FMA_(a, rough, smooth);
+    V_ multi = MUL_(C_(0.364110589f), a); /* 0.1159 pi */
+    return MUL_(alb, FMA_(alb, multi, single));
 }
 
 FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
@@ -227,8 +228,9 @@ FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ alb
     V_ s = ADD_(nl, nv);
     V_ t = MAX_(ADD_(C_(1.0f), FACET_K(x_lov)(lov)), MUL_(C_(0.5f), MUL_(s, s)));
     V_ nh = MIN_(MUL_(s, RSQRT_(ADD_(t, t))), C_(1.0f));
-    return FACET_K(x_diffuse)(nl, nv, t, RCP_(nh), FACET_K(x_alpha)(alpha),
-                              FACET_K(x_unit)(albedo));
+    V_ d = FACET_K(x_diffuse_pi)(nl, nv, t, MUL_(C_(0.5f), RCP_(nh)), FACET_K(x_alpha)(alpha),
+                                 FACET_K(x_unit)(albedo));
+    return MUL_(d, C_(FACET_INV_PI_));
 }
 
 /* ---- the whole model ------------------------------------------------------ */
@@ -245,7 +247,9 @@ FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ alb
  * Likewise 1 - L.H, which F raises to the fifth power, is formed without
  * cancellation as (1 - L.H^2) / (1 + L.H) = (2 - t) / (2 (1 + L.H)).
  * With Vis = 0.5/m (m = Hammon's lerp) and L.H = t rsqrt(2t):
- *   spec = (2/pi) (alpha t / e)^2 F / m. */
+ *   spec = (2/pi) (alpha t)^2 F / (e^2 m) = (2/pi) (u m) u F,  u = alpha t / (e m),
+ * ordered so that no intermediate overflows at the grazing corner.
+ * Three reciprocals (1/(e m), 1/(1 + L.H), 1/s) and one rsqrt in all. */
 FACET_INLINE V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_ albedo)
 {
     V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
@@ -265,7 +269,8 @@ FACET_INLINE V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_
     V_ t = MAX_(th, MUL_(C_(0.5f), p));
     V_ a2 = MUL_(a, a);
     V_ e = FMA_(a2, p, FMA_(a2, s2lo, num));
-    V_ m = FACET_K(x_hammon_den)(nl, nv, a);
+    V_ p2 = MUL_(nl, nv);
+    V_ m = FMA_(a, sh, MUL_(SUB_(C_(1.0f), a), ADD_(p2, p2))); /* Hammon's lerp */
     V_ r = RSQRT_(ADD_(t, t));
     V_ lh = MIN_(MUL_(t, r), C_(1.0f));
     /* w = 2 - t = min(1 - L.V, 2 - s^2/2), each side formed without
@@ -276,11 +281,18 @@ FACET_INLINE V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_
     /* below L.H = 1/2, 1 - L.H itself is the better conditioned form */
     V_ y = FACET_OP(sel_lt)(lh, C_(0.5f), SUB_(C_(1.0f), lh),
                             MUL_(MUL_(C_(0.5f), w), RCP_(ADD_(C_(1.0f), lh))));
-    V_ f = FACET_K(x_fresnel_y)(FACET_K(x_unit)(f0), y, C_(0.0f));
-    V_ k = MUL_(MUL_(a, t), RCP_(e)); /* alpha t / e */
-    V_ spec = MUL_(MUL_(MUL_(C_(FACET_2_INV_PI_), MUL_(k, k)), RCP_(m)), f);
-    V_ inv_nh = MAX_(MUL_(MUL_(ADD_(t, t), r), RCP_(sh)), C_(1.0f)); /* 2t r / s */
-    return ADD_(spec, FACET_K(x_diffuse)(nl, nv, t, inv_nh, a, FACET_K(x_unit)(albedo)));
+    V_ f0c = FACET_K(x_unit)(f0);
+    V_ y2 = MUL_(y, y);
+    V_ f = FMA_(SUB_(C_(1.0f), f0c), MUL_(MUL_(y2, y2), y), f0c);
+    /* D Vis = (4/pi)(alpha t / e)^2 (0.5 / m) = (2/pi) (alpha t)^2 / (e^2 m),
+     * and 1 / (e^2 m) = m R^2 with R = 1 / (e m): one reciprocal */
+    V_ R = RCP_(MUL_(e, m));
+    V_ u = MUL_(MUL_(a, t), R);                 /* alpha t / (e m) <= 2^38 */
+    V_ dv_pi = MUL_(MUL_(u, m), u);             /* pi D Vis / 2; u m = alpha t / e <= 512 */
+    /* 0.5 / N.H = L.H / s (N.H = s / (2 L.H)), at least 0.5 */
+    V_ h = MAX_(MUL_(lh, RCP_(sh)), C_(0.5f));
+    V_ dif = FACET_K(x_diffuse_pi)(nl, nv, t, h, a, FACET_K(x_unit)(albedo));
+    return MUL_(FMA_(ADD_(dv_pi, dv_pi), f, dif), C_(FACET_INV_PI_));
 }
 
 /* Lambert: albedo / pi, the baseline diffuse. */

@@ -1,0 +1,75 @@
+/* facet/avx512.h - the AVX-512F f32 port: every kernel as a static inline
+ * function on __m512 (16 lanes), named facet_<kernel>_f32_avx512.
+ * Contracts: facet.h; the same bounds hold in every lane.
+ *
+ * Reciprocal and rsqrt: vrcp14ps / vrsqrt14ps (relative error < 2^-14 by
+ * the architecture) plus one Newton step each, fused: 2^-14 -> 2^-28 for
+ * rcp and 1.5 * 2^-28 for rsqrt, i.e. only the step's rounding remains.
+ * Checked with this CPU's estimates and with estimates emulated at the
+ * architectural bound (FACET_AVX512_TEST_WORST_ESTIMATES). */
+#ifndef FACET_AVX512_H
+#define FACET_AVX512_H
+
+#if !defined(__AVX512F__)
+#error "facet/avx512.h needs AVX-512F (-mavx512f)"
+#endif
+#include <immintrin.h>
+#include "facet/common.h"
+
+FACET_INLINE __m512 facet_avx512_set(float x) { return _mm512_set1_ps(x); }
+FACET_INLINE __m512 facet_avx512_add(__m512 a, __m512 b) { return _mm512_add_ps(a, b); }
+FACET_INLINE __m512 facet_avx512_sub(__m512 a, __m512 b) { return _mm512_sub_ps(a, b); }
+FACET_INLINE __m512 facet_avx512_mul(__m512 a, __m512 b) { return _mm512_mul_ps(a, b); }
+FACET_INLINE __m512 facet_avx512_fma(__m512 a, __m512 b, __m512 c) { return _mm512_fmadd_ps(a, b, c); }
+FACET_INLINE __m512 facet_avx512_fnma(__m512 a, __m512 b, __m512 c) { return _mm512_fnmadd_ps(a, b, c); }
+FACET_INLINE __m512 facet_avx512_min(__m512 a, __m512 b) { return _mm512_min_ps(a, b); }
+FACET_INLINE __m512 facet_avx512_max(__m512 a, __m512 b) { return _mm512_max_ps(a, b); }
+FACET_INLINE __m512 facet_avx512_sel_lt(__m512 a, __m512 b, __m512 x, __m512 y)
+{
+    return _mm512_mask_blend_ps(_mm512_cmp_ps_mask(a, b, _CMP_LT_OQ), y, x);
+}
+/* vmaxps returns the second operand when either is NaN: NaN -> lo. */
+FACET_INLINE __m512 facet_avx512_clamp(__m512 x, __m512 lo, __m512 hi)
+{
+    return _mm512_min_ps(_mm512_max_ps(x, lo), hi);
+}
+
+#ifdef FACET_AVX512_TEST_WORST_ESTIMATES
+/* Test builds only: estimates off by just under the architectural bound
+ * 2^-14, the sign taken from bit 12 of x so that it varies. */
+FACET_INLINE __m512 facet_avx512_worst_(__m512 exact, __m512 x)
+{
+    __m512i b = _mm512_slli_epi32(_mm512_srli_epi32(_mm512_castps_si512(x), 12), 31);
+    __m512 d = _mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(_mm512_set1_ps(0.99f / 16384.0f)), b));
+    return _mm512_fmadd_ps(exact, d, exact);
+}
+#define facet_avx512_rcp_est_(x) facet_avx512_worst_(_mm512_div_ps(_mm512_set1_ps(1.0f), (x)), (x))
+#define facet_avx512_rsqrt_est_(x) \
+    facet_avx512_worst_(_mm512_div_ps(_mm512_set1_ps(1.0f), _mm512_sqrt_ps(x)), (x))
+#else
+#define facet_avx512_rcp_est_(x) _mm512_rcp14_ps(x)
+#define facet_avx512_rsqrt_est_(x) _mm512_rsqrt14_ps(x)
+#endif
+
+FACET_INLINE __m512 facet_avx512_rcp(__m512 x)
+{
+    __m512 r = facet_avx512_rcp_est_(x);
+    return _mm512_fmadd_ps(r, _mm512_fnmadd_ps(x, r, _mm512_set1_ps(1.0f)), r);
+}
+FACET_INLINE __m512 facet_avx512_rsqrt(__m512 x)
+{
+    __m512 y = facet_avx512_rsqrt_est_(x);
+    __m512 e = _mm512_fnmadd_ps(_mm512_mul_ps(x, y), y, _mm512_set1_ps(1.0f));
+    return _mm512_fmadd_ps(_mm512_mul_ps(_mm512_set1_ps(0.5f), y), e, y);
+}
+FACET_INLINE __m512 facet_avx512_sqr_err(__m512 a, __m512 p) { return _mm512_fmsub_ps(a, a, p); }
+
+#define FACET_V __m512
+#define FACET_OP(op) facet_avx512_##op
+#define FACET_K(k) facet_##k##_f32_avx512
+#include "facet/detail/f32_body.h"
+#undef FACET_V
+#undef FACET_OP
+#undef FACET_K
+
+#endif

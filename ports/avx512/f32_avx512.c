@@ -1,0 +1,9 @@
+/* f32_avx512.c - the AVX-512F port's batch functions (16 lanes). */
+#include "facet/avx512.h"
+#include "../../src/port.h"
+
+#define BATCH_PORT avx512
+#define BATCH_W 16
+#define BATCH_LOAD(p) _mm512_loadu_ps(p)
+#define BATCH_STORE(p, v) _mm512_storeu_ps((p), (v))
+#include "../../src/batch_body.h"

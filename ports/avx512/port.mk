@@ -1,0 +1,8 @@
+# AVX-512F port: x86-64 only; -mavx512f on its objects alone (the dispatcher
+# runs them only where CPUID and XCR0 say the CPU and OS can).
+ifneq ($(filter x86_64%,$(TARGET)),)
+LIB_OBJ += $(BUILD)/ports/avx512/f32_avx512.o
+$(BUILD)/ports/avx512/%.o: ports/avx512/%.c $(HEADERS) src/port.h src/batch_body.h
+	@mkdir -p $(dir $@)
+	$(CC) $(BASEFLAGS) $(PICFLAGS) -mavx512f -c $< -o $@
+endif
