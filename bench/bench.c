@@ -70,6 +70,9 @@ typedef struct work {
     size_t n;
     peer_brdf_fn pb;
     const peer_brdf_in *pin;
+    bench_fx_fn fx;           /* fixed point: raw Q15 inputs, raw outputs */
+    void *fxout;
+    const int32_t *const *fxin;
 } work;
 
 static void run_work(void *ctx, long reps)
@@ -79,6 +82,9 @@ static void run_work(void *ctx, long reps)
     if (w->pb) {
         for (r = 0; r < reps; r++)
             w->pb(w->out, w->pin, w->n);
+    } else if (w->fx) {
+        for (r = 0; r < reps; r++)
+            w->fx(w->fxout, w->fxin, w->n);
     } else {
         for (r = 0; r < reps; r++)
             w->fn(w->out, w->in, w->n);
@@ -251,7 +257,10 @@ static void row_latency(bench_row *r, bench_fn chain, bench_fn ident, int lanes,
 
 static void finish(bench_row *r, const bench_opts *o, bench_sink sink, void *ctx, int *count)
 {
-    r->within = r->bound <= 0 || r->err.max_rel <= r->bound;
+    if (r->err.has_lsb)
+        r->within = r->err.max_lsb <= r->bound && r->err.big_rel <= 0x1p-26;
+    else
+        r->within = r->bound <= 0 || r->err.max_rel <= r->bound;
     progress(o, r);
     sink(r, ctx);
     (*count)++;
@@ -316,6 +325,140 @@ static void run_brdf_peers(const kdata *d, const bench_opts *o, bench_sink sink,
     for (s = 0; s < 9; s++)
         free(v[s]);
     free(want);
+}
+
+
+/* ---- fixed point (facet/fx.h) ------------------------------------------------ */
+
+typedef struct fxdata {
+    int32_t *q[FACET_MAX_INPUTS];   /* the float inputs in Q15, clamped to the fx domain */
+    double *want;                   /* oracle at the Q15 inputs */
+    void *out;                      /* n raw outputs (64-bit slots: fits every container) */
+} fxdata;
+
+static void fx_err(bench_err *e, const bench_fx *fx, const kdata *d, const fxdata *x)
+{
+    size_t i;
+    double sum = 0, suml = 0, lsb_v = ldexp(1.0, -fx->fk->out_frac);
+    int j;
+    memset(e, 0, sizeof *e);
+    e->has_lsb = 1;
+    e->max_rel = -1;
+    e->max_lsb = -1;
+    e->big_rel = -1;
+    for (i = 0; i < d->n; i++) {
+        uint64_t raw = bench_fx_raw(fx, x->out, i);
+        double got = bench_fx_value(fx, raw);
+        double scaled = floor(ldexp(x->want[i], fx->fk->out_frac) + 0.5);
+        double lsb = fabs(ldexp(got, fx->fk->out_frac) - scaled);
+        double rel = fabs(got - x->want[i]) / fmax(fabs(x->want[i]), lsb_v);
+        sum += rel;
+        if (rel > e->max_rel)
+            e->max_rel = rel;
+        if (fx->fk->out_bits == 64 && x->want[i] >= 16.0) {
+            if (rel > e->big_rel)
+                e->big_rel = rel;
+            continue;
+        }
+        suml += lsb;
+        e->n_lsb++;
+        if (lsb > e->max_lsb) {
+            e->max_lsb = lsb;
+            e->got = got;
+            e->want = x->want[i];
+            for (j = 0; j < d->k->n_inputs; j++)
+                e->arg[j] = (float)(x->q[j][i] / 32768.0);
+        }
+    }
+    e->n = (long)d->n;
+    e->mean_rel = sum / (double)d->n;
+    e->mean_lsb = e->n_lsb ? suml / (double)e->n_lsb : 0;
+}
+
+/* the whole error set in one call (outputs contiguous in the kernel's container) */
+static void fx_run_all(bench_fx_fn fn, const kdata *d, const fxdata *x)
+{
+    fn(x->out, (const int32_t *const *)x->q, d->n);
+}
+
+static cyc_stat fx_time(bench_fx_fn fn, const fxdata *x, const kdata *d, const bench_opts *o)
+{
+    work w;
+    memset(&w, 0, sizeof w);
+    w.fx = fn;
+    w.fxout = x->out;
+    w.fxin = (const int32_t *const *)x->q;
+    w.n = o->n_time < d->n ? o->n_time : d->n;
+    return time_work(&w, (double)w.n, o);
+}
+
+static void fx_row(bench_row *r, const bench_fx *fx, const kdata *d, const char *port, const char *path)
+{
+    row_init(r, d, "fx", port, path, 1);
+    r->bound = fx->fk->err_lsb;
+}
+
+static void run_fx(const bench_fx *fx, const kdata *d, const bench_opts *o, bench_sink sink,
+                   void *ctx, int *count)
+{
+    fxdata x;
+    size_t i, p;
+    int j;
+    const char *saved_port = facet_port_name();
+    bench_row row;
+    memset(&x, 0, sizeof x);
+    for (j = 0; j < d->k->n_inputs; j++)
+        x.q[j] = malloc(d->n * sizeof(int32_t));
+    x.want = malloc(d->n * sizeof(double));
+    x.out = calloc(d->n + 8, sizeof(uint64_t));
+    for (i = 0; i < d->n; i++) {
+        double dv[FACET_MAX_INPUTS];
+        for (j = 0; j < d->k->n_inputs; j++) {
+            int32_t q = bench_fx_q15(d->in[j][i]);
+            q = q < fx->fk->lo[j] ? fx->fk->lo[j] : q > fx->fk->hi[j] ? fx->fk->hi[j] : q;
+            x.q[j][i] = q;
+            dv[j] = q / 32768.0;
+        }
+        x.want[i] = d->k->oracle(dv);
+    }
+    /* the batch API on every port facet_set_port() accepts on this CPU */
+    for (p = 0; p < facet_port_count(); p++) {
+        int sup = 0;
+        const char *pn = facet_port_at(p, &sup, NULL);
+        if (!sup || !want_port(o, pn) || facet_set_port(pn) != 0)
+            continue;
+        fx_row(&row, fx, d, pn, "batch");
+        row.note = "facet_<kernel>_fx_batch with facet_set_port(port) active";
+        fx_run_all(fx->batch, d, &x);
+        fx_err(&row.err, fx, d, &x);
+        row.thr = fx_time(fx->batch, &x, d, o);
+        finish(&row, o, sink, ctx, count);
+    }
+    facet_set_port(saved_port ? saved_port : "auto");
+    /* one library call per sample, and its latency */
+    if (want_port(o, "scalar")) {
+        work w;
+        cyc_stat base;
+        fx_row(&row, fx, d, "scalar", "call");
+        row.note = "facet_<kernel>_fx per sample";
+        fx_run_all(fx->call, d, &x);
+        fx_err(&row.err, fx, d, &x);
+        row.thr = fx_time(fx->call, &x, d, o);
+        memset(&w, 0, sizeof w);
+        w.fxout = x.out;
+        w.fxin = (const int32_t *const *)x.q;
+        w.n = o->n_time < d->n ? o->n_time : d->n;
+        w.fx = bench_fx_identity_chain;
+        base = time_work(&w, (double)w.n, o);
+        w.fx = fx->chain;
+        row.lat = stat_minus(time_work(&w, (double)w.n, o), base.median);
+        row.has_lat = 1;
+        finish(&row, o, sink, ctx, count);
+    }
+    for (j = 0; j < d->k->n_inputs; j++)
+        free(x.q[j]);
+    free(x.want);
+    free(x.out);
 }
 
 /* ---- everything ------------------------------------------------------------- */
@@ -411,17 +554,8 @@ int bench_run(const bench_opts *o, bench_sink sink, void *ctx)
         }
         if (!o->format || !strcmp(o->format, "fx")) {
             const bench_fx *fx = bench_fx_find(k->name);
-            if (fx && want_port(o, "scalar")) {
-                bench_row row;
-                row_init(&row, &d, "fx", "scalar", "batch", 1);
-                row.bound = fx->bound;
-                eval_all(fx->thr, &d, d.out, d.n);
-                err_of(&row.err, &d, d.out, d.want);
-                row_time(&row, fx->thr, &d, o);
-                if (fx->chain)
-                    row_latency(&row, fx->chain, bench_loops_scalar_inline.k[nk].chain, 1, &d, o);
-                finish(&row, o, sink, ctx, &count);
-            }
+            if (fx)
+                run_fx(fx, &d, o, sink, ctx, &count);
         }
         kdata_free(&d);
     }

@@ -29,6 +29,18 @@ typedef struct bench_err {
     float arg[FACET_MAX_INPUTS];/* input at the max */
     double got, want;
     long n;
+    /* fixed-point rows: error in units of the output's last place against
+     * round-half-up(oracle * 2^frac) at the same (Q15) inputs, as
+     * tests/test_fx_accuracy.c measures it; max_rel/mean_rel are then
+     * relative to the oracle at the Q15 inputs (floor: one LSB) */
+    int has_lsb;
+    double max_lsb, mean_lsb;
+    /* brdf_hammon (64-bit output): where the oracle is >= 16 its LSB (2^-24)
+     * is below what the double oracle resolves, so those samples are held to
+     * 2^-26 relative instead (as in tests/test_fx_accuracy.c): their max
+     * relative error (-1: none) and the count of samples in max/mean_lsb */
+    double big_rel;
+    long n_lsb;
 } bench_err;
 
 typedef struct bench_row {
@@ -40,8 +52,8 @@ typedef struct bench_row {
     int n_inputs;
     int lanes;              /* samples per call */
     bench_err err;
-    double bound;           /* the facet.h bound (0: none, e.g. peers) */
-    int within;             /* err.max_rel <= bound (1 when bound == 0) */
+    double bound;           /* the facet.h bound (0: none, e.g. peers); fx: LSB */
+    int within;             /* err.max_rel (fx: err.max_lsb) <= bound (1 when bound == 0) */
     cyc_stat thr;           /* clock units per sample */
     int has_lat;
     cyc_stat lat;           /* clock units per dependent call, overhead removed */

@@ -72,6 +72,9 @@ static void sink(const bench_row *r, void *vctx)
             printf("%s%.9g", j ? ", " : "", r->err.arg[j]);
         printf("], \"bound\": %.6g, \"within_bound\": %s,\n     ", r->bound,
                r->within ? "true" : "false");
+        if (r->err.has_lsb)
+            printf("\"max_err_lsb\": %s, \"mean_err_lsb\": %s, \"bound_unit\": \"lsb\",\n     ",
+                   jnum(r->err.max_lsb), jnum(r->err.mean_lsb));
         json_stat("throughput", &r->thr, c->tpc);
         if (r->has_lat) {
             printf(",\n     ");
@@ -84,8 +87,17 @@ static void sink(const bench_row *r, void *vctx)
         char lat[48] = "-";
         if (r->has_lat)
             snprintf(lat, sizeof lat, "%8.2f%s", r->lat.median, r->lat.noisy ? "!" : " ");
-        printf("%-22s %-3s %-9s %-6s %9.3g %9.3g %s %8.3f %8.3f %5.1f%%%s %8.3f %s\n", r->kernel,
-               r->format, r->port, r->path, r->err.max_rel, r->err.mean_rel,
+        /* fx rows: the error columns are in LSB (marked 'L') */
+        char e1[24], e2[24];
+        if (r->err.has_lsb) {
+            snprintf(e1, sizeof e1, "%7.3gL", r->err.max_lsb);
+            snprintf(e2, sizeof e2, "%7.3gL", r->err.mean_lsb);
+        } else {
+            snprintf(e1, sizeof e1, "%9.3g", r->err.max_rel);
+            snprintf(e2, sizeof e2, "%9.3g", r->err.mean_rel);
+        }
+        printf("%-22s %-3s %-9s %-6s %9s %9s %s %8.3f %8.3f %5.1f%%%s %8.3f %s\n", r->kernel,
+               r->format, r->port, r->path, e1, e2,
                r->bound > 0 ? (r->within ? "ok " : "BAD") : "-  ", r->thr.min, r->thr.median,
                100 * r->thr.spread, r->thr.noisy ? "!" : " ", r->thr.median / c->tpc, lat);
     }
@@ -186,6 +198,8 @@ int facet_cmd_bench(int argc, char **argv)
         if (!cyc_is_cycles())
             printf("# est.cyc = ticks / %.3f (ticks per core cycle, from a chain of 1-cycle adds)\n",
                    c.tpc);
+        if (!o.format || !strcmp(o.format, "fx"))
+            printf("# fx rows: errors in LSB of the output format (L), vs round(oracle 2^frac) at the Q15 inputs\n");
         printf("%-22s %-3s %-9s %-6s %9s %9s %s %8s %8s %6s %8s %s\n", "kernel", "fmt", "port",
                "path", "max_err", "mean_err", "bnd", "thr_min", "thr_med", "spread", "est.cyc",
                "latency/call");
