@@ -25,6 +25,10 @@ pic pic_heatmap(int which);
 #define PIC_N_HEATMAPS 5
 /* f32 arithmetic error of brdf_hammon (scalar) vs the oracle over (N.L, N.V) */
 pic pic_heatmap_f32(void);
+/* fixed-point brdf_hammon over (N.L, N.V) in the f32 map's geometry:
+ * which 0: arithmetic error vs the oracle at the same Q15 inputs;
+ * which 1: including the Q15 rounding of the inputs (vs the float dots) */
+pic pic_heatmap_fx(int which);
 /* the colour bar used by the heatmaps: log10 error from -7 to 0 */
 pic pic_colorbar(void);
 

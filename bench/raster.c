@@ -5,6 +5,7 @@
 #include "facet.h"
 #include "facet/scalar.h"
 #include "facet/oracle.h"
+#include "facet/fx.h"
 #include "raster.h"
 
 /* ---- scene ----------------------------------------------------------------- */
@@ -396,10 +397,46 @@ void rs_shade_oracle(rs_gbuf *g)
     }
 }
 
+/* x in Q15, round to nearest, ties up (the facet/fx.h rule); the inputs
+ * here are finite dots and material values in [-1, 1] */
+static int32_t q15(float x)
+{
+    return (int32_t)floorf(x * 32768.0f + 0.5f);
+}
+
+/* fixed point: the float dots (and the material) rounded to Q15, N.L and
+ * N.V raised to the fx cos floor (FACET_FX_COS_MIN = 2^-8, where the f32
+ * kernels go down to 2^-20), one facet_brdf_hammon_fx call per light and
+ * channel, its UQ40.24 result back to float for the accumulation */
 int rs_shade_fx(rs_gbuf *g)
 {
-    (void)g; /* TODO(issue 4): shade with facet/fx.h once it lands */
-    return 0;
+    int i, l, c;
+    for (i = 0; i < g->n; i++) {
+        float acc[3] = { 0, 0, 0 };
+        int32_t qa = q15(g->alpha[i]), qf[3], qb[3];
+        for (c = 0; c < 3; c++) {
+            qf[c] = q15(g->f0[c][i]);
+            qb[c] = q15(g->alb[c][i]);
+        }
+        for (l = 0; l < g->n_lights; l++) {
+            float nol, nov, lov, sc;
+            int32_t ql, qv, qlv;
+            geom(g, i, l, &nol, &nov, &lov, &sc);
+            ql = q15(nol);
+            qv = q15(nov);
+            qlv = q15(lov);
+            if (ql < FACET_FX_COS_MIN)
+                ql = FACET_FX_COS_MIN;
+            if (qv < FACET_FX_COS_MIN)
+                qv = FACET_FX_COS_MIN;
+            for (c = 0; c < 3; c++)
+                acc[c] += (float)((double)facet_brdf_hammon_fx(ql, qv, qlv, qa, qf[c], qb[c]) * 0x1p-24)
+                          * sc * g->light[l].e[c];
+        }
+        for (c = 0; c < 3; c++)
+            g->out[c][i] = acc[c];
+    }
+    return 1;
 }
 
 static unsigned char srgb8(float x)

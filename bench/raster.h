@@ -15,7 +15,9 @@
  *   sse2     facet_brdf_hammon_f32_sse2, 4 pixels per call (raster_avx2.c)
  *   batch    deferred: the dots of all pixels for a light into arrays, one
  *            facet_brdf_hammon_f32_batch call per light and channel
- *   fx       TODO(issue 4): facet/fx.h fixed-point kernel
+ *   fx       facet_brdf_hammon_fx per pixel, light and channel: the float
+ *            dots rounded to Q15 (ties up), N.L and N.V raised to the fx
+ *            cos floor 2^-8, the UQ40.24 result converted back to float
  *   oracle   facet_oracle_brdf_hammon in double: the reference image
  */
 #ifndef FACET_BENCH_RASTER_H
@@ -52,7 +54,7 @@ void rs_shade_batch(rs_gbuf *g);
 void rs_shade_oracle(rs_gbuf *g);
 int rs_shade_avx2(rs_gbuf *g);    /* 0: not available on this CPU/build */
 int rs_shade_sse2(rs_gbuf *g);
-int rs_shade_fx(rs_gbuf *g);      /* 0: no fixed-point kernels in this build */
+int rs_shade_fx(rs_gbuf *g);      /* facet/fx.h (always 1) */
 
 /* Tone map (exposure, clamp) and sRGB-encode g->out into rgb (w*h*3). */
 void rs_to_srgb(const rs_gbuf *g, unsigned char *rgb);
