@@ -413,7 +413,12 @@ static void section_kernels(void)
     h2("Kernels x format x port: error and cost");
     para("Errors: relative to the double oracle at the same inputs (floor 2^-100), max (with the argmax "
          "input) and mean over the error set; 'bound' is the facet.h bound (ok/BAD). Peers: error against "
-         "the oracle of the formula they compute. Throughput in %s per sample (median), est. cycles per "
+         "the oracle of the formula they compute. Fixed-point rows (fmt fx): the float inputs rounded to Q15 "
+         "(ties up) and clamped to the fx domain outside the timing; error in LSB of the output format "
+         "against round-half-up(oracle 2^frac) at those Q15 inputs, the measure of tests/test_fx_accuracy.c "
+         "(brdf_hammon where the oracle is >= 16: relative, bound 2^-26); path batch = "
+         "facet_KERNEL_fx_batch with facet_set_port(port) active (identical timings across ports mean the "
+         "build routes every port to the same fx loop), path call = facet_KERNEL_fx per sample. Throughput in %s per sample (median), est. cycles per "
          "sample, latency in est. cycles per call. mca: llvm-mca cycles per sample for the port's batch "
          "loop (modelled, not measured). size: bytes of the batch function.", cyc_unit());
     thead(13, "kernel", "fmt", "port", "path", "max err", "argmax input", "mean err", "bound",
@@ -432,13 +437,23 @@ static void section_kernels(void)
             snprintf(c[1], sizeof c[1], "%s", x->format);
             snprintf(c[2], sizeof c[2], "%s", x->port);
             snprintf(c[3], sizeof c[3], "%s", x->path);
-            g3(c[4], x->r.err.max_rel);
+            if (x->r.err.has_lsb)
+                fmt(c[4], sizeof c[4], "%.0f LSB%s", x->r.err.max_lsb,
+                    x->r.err.big_rel >= 0 ? fmt(c[12], 64, " (brdf >= 16: %.2g rel)", x->r.err.big_rel) : "");
+            else
+                g3(c[4], x->r.err.max_rel);
             p = c[5];
             *p = 0;
             for (j = 0; j < x->r.n_inputs; j++)
                 p += snprintf(p, 20, "%s%.4g", j ? ", " : "", x->r.err.arg[j]);
-            g3(c[6], x->r.err.mean_rel);
-            if (x->r.bound > 0)
+            if (x->r.err.has_lsb)
+                fmt(c[6], sizeof c[6], "%.2g LSB", x->r.err.mean_lsb);
+            else
+                g3(c[6], x->r.err.mean_rel);
+            if (x->r.bound > 0 && x->r.err.has_lsb)
+                fmt(c[7], sizeof c[7], "%.0f LSB%s %s", x->r.bound, x->r.err.big_rel >= 0 ? ", 2^-26 rel" : "",
+                    x->r.within ? "ok" : "**BAD**");
+            else if (x->r.bound > 0)
                 fmt(c[7], sizeof c[7], "%.3g %s", x->r.bound, x->r.within ? "ok" : "**BAD**");
             else
                 strcpy(c[7], "-");
@@ -586,7 +601,12 @@ static void section_pictures(void)
     p = pic_heatmap_f32();
     picture(&p, "heat_brdf_hammon_f32.png");
     pic_free(&p);
-    para("Fixed-point error heatmaps: TODO (issue 4): not produced in this build.");
+    p = pic_heatmap_fx(0);
+    picture(&p, "heat_brdf_hammon_fx.png");
+    pic_free(&p);
+    p = pic_heatmap_fx(1);
+    picture(&p, "heat_brdf_hammon_fx_inputs.png");
+    pic_free(&p);
 }
 
 typedef struct shade_ctx { rs_gbuf *g; int path; } shade_ctx;
@@ -651,8 +671,6 @@ static void section_raster(void)
         if (!shade(g, p)) {
             cells[0] = names[p];
             cells[1] = cells[2] = cells[3] = cells[4] = cells[5] = cells[6] = "n/a";
-            if (p == 4)
-                cells[1] = "TODO (issue 4)";
             trow(cells);
             continue;
         }
@@ -698,42 +716,70 @@ static void section_raster(void)
     rs_free(g);
 }
 
+static double armv(const char *what, const char *kernel, const char *cpu)
+{
+    const tsv *t = arm_of(what, kernel, cpu);
+    return t ? t->v : -1;
+}
+
+static const char *armcell(char *b, size_t n, double v)
+{
+    if (v < 0)
+        return "-";
+    return fmt(b, n, "%.0f", v);
+}
+
 static void section_arm(void)
 {
     size_t ki;
-    static const char *cpus[3] = { "cortex-m4", "cortex-m7", "cortex-m33" };
-    h2("Cortex-M (modelled): fixed point and soft-float f32");
+    h2("Cortex-M: fixed point vs soft-float f32 (qemu traces; measured counts, modelled cycles)");
     if (!n_arm) {
-        para("No modelled Cortex-M figures in this build (arm.tsv missing: needs arm-none-eabi-gcc, "
-             "llvm-mca and the fixed-point kernels of issue 4).");
+        para("No Cortex-M figures in this build (arm.tsv empty: bench/cortexm.sh needs arm-none-eabi-gcc "
+             "with newlib and qemu-system-arm; llvm-mca for the modelled cycles).");
         return;
     }
-    para("llvm-mca cycles of each fixed-point kernel's function body built with arm-none-eabi-gcc -O2 "
-         "-mcpu=CPU -mthumb (all src/fx_*.c in one translation unit). MODELLED, and only indicative: the "
-         "batch loops call the scalar kernel, so the kernel body is modelled as straight-line code, every "
-         "instruction once, branches and calls dropped; the callees (reciprocal, square root, helpers) are "
-         "not included and both sides of every branch are. Not done: a trace of the executed path, qemu "
-         "instruction counts for Cortex-M0/M4, and the soft-float f32 peer (libgcc calls) on the same core.");
-    thead(7, "kernel", "fx M4 (mca)", "fx M7 (mca)", "fx M33 (mca)", "fx M4 insns (qemu)", "f32 soft M4 insns (qemu)", "fx M0 insns (qemu)");
+    para("bench/cortexm.sh builds bench/cortexm_main.c with arm-none-eabi-gcc -O2 -mthumb -mcpu=CORE "
+         "(fixed point: src/fx_core.c, src/fx_kernels.c; f32: facet/scalar.h with -mfloat-abi=soft, so "
+         "every float operation is a libgcc call), runs it under qemu-system-arm -singlestep -d exec "
+         "(one log line per executed instruction) and cuts each kernel call out of the trace, from the "
+         "kernel's first instruction to its return: callees (reciprocal, square root, libgcc soft-float "
+         "helpers) included, argument set-up and the call instruction not. 4 representative inputs "
+         "(consistent geometry, alpha 0.012 to 0.6), one call each; figures are the mean per call. "
+         "<b>insns</b>: executed instructions, MEASURED (qemu; a count, not cycles). <b>mca</b>: llvm-mca "
+         "(LLVM 14) cycles for the core on the executed instruction sequence as straight-line code, "
+         "MODELLED: branch targets folded to one label, calls as plain branches, no pipeline refill on "
+         "taken branches (1-3 cycles each on M4; <b>taken</b> gives their count per call), zero wait "
+         "states; cortex-m7 with IT blocks unpredicated (LLVM's M7 model lacks IT). <b>M0 cyc</b>: the "
+         "Cortex-M0 TRM timing table (loads/stores 2, taken branch 3, BL 4, POP with PC 3+N, single-cycle "
+         "multiplier, zero wait states) applied to the executed ARMv6-M trace, MODELLED. The M0 build runs "
+         "on mps2-an385 (a Cortex-M3 model; the executed path depends only on the ISA), M33 code on the "
+         "M4 model (mps2-an386), M7 on mps2-an500.");
+    thead(12, "kernel", "fx M0 insns", "fx M0 cyc (TRM)", "fx M4 insns", "fx M4 / M7 / M33 mca",
+          "fx M4 taken", "f32 soft M0 insns", "f32 soft M0 cyc (TRM)", "f32 soft M4 insns",
+          "f32 soft M4 / M7 / M33 mca", "soft/fx M4 (mca)", "soft/fx M0 (TRM)");
     for (ki = 0; ki < facet_kernel_count(); ki++) {
         const char *kn = facet_kernel_at(ki)->name;
-        char b[7][48];
-        const char *cells[7];
-        int c, any = 0;
-        const tsv *t;
+        char b[12][96];
+        const char *cells[12];
+        double fm4 = armv("fx-mca", kn, "cortex-m4"), sm4 = armv("f32soft-mca", kn, "cortex-m4");
+        double f0c = armv("fx-m0cyc", kn, "cortex-m0"), s0c = armv("f32soft-m0cyc", kn, "cortex-m0");
+        if (armv("fx-insns", kn, "cortex-m4") < 0 && armv("f32soft-insns", kn, "cortex-m4") < 0)
+            continue;
         cells[0] = kn;
-        for (c = 0; c < 3; c++) {
-            t = arm_of("fx-body", kn, cpus[c]);
-            cells[1 + c] = t ? (any = 1, fmt(b[c], sizeof b[c], "%.1f", t->v)) : "-";
-        }
-        t = arm_of("fx-insns", kn, "cortex-m4");
-        cells[4] = t ? (any = 1, fmt(b[3], sizeof b[3], "%.0f", t->v)) : "-";
-        t = arm_of("f32soft-insns", kn, "cortex-m4");
-        cells[5] = t ? (any = 1, fmt(b[4], sizeof b[4], "%.0f", t->v)) : "-";
-        t = arm_of("fx-insns", kn, "cortex-m0");
-        cells[6] = t ? (any = 1, fmt(b[5], sizeof b[5], "%.0f", t->v)) : "-";
-        if (any)
-            trow(cells);
+        cells[1] = armcell(b[1], sizeof b[1], armv("fx-insns", kn, "cortex-m0"));
+        cells[2] = armcell(b[2], sizeof b[2], f0c);
+        cells[3] = armcell(b[3], sizeof b[3], armv("fx-insns", kn, "cortex-m4"));
+        cells[4] = fm4 < 0 ? "-" : fmt(b[4], sizeof b[4], "%.0f / %.0f / %.0f", fm4, armv("fx-mca", kn, "cortex-m7"),
+                                       armv("fx-mca", kn, "cortex-m33"));
+        cells[5] = armcell(b[5], sizeof b[5], armv("fx-taken", kn, "cortex-m4"));
+        cells[6] = armcell(b[6], sizeof b[6], armv("f32soft-insns", kn, "cortex-m0"));
+        cells[7] = armcell(b[7], sizeof b[7], s0c);
+        cells[8] = armcell(b[8], sizeof b[8], armv("f32soft-insns", kn, "cortex-m4"));
+        cells[9] = sm4 < 0 ? "-" : fmt(b[9], sizeof b[9], "%.0f / %.0f / %.0f", sm4,
+                                       armv("f32soft-mca", kn, "cortex-m7"), armv("f32soft-mca", kn, "cortex-m33"));
+        cells[10] = fm4 > 0 && sm4 > 0 ? fmt(b[10], sizeof b[10], "%.1fx", sm4 / fm4) : "-";
+        cells[11] = f0c > 0 && s0c > 0 ? fmt(b[11], sizeof b[11], "%.1fx", s0c / f0c) : "-";
+        trow(cells);
     }
     tend();
 }
@@ -742,7 +788,7 @@ static void section_targets(void)
 {
     const row *ab = find_row("brdf_hammon", "f32", "avx2", "batch");
     const row *fastest = NULL;
-    char b[12][200];
+    char b[12][400];
     const char *cells[4];
     int i;
     size_t ki;
@@ -790,23 +836,30 @@ static void section_targets(void)
         trow(cells);
     }
     {
-        const tsv *fx = arm_of("fx-body", "brdf_hammon", "cortex-m4");
-        const tsv *fxi = arm_of("fx-insns", "brdf_hammon", "cortex-m4");
-        const tsv *sf = arm_of("f32soft-insns", "brdf_hammon", "cortex-m4");
+        double fx = armv("fx-mca", "brdf_hammon", "cortex-m4"), sf = armv("f32soft-mca", "brdf_hammon", "cortex-m4");
+        double fxi = armv("fx-insns", "brdf_hammon", "cortex-m4"), sfi = armv("f32soft-insns", "brdf_hammon", "cortex-m4");
+        double f0 = armv("fx-m0cyc", "brdf_hammon", "cortex-m0"), s0 = armv("f32soft-m0cyc", "brdf_hammon", "cortex-m0");
         cells[0] = "fx brdf_hammon <= 150 cycles/sample on Cortex-M4 (llvm-mca)";
-        cells[1] = fx ? fmt(b[4], sizeof b[4], "%.1f modelled cycles (kernel body straight-line, callees excluded)", fx->v) : "not available";
-        cells[2] = fx ? (fx->v <= 150 ? "yes" : "**no** (indicative)") : "n/a";
-        cells[3] = "not a trace of the executed path: every instruction of the body once, branches dropped, calls to rcp32/isqrt64/helpers not followed";
+        cells[1] = fx > 0 ? fmt(b[4], sizeof b[4], "%.0f cycles per call, MODELLED (llvm-mca cortex-m4 on the executed "
+                                                    "trace, %.0f instructions measured under qemu; + %.0f taken branches "
+                                                    "at 1-3 cycles not modelled)", fx, fxi, armv("fx-taken", "brdf_hammon", "cortex-m4"))
+                          : "not available";
+        cells[2] = fx > 0 ? (fx <= 150 ? "yes" : "**no**") : "n/a";
+        cells[3] = "4 representative inputs, mean per call; see the Cortex-M section";
         trow(cells);
-        cells[0] = "fx brdf_hammon >= 10x fewer than soft-float f32 on Cortex-M4";
-        if (fxi && sf) {
-            cells[1] = fmt(b[5], sizeof b[5], "%.1fx (executed instructions under qemu: %.0f vs %.0f)", sf->v / fxi->v, sf->v, fxi->v);
-            cells[2] = sf->v / fxi->v >= 10 ? "yes" : "**no**";
+        cells[0] = "fx brdf_hammon >= 10x fewer cycles than soft-float f32 on the same core";
+        if (fx > 0 && sf > 0) {
+            cells[1] = fmt(b[5], sizeof b[5], "Cortex-M4: %.1fx (%.0f vs %.0f cycles, MODELLED by llvm-mca on the traces; "
+                                              "executed instructions MEASURED: %.0f vs %.0f, %.1fx)%s",
+                           sf / fx, sf, fx, sfi, fxi, sfi / fxi,
+                           f0 > 0 && s0 > 0 ? fmt(b[7], sizeof b[7], "; Cortex-M0: %.1fx (%.0f vs %.0f cycles, TRM-table model)",
+                                                  s0 / f0, s0, f0) : "");
+            cells[2] = sf / fx >= 10 ? "yes" : "**no**";
         } else {
             cells[1] = "not available";
             cells[2] = "n/a";
         }
-        cells[3] = "instruction counts, not cycles: libgcc soft-float calls cannot be modelled by llvm-mca";
+        cells[3] = "soft-float: facet/scalar.h -mfloat-abi=soft, libgcc helpers included in the trace";
         trow(cells);
     }
     cells[0] = "rasterizer AVX2 shading <= 1.3x the batch benchmark's cycles/sample";

@@ -3,7 +3,7 @@
 # from the marked block at the end of tests/report.sh).  Writes, under
 # BUILD_DIR/report/: mca.tsv (llvm-mca cycles per sample of each port's
 # batch loop), size.tsv (bytes of each batch function), arm.tsv (Cortex-M
-# figures for the fixed-point kernels, when they and the tools exist), then
+# figures from bench/cortexm.sh, when its tools exist), then
 # runs build/facet-report, which measures everything else and writes
 # bench.md and index.html.  Progress goes to the terminal.
 set -u
@@ -12,7 +12,7 @@ out=$build/report
 mkdir -p "$out"
 MAKE=${MAKE:-make}
 $MAKE -s BUILD="$build" bench-report || exit 1
-lanes_of() { case $1 in avx2) echo 8 ;; sse2|neon) echo 4 ;; *) echo 1 ;; esac; }
+lanes_of() { case $1 in avx512) echo 16 ;; avx2) echo 8 ;; sse2|neon) echo 4 ;; *) echo 1 ;; esac; }
 obj_of() { if [ "$1" = scalar ]; then echo "$build/src/f32_batch_scalar.o"; else echo "$build/ports/$1/f32_$1.o"; fi; }
 kernels=$("$build/facet" list | cut -d' ' -f1)
 
@@ -25,7 +25,7 @@ case $(${CC:-cc} -dumpmachine) in
 x86_64*|i?86*) x86=1 ;;
 *) x86=0 ;;
 esac
-for port in scalar sse2 avx2 neon; do
+for port in scalar sse2 avx2 avx512 neon; do
     obj=$(obj_of $port)
     [ -f "$obj" ] || continue
     lanes=$(lanes_of $port)
@@ -42,36 +42,11 @@ for port in scalar sse2 avx2 neon; do
     echo "report: llvm-mca + sizes: $port done"
 done
 
-# ---- Cortex-M: fixed-point kernels (issue 4) --------------------------------
-: > "$out/arm.tsv"
-if command -v arm-none-eabi-gcc >/dev/null 2>&1 && command -v llvm-mca >/dev/null 2>&1 &&
-   [ -f include/facet/fx.h ] && ls src/fx_*.c >/dev/null 2>&1; then
-    echo "# what kernel cpu value source" >> "$out/arm.tsv"
-    adir=$build/bench/arm
-    mkdir -p "$adir"
-    # one translation unit so the shared primitives can be inlined into the loops
-    cat src/fx_*.c > "$adir/fx_all.c"
-    for cpu in cortex-m4 cortex-m7 cortex-m33; do
-        case $cpu in
-        cortex-m33) triple=thumbv8m.main-none-eabi ;;
-        *) triple=thumbv7em-none-eabi ;;
-        esac
-        if arm-none-eabi-gcc -mcpu=$cpu -mthumb -O2 -std=c99 -Iinclude -Isrc -c "$adir/fx_all.c" \
-                -o "$adir/fx_$cpu.o" 2>"$adir/fx_$cpu.log"; then
-            # the batch loops call the scalar kernel, so model the kernel body:
-            # straight line, every instruction once, callees NOT included
-            for k in $kernels; do
-                MCA_WHOLE=1 sh bench/mca.sh arm-none-eabi-objdump "$adir/fx_$cpu.o" "facet_${k}_fx" "$triple" "$cpu" |
-                    while read -r c cyc; do echo "fx-body $k $cpu $cyc llvm-mca-straight-line-no-callees"; done >> "$out/arm.tsv"
-            done
-        else
-            echo "report: arm-none-eabi-gcc failed for $cpu (see $adir/fx_$cpu.log)"
-        fi
-        echo "report: Cortex-M fixed point, llvm-mca $cpu done"
-    done
-else
-    echo "report: skipping Cortex-M figures (needs arm-none-eabi-gcc, llvm-mca, facet/fx.h)"
-fi
+# ---- Cortex-M: fixed point and soft-float f32, traced under qemu -----------
+# (bench/cortexm.sh: executed-instruction counts, llvm-mca on the executed
+# trace, Cortex-M0 TRM timings; every figure labelled measured or modelled)
+echo "report: Cortex-M traces (qemu-system-arm) + llvm-mca ..."
+sh bench/cortexm.sh "$build" "$out/arm.tsv"
 
 echo "report: measuring (benchmarks, tradeoffs, pictures, rasterizer) ..."
 "$build/facet-report" "$out" ${FACET_REPORT_QUICK:+--quick}
