@@ -1,6 +1,8 @@
-/* png.h - a small PNG writer of our own: 8-bit RGB, filter 0, zlib stream of
- * stored (uncompressed) deflate blocks, CRC-32 per chunk and Adler-32 over the
- * raw scanlines.  Enough for report pictures; no dependency. */
+/* png.h - a small PNG writer of our own: 8-bit RGB, per-row filter (None,
+ * Sub, Up or Paeth, smallest sum of |bytes|), a zlib stream of one deflate
+ * block with the fixed Huffman codes and greedy LZ77 matches (hash chains,
+ * 32 KiB window), CRC-32 per chunk and Adler-32 over the filtered
+ * scanlines.  Enough for report pictures; no dependency. */
 #ifndef FACET_BENCH_PNG_H
 #define FACET_BENCH_PNG_H
 

@@ -1,6 +1,7 @@
 /* test_bench.c - the bench machinery works: the PNG encoder (known CRC-32
- * and Adler-32 values, and a round trip through a stored-block decoder that
- * checks every chunk CRC), and the rasterizer on a 64x64 frame, every
+ * and Adler-32 values, and a round trip through our own small inflate and
+ * unfilter that checks every chunk CRC and the Adler-32, on noise, a
+ * gradient and a rendered frame, plus compression on the frame), and the rasterizer on a 64x64 frame, every
  * shading path against the oracle-shaded frame. */
 #include <stdint.h>
 #include <stdio.h>
@@ -15,12 +16,155 @@ static uint32_t get32(const unsigned char *p)
     return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3];
 }
 
-/* decodes what png_encode writes (RGB8, stored deflate blocks); 0 on success */
+/* ---- a small inflate (stored and fixed-Huffman blocks: what png_encode
+ * writes; dynamic blocks are rejected) and the PNG unfilter --------------- */
+
+typedef struct br { const unsigned char *p; size_t n, pos; int bit; } br;
+
+static int br_bit(br *r)
+{
+    int v;
+    if (r->pos >= r->n)
+        return -1;
+    v = (r->p[r->pos] >> r->bit) & 1;
+    if (++r->bit == 8) {
+        r->bit = 0;
+        r->pos++;
+    }
+    return v;
+}
+
+static long br_bits(br *r, int n) /* n bits, LSB first */
+{
+    long v = 0;
+    int i, b;
+    for (i = 0; i < n; i++) {
+        if ((b = br_bit(r)) < 0)
+            return -1;
+        v |= (long)b << i;
+    }
+    return v;
+}
+
+/* a fixed-code literal/length symbol (codes MSB first) */
+static int fixed_litlen(br *r)
+{
+    int code = 0, len, b;
+    for (len = 1; len <= 9; len++) {
+        if ((b = br_bit(r)) < 0)
+            return -1;
+        code = code << 1 | b;
+        if (len == 7 && code <= 0x17)
+            return 256 + code;
+        if (len == 8 && code >= 0x30 && code <= 0xbf)
+            return code - 0x30;
+        if (len == 8 && code >= 0xc0 && code <= 0xc7)
+            return 280 + code - 0xc0;
+        if (len == 9 && code >= 0x190)
+            return 144 + code - 0x190;
+    }
+    return -1;
+}
+
+static const unsigned short t_lbase[29] = { 3, 4, 5, 6, 7, 8, 9, 10, 11, 13, 15, 17, 19, 23, 27, 31,
+                                            35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258 };
+static const unsigned char t_lext[29] = { 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2,
+                                          3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0 };
+static const unsigned short t_dbase[30] = { 1, 2, 3, 4, 5, 7, 9, 13, 17, 25, 33, 49, 65, 97, 129, 193,
+                                            257, 385, 513, 769, 1025, 1537, 2049, 3073, 4097, 6145,
+                                            8193, 12289, 16385, 24577 };
+static const unsigned char t_dext[30] = { 0, 0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6,
+                                          7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13 };
+
+/* inflates z (after the 2-byte zlib header) into out (cap bytes); returns
+ * the output size, -1 on a malformed or over-long stream; *end: the byte
+ * after the last block */
+static long inflate_simple(const unsigned char *z, size_t zn, unsigned char *out, size_t cap, size_t *end)
+{
+    br r;
+    size_t o = 0;
+    long final = 0;
+    r.p = z;
+    r.n = zn;
+    r.pos = 0;
+    r.bit = 0;
+    while (!final) {
+        long type;
+        final = br_bits(&r, 1);
+        type = br_bits(&r, 2);
+        if (final < 0 || type < 0)
+            return -1;
+        if (type == 0) {
+            unsigned len, nlen;
+            if (r.bit) {
+                r.bit = 0;
+                r.pos++;
+            }
+            if (r.pos + 4 > zn)
+                return -1;
+            len = z[r.pos] | z[r.pos + 1] << 8;
+            nlen = z[r.pos + 2] | z[r.pos + 3] << 8;
+            r.pos += 4;
+            if ((len ^ 0xffffu) != nlen || r.pos + len > zn || o + len > cap)
+                return -1;
+            memcpy(out + o, z + r.pos, len);
+            o += len;
+            r.pos += len;
+        } else if (type == 1) {
+            for (;;) {
+                int sym = fixed_litlen(&r);
+                long len, dsym, dist;
+                if (sym < 0)
+                    return -1;
+                if (sym < 256) {
+                    if (o >= cap)
+                        return -1;
+                    out[o++] = (unsigned char)sym;
+                    continue;
+                }
+                if (sym == 256)
+                    break;
+                if (sym > 285)
+                    return -1;
+                len = br_bits(&r, t_lext[sym - 257]);
+                dsym = br_bits(&r, 5); /* fixed distance codes: 5 bits, MSB first */
+                if (len < 0 || dsym < 0)
+                    return -1;
+                dsym = ((dsym & 1) << 4) | ((dsym & 2) << 2) | (dsym & 4) | ((dsym & 8) >> 2) | ((dsym & 16) >> 4);
+                if (dsym > 29)
+                    return -1;
+                len += t_lbase[sym - 257];
+                dist = br_bits(&r, t_dext[dsym]);
+                if (dist < 0)
+                    return -1;
+                dist += t_dbase[dsym];
+                if ((size_t)dist > o || o + (size_t)len > cap)
+                    return -1;
+                for (; len > 0; len--, o++)
+                    out[o] = out[o - (size_t)dist];
+            }
+        } else {
+            return -1;
+        }
+    }
+    *end = r.pos + (r.bit != 0);
+    return (long)o;
+}
+
+static int t_paeth(int a, int b, int c)
+{
+    int p = a + b - c, pa = abs(p - a), pb = abs(p - b), pc = abs(p - c);
+    return pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
+}
+
+/* decodes what png_encode writes (RGB8, filters 0-4, stored or fixed-code
+ * deflate blocks), checking every chunk CRC and the Adler-32; 0 on success */
 static int decode(const unsigned char *b, size_t n, unsigned char *rgb, int w, int h)
 {
-    size_t off = 8, row = (size_t)w * 3 + 1;
+    size_t off = 8, row = (size_t)w * 3 + 1, end = 0;
     unsigned char *z = malloc(n), *raw = malloc(row * (size_t)h + 1);
-    size_t zn = 0, rn = 0, q;
+    size_t zn = 0, x;
+    long rn;
     int y, seen_end = 0, rc = 0;
     if (memcmp(b, "\x89PNG\r\n\x1a\n", 8))
         rc = 1;
@@ -43,24 +187,24 @@ static int decode(const unsigned char *b, size_t n, unsigned char *rgb, int w, i
     }
     if (!rc && (!seen_end || zn < 6 || ((z[0] << 8) | z[1]) % 31 || (z[0] & 15) != 8))
         rc = 4;
-    for (q = 2; !rc;) {
-        unsigned hdr = z[q], len = z[q + 1] | z[q + 2] << 8, nlen = z[q + 3] | z[q + 4] << 8;
-        if ((hdr & 6) != 0 || (len ^ 0xffffu) != nlen || rn + len > row * (size_t)h) {
+    if (!rc) {
+        rn = inflate_simple(z + 2, zn - 2, raw, row * (size_t)h, &end);
+        if (rn != (long)(row * (size_t)h))
             rc = 5;
-            break;
-        }
-        memcpy(raw + rn, z + q + 5, len);
-        rn += len;
-        q += 5 + len;
-        if (hdr & 1)
-            break;
+        else if (2 + end + 4 > zn || get32(z + 2 + end) != png_adler32(1, raw, (size_t)rn))
+            rc = 6;
     }
-    if (!rc && (rn != row * (size_t)h || get32(z + q) != png_adler32(1, raw, rn)))
-        rc = 6;
     for (y = 0; !rc && y < h; y++) {
-        if (raw[(size_t)y * row] != 0)
+        unsigned char *cur = raw + (size_t)y * row + 1, *up = y ? cur - row : NULL;
+        int f = raw[(size_t)y * row];
+        if (f > 4)
             rc = 7;
-        memcpy(rgb + (size_t)y * (size_t)w * 3, raw + (size_t)y * row + 1, (size_t)w * 3);
+        for (x = 0; !rc && x < row - 1; x++) {
+            int a = x >= 3 ? cur[x - 3] : 0, bb = up ? up[x] : 0, c = (x >= 3 && up) ? up[x - 3] : 0;
+            int pred = f == 0 ? 0 : f == 1 ? a : f == 2 ? bb : f == 3 ? (a + bb) / 2 : t_paeth(a, bb, c);
+            cur[x] = (unsigned char)(cur[x] + pred);
+        }
+        memcpy(rgb + (size_t)y * (size_t)w * 3, cur, (size_t)w * 3);
     }
     free(z);
     free(raw);
@@ -73,13 +217,14 @@ static void test_png(void)
     unsigned i;
     CHECK(png_crc32(0, (const unsigned char *)"123456789", 9) == 0xcbf43926u, "crc32 check value");
     CHECK(png_adler32(1, (const unsigned char *)"Wikipedia", 9) == 0x11e60398u, "adler32 check value");
-    for (i = 0; i < sizeof sizes / sizeof sizes[0]; i++) {
-        int w = sizes[i][0], h = sizes[i][1], rc;
+    for (i = 0; i < 2 * sizeof sizes / sizeof sizes[0]; i++) {
+        int w = sizes[i / 2][0], h = sizes[i / 2][1], rc;
+        uint32_t lcg = 12345;
         size_t np = (size_t)w * (size_t)h * 3, k, n;
         unsigned char *img = malloc(np), *back = malloc(np), *enc;
         char *b64;
-        for (k = 0; k < np; k++)
-            img[k] = (unsigned char)(k * 7 + k / 5);
+        for (k = 0; k < np; k++) /* a pattern, or noise (no matches) */
+            img[k] = (unsigned char)(i % 2 ? (lcg = lcg * 1664525u + 1013904223u) >> 24 : k * 7 + k / 5);
         n = png_encode(&enc, img, w, h);
         CHECK(n > 0, "png_encode %dx%d", w, h);
         rc = n ? decode(enc, n, back, w, h) : -1;
@@ -106,6 +251,14 @@ static void test_raster(void)
     CHECK(g->triangles > 500, "rasterizer drew %ld front-facing triangles", g->triangles);
     rs_shade_oracle(g);
     rs_to_srgb(g, ref);
+    {
+        unsigned char *enc;
+        size_t n = png_encode(&enc, ref, 64, 64);
+        int rc = n ? decode(enc, n, img, 64, 64) : -1;
+        CHECK(rc == 0 && !memcmp(ref, img, np), "png round trip of the rendered frame (rc %d)", rc);
+        CHECK(n < np / 3, "png compresses the rendered frame: %zu bytes for %zu raw", n, np);
+        free(enc);
+    }
 
 #define PATH(name, call) PATH_TOL(name, call, 1)
     /* fx: the dots are rounded to Q15 first, which moves the sharp highlights of
