@@ -11,6 +11,7 @@
  */
 #include "facet/fx.h"
 #include "fx_core.h"
+#include "fx_port.h"
 
 #define ONE 32768u
 
@@ -308,24 +309,28 @@ uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alp
     return fxf_fixed(r, FACET_FX_BRDF_FRAC, FACET_FX_MAX_BRDF);
 }
 
-/* ---- batches ------------------------------------------------------------------ */
+/* ---- the scalar port's batches ------------------------------------------
+ * The public facet_<kernel>_fx_batch entry points are in src/fx_dispatch.c;
+ * they route here unless the active port has an fx implementation (ports/
+ * <isa>/fx_<isa>.c), which must give the same bits.  Each element is read
+ * before its output is written, so out may be the same array as an input. */
 #define B1(k, T)                                                                 \
-    void facet_##k##_fx_batch(T *out, const int32_t *x0, size_t n)              \
+    static void scalar_##k(T *out, const int32_t *x0, size_t n)                 \
     {                                                                            \
         size_t i;                                                                \
         for (i = 0; i < n; i++)                                                  \
             out[i] = facet_##k##_fx(x0[i]);                                      \
     }
 #define B2(k, T)                                                                 \
-    void facet_##k##_fx_batch(T *out, const int32_t *x0, const int32_t *x1, size_t n) \
+    static void scalar_##k(T *out, const int32_t *x0, const int32_t *x1, size_t n) \
     {                                                                            \
         size_t i;                                                                \
         for (i = 0; i < n; i++)                                                  \
             out[i] = facet_##k##_fx(x0[i], x1[i]);                               \
     }
 #define B3(k, T)                                                                 \
-    void facet_##k##_fx_batch(T *out, const int32_t *x0, const int32_t *x1,     \
-                              const int32_t *x2, size_t n)                       \
+    static void scalar_##k(T *out, const int32_t *x0, const int32_t *x1,        \
+                           const int32_t *x2, size_t n)                          \
     {                                                                            \
         size_t i;                                                                \
         for (i = 0; i < n; i++)                                                  \
@@ -344,20 +349,28 @@ B2(smith_g1_hammon, int32_t)
 B3(smith_g2_hammon, int32_t)
 B3(smith_vis_hammon, uint32_t)
 
-void facet_diffuse_hammon_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
-                                   const int32_t *lov, const int32_t *alpha,
-                                   const int32_t *albedo, size_t n)
+static void scalar_diffuse_hammon(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                  const int32_t *lov, const int32_t *alpha,
+                                  const int32_t *albedo, size_t n)
 {
     size_t i;
     for (i = 0; i < n; i++)
         out[i] = facet_diffuse_hammon_fx(nol[i], nov[i], lov[i], alpha[i], albedo[i]);
 }
 
-void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t *nov,
-                                const int32_t *lov, const int32_t *alpha, const int32_t *f0,
-                                const int32_t *albedo, size_t n)
+static void scalar_brdf_hammon(uint64_t *out, const int32_t *nol, const int32_t *nov,
+                               const int32_t *lov, const int32_t *alpha, const int32_t *f0,
+                               const int32_t *albedo, size_t n)
 {
     size_t i;
     for (i = 0; i < n; i++)
         out[i] = facet_brdf_hammon_fx(nol[i], nov[i], lov[i], alpha[i], f0[i], albedo[i]);
 }
+
+const facet_fx_port facet_fx_port_scalar = {
+    "scalar", 1,
+    scalar_noh_from_dots, scalar_loh_from_dots, scalar_fresnel_schlick, scalar_ggx_d,
+    scalar_smith_g1, scalar_smith_g2, scalar_smith_g2_uncorrelated, scalar_smith_vis,
+    scalar_smith_g1_hammon, scalar_smith_g2_hammon, scalar_smith_vis_hammon,
+    scalar_diffuse_hammon, scalar_brdf_hammon,
+};

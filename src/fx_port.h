@@ -1,0 +1,42 @@
+/* fx_port.h - what a fixed-point port gives src/fx_dispatch.c: one batch
+ * function per fx kernel.  Private to the library.  Every port's functions
+ * are bit-identical to the scalar kernels of src/fx_kernels.c (the
+ * specification), tested by tests/test_fx_ports.c. */
+#ifndef FACET_FX_PORT_H
+#define FACET_FX_PORT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct facet_fx_port {
+    const char *name; /* the f32 port it goes with ("avx2", "neon", "scalar") */
+    int lanes;        /* samples per vector step */
+    void (*noh_from_dots)(int32_t *, const int32_t *, const int32_t *, const int32_t *, size_t);
+    void (*loh_from_dots)(int32_t *, const int32_t *, size_t);
+    void (*fresnel_schlick)(int32_t *, const int32_t *, const int32_t *, size_t);
+    void (*ggx_d)(uint32_t *, const int32_t *, const int32_t *, size_t);
+    void (*smith_g1)(int32_t *, const int32_t *, const int32_t *, size_t);
+    void (*smith_g2)(int32_t *, const int32_t *, const int32_t *, const int32_t *, size_t);
+    void (*smith_g2_uncorrelated)(int32_t *, const int32_t *, const int32_t *, const int32_t *,
+                                  size_t);
+    void (*smith_vis)(uint32_t *, const int32_t *, const int32_t *, const int32_t *, size_t);
+    void (*smith_g1_hammon)(int32_t *, const int32_t *, const int32_t *, size_t);
+    void (*smith_g2_hammon)(int32_t *, const int32_t *, const int32_t *, const int32_t *, size_t);
+    void (*smith_vis_hammon)(uint32_t *, const int32_t *, const int32_t *, const int32_t *,
+                             size_t);
+    void (*diffuse_hammon)(uint32_t *, const int32_t *, const int32_t *, const int32_t *,
+                           const int32_t *, const int32_t *, size_t);
+    void (*brdf_hammon)(uint64_t *, const int32_t *, const int32_t *, const int32_t *,
+                        const int32_t *, const int32_t *, const int32_t *, size_t);
+} facet_fx_port;
+
+/* the portable scalar loops (src/fx_kernels.c): always present */
+extern const facet_fx_port facet_fx_port_scalar;
+#if defined(__x86_64__) || defined(__i386__)
+extern const facet_fx_port facet_fx_port_avx2; /* ports/avx2/fx_avx2.c */
+#endif
+#if defined(__aarch64__) || (defined(__arm__) && defined(__linux__))
+extern const facet_fx_port facet_fx_port_neon; /* ports/neon/fx_neon.c */
+#endif
+
+#endif
