@@ -7,7 +7,7 @@
 #   $(BUILD)/fx/rv32/fx.elf                   freestanding RV32IMC link check
 FX_KSRC   := src/fx_core.c src/fx_kernels.c
 FX_TSRC   := $(FX_KSRC) src/fx_table.c
-FX_HDRS   := include/facet/fx.h src/fx_core.h tests/harness.h
+FX_HDRS   := include/facet/fx.h src/fx_core.h src/fx_port.h tests/harness.h tests/fx_hash.h
 FX_CFLAGS := $(WARN) -Iinclude -O2
 FX_CM_CC  ?= arm-none-eabi-gcc
 FX_RV_CC  ?= riscv64-linux-gnu-gcc

@@ -1,0 +1,79 @@
+/* fx_hash.h - the pinned-hash input grids and hash values, shared by
+ * tests/test_fx_hash.c (scalar kernels, every target) and
+ * tests/test_fx_ports.c (the batch API on every port).
+ * Inputs: for one-input kernels every raw value in [-40000, 40000]; for
+ * two-input kernels a 129 x 129 grid over the domain plus the clamping
+ * edges; for all, 3000 pseudo-random raw tuples (an LCG, 1 in 8 inputs out
+ * of domain).  Hash: FNV-1a 64 over the outputs as little-endian bytes. */
+#ifndef FACET_TEST_FX_HASH_H
+#define FACET_TEST_FX_HASH_H
+
+#include <stdint.h>
+#include "facet/fx.h"
+
+static void fxh_feed(uint64_t *h, uint64_t v, int bytes)
+{
+    int i;
+    for (i = 0; i < bytes; i++) {
+        *h ^= (v >> (8 * i)) & 0xFFu;
+        *h *= 0x100000001B3ull;
+    }
+}
+#define FXH_INIT 0xCBF29CE484222325ull
+
+static uint32_t fxh_lcg_; /* Numerical Recipes LCG, top bits used */
+static uint32_t fxh_lcg(void) { fxh_lcg_ = fxh_lcg_ * 1664525u + 1013904223u; return fxh_lcg_; }
+
+static int32_t fxh_rand_in(const facet_fx_kernel *k, int i)
+{
+    uint32_t r = fxh_lcg();
+    uint32_t span = (uint32_t)(k->hi[i] - k->lo[i]) + 1u;
+    if ((r & 7u) == 0) /* out of domain, clamped by the kernel */
+        return (r & 8u) ? k->hi[i] + (int32_t)(fxh_lcg() >> 8) : k->lo[i] - (int32_t)(fxh_lcg() >> 8);
+    return k->lo[i] + (int32_t)((fxh_lcg() >> 8) % span);
+}
+
+/* calls visit(in, ctx) for every input tuple of k's hash, in hash order */
+static void fxh_walk(const facet_fx_kernel *k, void (*visit)(const int32_t *, void *), void *ctx)
+{
+    int32_t in[FACET_FX_MAX_INPUTS];
+    int i, j, t;
+    fxh_lcg_ = 12345u;
+    if (k->n_inputs == 1) {
+        for (j = -40000; j <= 40000; j++) {
+            in[0] = j;
+            visit(in, ctx);
+        }
+    } else if (k->n_inputs == 2) {
+        for (i = -1; i <= 129; i++)
+            for (j = -1; j <= 129; j++) {
+                in[0] = k->lo[0] + (int32_t)(((int64_t)(k->hi[0] - k->lo[0]) * i) / 128);
+                in[1] = k->lo[1] + (int32_t)(((int64_t)(k->hi[1] - k->lo[1]) * j) / 128);
+                visit(in, ctx);
+            }
+    }
+    for (t = 0; t < 3000; t++) {
+        for (i = 0; i < k->n_inputs; i++)
+            in[i] = fxh_rand_in(k, i);
+        visit(in, ctx);
+    }
+}
+
+static const struct { const char *name; uint64_t hash; } fxh_pinned[] = {
+    { "noh_from_dots", 0xa146c73a868ee5adull },
+    { "loh_from_dots", 0xd5ab15bf73c12591ull },
+    { "fresnel_schlick", 0x8d3297d639d8cc3eull },
+    { "ggx_d", 0x795c9e15a3e89032ull },
+    { "smith_g1", 0xf569b41f61b818aeull },
+    { "smith_g2", 0x17ee3f96fa07a290ull },
+    { "smith_g2_uncorrelated", 0x426e611473d534a8ull },
+    { "smith_vis", 0xb30498f39c6c0132ull },
+    { "smith_g1_hammon", 0xdd33c33dac5fc05cull },
+    { "smith_g2_hammon", 0x43d3163a9e875ecfull },
+    { "smith_vis_hammon", 0x0fb5ec8fe077f4c9ull },
+    { "diffuse_hammon", 0xf6c3466f7a26795cull },
+    { "brdf_hammon", 0x92c13617ba9ce468ull },
+};
+#define FXH_N_PINNED (sizeof fxh_pinned / sizeof fxh_pinned[0])
+
+#endif
