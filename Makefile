@@ -46,7 +46,7 @@ $(BUILD)/libfacet.a: $(LIB_OBJ)
 	$(AR) rcs $@ $^
 
 $(BUILD)/libfacet.so: $(LIB_OBJ)
-	$(CC) $(CFLAGS) -shared -Wl,-soname,libfacet.so.0 -o $@ $^ -lm
+	$(CC) $(CFLAGS) -shared -Wl,--no-undefined -Wl,-soname,libfacet.so.0 -o $@ $^ -lm
 
 $(BUILD)/facet: $(CLI_OBJ) $(BUILD)/libfacet.a
 	$(CC) $(CFLAGS) -o $@ $^ -lm

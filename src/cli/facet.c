@@ -23,6 +23,9 @@ static void usage_main(FILE *f)
             "verbs:\n"
             "  list                 one line per kernel: name, then its inputs in order\n"
             "  eval KERNEL          evaluate KERNEL on samples read from stdin\n"
+            "                       (--format f32|fx, --port P)\n"
+            "  vectors KERNEL       golden input/output vectors of a fixed-point kernel\n"
+            "  bench [KERNEL]       cycles per sample of every kernel, port and format\n"
             "Run '%s <verb> --help' for a verb's options.\n",
             prog, prog);
 }
