@@ -19,7 +19,12 @@ int main(void)
         CHECK(0, "README.md not found (run from the source tree's top)");
         return th_done();
     }
+    int in_table = 0; /* only the "## Kernels (f32)" section */
     while (fgets(line, sizeof line, f)) {
+        if (!strncmp(line, "## ", 3))
+            in_table = !strncmp(line, "## Kernels (f32)", 16);
+        if (!in_table)
+            continue;
         for (i = 0; i < facet_kernel_count(); i++) {
             const facet_kernel *k = facet_kernel_at(i);
             char key[64], *p;
