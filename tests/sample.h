@@ -78,6 +78,18 @@ static float smp_unit(smp_rng *r)
     }
 }
 
+/* The low end of input i's domain (facet.h): -1 for L.V, alpha_min for
+ * alpha, FACET_COS_MIN for N.L / N.V of the two-cosine kernels, else 0;
+ * the high end is 1 for every input. */
+static inline float smp_domain_lo(const facet_kernel *k, int i)
+{
+    const char *n = k->inputs[i];
+    if (!strcmp(n, "lov")) return -1.0f;
+    if (!strcmp(n, "alpha")) return FACET_ALPHA_MIN;
+    if (k->n_inputs > 2 && (!strcmp(n, "nol") || !strcmp(n, "nov"))) return FACET_COS_MIN;
+    return 0.0f;
+}
+
 /* One in-domain sample for a kernel, by its input names. */
 static void smp_inputs(smp_rng *r, const facet_kernel *k, float *in)
 {

@@ -125,15 +125,9 @@ static const float edges[] = {
 static int in_domain(const facet_kernel *k, const float *in)
 {
     int i;
-    for (i = 0; i < k->n_inputs; i++) {
-        const char *n = k->inputs[i];
-        float lo = 0.0f;
-        if (!strcmp(n, "lov")) lo = -1.0f;
-        else if (!strcmp(n, "alpha")) lo = FACET_ALPHA_MIN;
-        else if (k->n_inputs > 2 && (!strcmp(n, "nol") || !strcmp(n, "nov"))) lo = FACET_COS_MIN;
-        if (!(in[i] >= lo && in[i] <= 1.0f))
+    for (i = 0; i < k->n_inputs; i++)
+        if (!(in[i] >= smp_domain_lo(k, i) && in[i] <= 1.0f))
             return 0;
-    }
     return 1;
 }
 
@@ -176,9 +170,8 @@ static void dense_grid(const facet_kernel *k, int n, set *st)
             else in[i] = (float)u;
         }
         for (i = 0; i < k->n_inputs; i++)
-            if (k->n_inputs > 2 && (!strcmp(k->inputs[i], "nol") || !strcmp(k->inputs[i], "nov")) &&
-                in[i] < FACET_COS_MIN)
-                in[i] = FACET_COS_MIN;
+            if (in[i] < smp_domain_lo(k, i))
+                in[i] = smp_domain_lo(k, i);
         set_add(st, k, in);
     }
 }

@@ -10,15 +10,6 @@
 #include "sample.h"
 #include "facet/oracle.h"
 
-static float lo_of(const facet_kernel *k, int i)
-{
-    const char *n = k->inputs[i];
-    if (!strcmp(n, "lov")) return -1.0f;
-    if (!strcmp(n, "alpha")) return FACET_ALPHA_MIN;
-    if (k->n_inputs > 2 && (!strcmp(n, "nol") || !strcmp(n, "nov"))) return FACET_COS_MIN;
-    return 0.0f;
-}
-
 static int same(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
 
 int main(void)
@@ -37,7 +28,7 @@ int main(void)
             for (pos = 0; pos < k->n_inputs; pos++)
                 for (b = 0; b < n_bad; b++) {
                     float in[FACET_MAX_INPUTS], ref_in[FACET_MAX_INPUTS], got, want;
-                    float lo = lo_of(k, pos), hi = 1.0f, v = bad[b];
+                    float lo = smp_domain_lo(k, pos), hi = 1.0f, v = bad[b];
                     smp_inputs(&rng, k, in);
                     memcpy(ref_in, in, sizeof in);
                     in[pos] = v;

@@ -32,15 +32,6 @@ static void run(const facet_kernel *k, float src[][MAXN], int first, int n, int 
         free(buf[i] - misalign);
 }
 
-static float lo_of(const facet_kernel *k, int i)
-{
-    const char *n = k->inputs[i];
-    if (!strcmp(n, "lov")) return -1.0f;
-    if (!strcmp(n, "alpha")) return FACET_ALPHA_MIN;
-    if (k->n_inputs > 2 && (!strcmp(n, "nol") || !strcmp(n, "nov"))) return FACET_COS_MIN;
-    return 0.0f;
-}
-
 static void test_port(const char *port, int lanes)
 {
     static float src[FACET_MAX_INPUTS][MAXN];
@@ -134,7 +125,7 @@ static void test_port(const char *port, int lanes)
                     src[pos][j] = bad[j % n_bad];
                 run(k, src, 0, 3 * lanes + 1, 0, out);
                 for (j = 0; j < 3 * lanes + 1; j++) {
-                    float v = src[pos][j], lo = lo_of(k, pos);
+                    float v = src[pos][j], lo = smp_domain_lo(k, pos);
                     if (!(out[j] == out[j]) || out[j] > FLT_MAX || out[j] < 0.0f || same(out[j], -0.0f))
                         bad_val++;
                     src[pos][j] = (v != v || v < lo) ? lo : v > 1.0f ? 1.0f : v;

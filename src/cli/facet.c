@@ -2,11 +2,11 @@
  *   facet list
  *   facet eval KERNEL [--format f32] [--port auto|scalar|sse2|avx2|neon]
  * Exit status: 0 success, 2 usage error or malformed input, 1 I/O error. */
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "facet.h"
+#include "cli.h"
 
 #define LINE_MAX_ 4096
 #define CHUNK 1024 /* samples per batch call */
@@ -85,27 +85,15 @@ static int cmd_list(int argc, char **argv)
     return 0;
 }
 
-/* Parses exactly n numbers from line; returns 0 or an error message. */
-static const char *parse_line(char *line, int n, float *in)
+/* Parses exactly n numbers from line into floats; NULL or the error. */
+static const char *parse_line(const char *line, int n, float *in)
 {
-    char *p = line, *end;
+    double v[FACET_MAX_INPUTS];
+    const char *err = facet_cli_parse_numbers(line, n, v);
     int i;
-    for (i = 0; i < n; i++) {
-        double v;
-        while (*p == ' ' || *p == '\t' || *p == '\r')
-            p++;
-        if (*p == '\0' || *p == '\n')
-            return "too few inputs";
-        errno = 0;
-        v = strtod(p, &end);
-        if (end == p || (*end && !strchr(" \t\r\n", *end)))
-            return "not a decimal number";
-        in[i] = (float)v;
-        p = end;
-    }
-    while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n')
-        p++;
-    return *p ? "too many inputs" : NULL;
+    for (i = 0; !err && i < n; i++)
+        in[i] = (float)v[i];
+    return err;
 }
 
 static int cmd_eval(int argc, char **argv)

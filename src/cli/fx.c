@@ -11,6 +11,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "facet/fx.h"
+#include "cli.h"
+
 
 #define LINE_MAX_ 4096
 
@@ -75,27 +77,15 @@ static void print_fixed(FILE *f, uint64_t raw, int frac)
     fputc('\n', f);
 }
 
-static const char *parse_line(char *line, int n, int32_t *in)
+static const char *parse_line(const char *line, int n, int32_t *in)
 {
-    char *p = line, *end;
+    double v[FACET_FX_MAX_INPUTS];
+    const char *err = facet_cli_parse_numbers(line, n, v);
     int i;
-    for (i = 0; i < n; i++) {
-        double v;
-        while (*p == ' ' || *p == '\t' || *p == '\r')
-            p++;
-        if (*p == '\0' || *p == '\n')
-            return "too few inputs";
-        errno = 0;
-        v = strtod(p, &end);
-        if (end == p || (*end && !strchr(" \t\r\n", *end)))
-            return "not a decimal number";
-        if (!to_q15(v, &in[i]))
+    for (i = 0; !err && i < n; i++)
+        if (!to_q15(v[i], &in[i]))
             return "not a finite number (fixed point has no NaN or infinity)";
-        p = end;
-    }
-    while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n')
-        p++;
-    return *p ? "too many inputs" : NULL;
+    return err;
 }
 
 /* argv[0] is "eval"; the f32 eval hands over when it sees --format fx */
