@@ -24,7 +24,7 @@ static void usage(FILE *f)
             "The clock is perf's core-cycle counter when the kernel allows it, otherwise\n"
             "the time-stamp counter in ticks (labelled so; est. cycles use a measured\n"
             "ticks-per-cycle ratio).\n"
-            "  --port P         scalar, sse2, avx2, neon, textbook, shader, shader_fm\n"
+            "  --port P         scalar, sse2, avx2, avx512, neon, textbook, shader, shader_fm\n"
             "  --format F       f32 or fx\n"
             "  --json           one JSON document on stdout\n"
             "  --samples N      samples per timed pass (default 1024, multiple of 8)\n"

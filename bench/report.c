@@ -835,6 +835,18 @@ static void section_targets(void)
         cells[3] = "this machine is not a Zen 3 (see clock)";
         trow(cells);
     }
+    for (ki = 0; ki < facet_kernel_count(); ki++) { /* issue 3: every AVX2 kernel >= 5x its scalar port */
+        const char *kn = facet_kernel_at(ki)->name;
+        const row *x = find_row(kn, "f32", "avx2", "batch"), *sc = find_row(kn, "f32", "scalar", "batch");
+        if (!x || !sc)
+            continue;
+        cells[0] = fmt(b[2], sizeof b[2], "AVX2 %s >= 5x its scalar port (batch)", kn);
+        cells[1] = fmt(b[3], sizeof b[3], "%.1fx (%.2f vs %.2f est. cycles/sample)", sc->r.thr.median / x->r.thr.median,
+                       est(sc->r.thr.median), est(x->r.thr.median));
+        cells[2] = sc->r.thr.median >= 5.0 * x->r.thr.median ? "yes" : "**no**";
+        cells[3] = "ratio within one run";
+        trow(cells);
+    }
     {
         double fx = armv("fx-mca", "brdf_hammon", "cortex-m4"), sf = armv("f32soft-mca", "brdf_hammon", "cortex-m4");
         double fxi = armv("fx-insns", "brdf_hammon", "cortex-m4"), sfi = armv("f32soft-insns", "brdf_hammon", "cortex-m4");
