@@ -29,7 +29,13 @@
 # mainline code run on the mps2-an386 Cortex-M4 model; our startup does
 # not fit the AN505 secure memory map).  Needs arm-none-eabi-gcc with
 # newlib, qemu-system-arm, and llvm-mca for the -mca lines.
+# `bench/cortexm.sh --profile [BUILD_DIR] [KERNEL...]`: the per-function
+# profile of the fixed-point kernels instead (bench/cortexm_prof.sh).
 set -u
+if [ "${1:-}" = --profile ]; then
+    shift
+    exec sh bench/cortexm_prof.sh "$@"
+fi
 build=${1:-build}
 tsv=${2:-$build/report/arm.tsv}
 dir=$build/bench/cortexm

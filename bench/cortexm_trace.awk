@@ -10,6 +10,8 @@
 # Prints per call "NAME INSNS M0CYCLES TAKEN" (TAKEN: branches, calls and
 # returns that changed the flow) and appends the executed
 # instruction texts of every call to DIR/NAME.s (for llvm-mca).
+# With -v pcs=1 the executed addresses (hex, one a line) also go to
+# DIR/NAME.pc (bench/cortexm_prof.sh's per-function profile).
 # M0CYCLES: the Cortex-M0 TRM timings (zero wait states, single-cycle
 # multiplier): 1 per instruction, loads/stores 2, LDM/STM/PUSH/POP 1+N,
 # POP with PC 3+N, branches 3 when taken (1 when not), BL 4, BX/BLX 3,
@@ -51,12 +53,14 @@ FILENAME == ARGV[2] { entry[hex($1)] = $2; next }
             cyc += m0cyc(text[last], pc != last + size[last])
             taken += pc != last + size[last]
             cnt++; print text[pc] >> (dir "/" name ".s"); last = pc
+            if (pcs) printf "%x\n", pc >> (dir "/" name ".pc")
             next
         }
     }
     if (!inside && (pc in entry) && prev != "") {
         inside = 1; name = entry[pc]; ret = prev + size[prev]; cnt = 1; cyc = 0; taken = 0; last = pc
         print text[pc] >> (dir "/" name ".s")
+        if (pcs) printf "%x\n", pc >> (dir "/" name ".pc")
     }
     prev = pc
 }

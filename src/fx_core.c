@@ -91,23 +91,39 @@ uint32_t facet_fx_rsqrt32(uint32_t x)
 
 /* floor(sqrt(x)): normalise x to [2^62, 2^64) by an even shift 2k,
  * g ~ t rsqrt(t) 2^16 from the top word t, scale back by k, then fix g
- * exactly with g^2 <= x < (g + 1)^2. */
-uint32_t facet_fx_isqrt64(uint64_t x)
+ * exactly with g^2 <= x < (g + 1)^2, stepping the square p = g^2 by
+ * additions ((g -+ 1)^2 = g^2 -+ 2g + 1: one multiply in all).  The
+ * remainder x - g^2 comes out with it (fx_isqrt64_rnd's rounding). */
+uint32_t facet_fx_isqrt64_rem(uint64_t x, uint64_t *rem)
 {
     int s;
     uint32_t t, g;
-    uint64_t xn, gg;
-    if (!x)
+    uint64_t xn, gg, p;
+    if (!x) {
+        *rem = 0;
         return 0;
+    }
     s = fx_clz64(x) & ~1;
     xn = fx_shl64(x, s);
     t = (uint32_t)(xn >> 32);                                  /* [2^30, 2^32) */
     gg = fx_mul64(t, facet_fx_rsqrt32(t)) >> 31;               /* sqrt(xn) ~ t 2^47/sqrt(t) / 2^31 */
     gg = fx_shr64(gg, s / 2);
     g = gg > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)gg;
-    while (fx_mul64(g, g) > x)
+    p = fx_mul64(g, g);
+    while (p > x) { /* g >= 1 here */
+        p -= ((uint64_t)g << 1) - 1u;
         g--;
-    while (g != 0xFFFFFFFFu && fx_mul64(g + 1u, g + 1u) <= x)
+    }
+    while (g != 0xFFFFFFFFu && x - p > (uint64_t)g << 1) { /* (g + 1)^2 <= x */
+        p += ((uint64_t)g << 1) + 1u;
         g++;
+    }
+    *rem = x - p;
     return g;
+}
+
+uint32_t facet_fx_isqrt64(uint64_t x)
+{
+    uint64_t rem;
+    return facet_fx_isqrt64_rem(x, &rem);
 }

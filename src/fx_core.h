@@ -1,7 +1,7 @@
 /* fx_core.h - integer primitives shared by the fixed-point kernels
  * (src/fx_*.c only; not installed).  Integer arithmetic only: no float, no
- * division instruction, no libgcc helper (so a freestanding RV32IMC or
- * ARMv6-M link needs nothing but this code).
+ * libgcc helper (so a freestanding RV32IMC or ARMv6-M link needs nothing but
+ * this code), a division instruction only where the core has one (fx_div64).
  *
  * Rounding rule, the only one used anywhere in the fx kernels:
  *   every value that loses bits is rounded to nearest, ties up (toward
@@ -114,60 +114,140 @@ uint32_t facet_fx_div2by1(uint32_t u1, uint32_t u0, uint32_t d, uint32_t v, uint
 /* floor(sqrt(x)), exact, any x. */
 uint32_t facet_fx_isqrt64(uint64_t x);
 
+/* floor(sqrt(x)) and the remainder x - g^2 in *rem (fx_core.c). */
+uint32_t facet_fx_isqrt64_rem(uint64_t x, uint64_t *rem);
+
 /* round(sqrt(x)), ties up (sqrt is never exactly k + 1/2 for integer x). */
 static inline uint64_t fx_isqrt64_rnd(uint64_t x)
 {
-    uint32_t g = facet_fx_isqrt64(x);
-    return (uint64_t)g + (x - fx_mul64(g, g) > g);
+    uint64_t rem;
+    uint32_t g = facet_fx_isqrt64_rem(x, &rem);
+    return (uint64_t)g + (rem > g);
 }
+
+/* ---- the exact 2-by-1 division the kernels use ---------------------------
+ * fx_div64(u1, u0, d, &r) = floor((u1 2^32 + u0) / d), r the remainder, for
+ * d in [2^31, 2^32) and u1 < d: the same exact quotient and remainder on
+ * every target, computed the cheapest way the core allows:
+ *   64-bit hosts (x86-64, aarch64)   the native 64-by-64 division
+ *   a 32-bit UDIV (Cortex-M3/M4/M7/M33: __ARM_FEATURE_IDIV)
+ *                                    fx_div64_udiv: schoolbook with two
+ *                                    16-bit quotient digits (Knuth's D,
+ *                                    Hacker's Delight divlu), each digit
+ *                                    from one UDIV and at most 2 corrections
+ *   otherwise (Cortex-M0, armv7-A without IDIV, RV32, FACET_FX_PORTABLE)
+ *                                    facet_fx_rcp32 + facet_fx_div2by1
+ * A quotient computed exactly has the same bits however it is computed;
+ * tests/test_fx_prims.c checks fx_div64_udiv (host UDIV) against 128-bit
+ * references and the pinned hashes run every variant. */
+static inline uint32_t fx_div64_udiv(uint32_t u1, uint32_t u0, uint32_t d, uint32_t *r)
+{
+    uint32_t dh = d >> 16, dl = d & 0xFFFFu, n1 = u0 >> 16, n0 = u0 & 0xFFFFu;
+    uint32_t q1, q0, rhat, u21;
+    q1 = u1 / dh; /* u1 < d: the true digit is < 2^16, q1 exceeds it by <= 2 */
+    rhat = u1 - q1 * dh;
+    while (q1 > 0xFFFFu || q1 * dl > ((rhat << 16) | n1)) {
+        q1--;
+        rhat += dh;
+        if (rhat > 0xFFFFu)
+            break;
+    }
+    u21 = ((u1 << 16) | n1) - q1 * d; /* the partial remainder, < d (mod 2^32) */
+    q0 = u21 / dh;
+    rhat = u21 - q0 * dh;
+    while (q0 > 0xFFFFu || q0 * dl > ((rhat << 16) | n0)) {
+        q0--;
+        rhat += dh;
+        if (rhat > 0xFFFFu)
+            break;
+    }
+    *r = ((u21 << 16) | n0) - q0 * d;
+    return (q1 << 16) | q0;
+}
+
+#if !defined(FACET_FX_PORTABLE) && (defined(__x86_64__) || defined(__aarch64__))
+static inline uint32_t fx_div64(uint32_t u1, uint32_t u0, uint32_t d, uint32_t *r)
+{
+    uint64_t u = ((uint64_t)u1 << 32) | u0;
+    *r = (uint32_t)(u % d);
+    return (uint32_t)(u / d);
+}
+#elif !defined(FACET_FX_PORTABLE) && defined(__ARM_FEATURE_IDIV)
+#define fx_div64 fx_div64_udiv
+#else
+static inline uint32_t fx_div64(uint32_t u1, uint32_t u0, uint32_t d, uint32_t *r)
+{
+    return facet_fx_div2by1(u1, u0, d, facet_fx_rcp32(d), r);
+}
+#endif
 
 /* ---- fxf: m 2^e --------------------------------------------------------- */
 typedef struct { uint32_t m; int32_t e; } fxf;
 
-/* x 2^e, rounded to 32 significant bits */
+/* round(x / 2^32) or round(x / 2^31) of x = hi 2^32 + lo in [2^62, 2^64)
+ * (whichever keeps 32 bits) times 2^e, normalised; 32-bit operations only */
+static inline fxf fxf_from_w(uint32_t hi, uint32_t lo, int32_t e)
+{
+    fxf r;
+    uint32_t m, rb;
+    if (hi >> 31) {
+        m = hi;
+        rb = lo >> 31;
+        r.e = e + 32;
+    } else {
+        m = (hi << 1) | (lo >> 31);
+        rb = (lo >> 30) & 1u;
+        r.e = e + 31;
+    }
+    m += rb;
+    if (!m) { /* rounded up to 2^32 */
+        m = 0x80000000u;
+        r.e++;
+    }
+    r.m = m;
+    return r;
+}
+
+/* x 2^e, rounded to 32 significant bits (32-bit operations: no 64-bit
+ * variable shift, and a 32-bit x, the usual case, is one clz and a shift) */
 static inline fxf fxf_u64(uint64_t x, int32_t e)
 {
     fxf r;
+    uint32_t hi = (uint32_t)(x >> 32), lo = (uint32_t)x, m, rb;
     int lz;
-    if (!x) {
-        r.m = 0;
-        r.e = 0;
+    if (!hi) {
+        if (!lo) {
+            r.m = 0;
+            r.e = 0;
+            return r;
+        }
+        lz = fx_clz32(lo);
+        r.m = lo << lz;
+        r.e = e - lz;
         return r;
     }
-    lz = fx_clz64(x);
-    if (lz >= 32) {
-        r.m = (uint32_t)x << (lz - 32);
-        r.e = e - (lz - 32);
+    lz = fx_clz32(hi); /* round(x / 2^(32 - lz)) */
+    if (lz == 0) {
+        m = hi;
+        rb = lo >> 31;
     } else {
-        uint64_t m = fx_rshr64(x, 32 - lz);
-        r.e = e + (32 - lz);
-        if (m >> 32) { /* rounded up to 2^32 */
-            m >>= 1;
-            r.e++;
-        }
-        r.m = (uint32_t)m;
+        m = (hi << lz) | (lo >> (32 - lz));
+        rb = (lo >> (31 - lz)) & 1u;
     }
+    r.e = e + (32 - lz);
+    m += rb;
+    if (!m) { /* rounded up to 2^32 */
+        m = 0x80000000u;
+        r.e++;
+    }
+    r.m = m;
     return r;
 }
 
 /* round(p / 2^32) of a product p in [2^62, 2^64) as a normalised fxf */
 static inline fxf fxf_from_prod(uint64_t p, int32_t e)
 {
-    fxf r;
-    uint64_t m;
-    if (p >> 63) {
-        m = (p >> 32) + ((p >> 31) & 1u);
-        r.e = e + 32;
-    } else {
-        m = (p >> 31) + ((p >> 30) & 1u);
-        r.e = e + 31;
-    }
-    if (m >> 32) {
-        m >>= 1;
-        r.e++;
-    }
-    r.m = (uint32_t)m;
-    return r;
+    return fxf_from_w((uint32_t)(p >> 32), (uint32_t)p, e);
 }
 
 static inline fxf fxf_mul(fxf a, fxf b)
@@ -184,7 +264,7 @@ static inline fxf fxf_mul(fxf a, fxf b)
 static inline fxf fxf_add(fxf a, fxf b)
 {
     int32_t d;
-    uint64_t s;
+    uint32_t hi, lo, bhi, blo;
     if (!b.m)
         return a;
     if (!a.m)
@@ -197,10 +277,26 @@ static inline fxf fxf_add(fxf a, fxf b)
     d = a.e - b.e;
     if (d > 32)
         return a; /* b < half an ulp of a */
-    /* a.m 2^31 + b.m 2^(31 - d) < 2^64; the bit b loses at d = 32 is below
-     * the rounding position and the truncation is monotone */
-    s = ((uint64_t)a.m << 31) + (d == 32 ? (uint64_t)(b.m >> 1) : fx_shl64(b.m, 31 - d));
-    return fxf_u64(s, a.e - 31);
+    /* s = a.m 2^31 + b.m 2^(31 - d) in [2^62, 2^64) (a.m >= 2^31), as two
+     * words; the bit b loses at d = 32 is below the rounding position and
+     * the truncation is monotone.  s has its top bit at 62 or 63, so its
+     * rounding to 32 bits is fxf_from_w's. */
+    if (d == 32) {
+        bhi = 0;
+        blo = b.m >> 1;
+    } else if (d == 0) {
+        bhi = b.m >> 1;
+        blo = b.m << 31;
+    } else if (d == 31) {
+        bhi = 0;
+        blo = b.m;
+    } else { /* 1 <= d <= 30 */
+        bhi = b.m >> (d + 1);
+        blo = b.m << (31 - d);
+    }
+    lo = (a.m << 31) + blo;
+    hi = (a.m >> 1) + bhi + (lo < blo);
+    return fxf_from_w(hi, lo, a.e - 31);
 }
 
 /* 1 / a, a > 0: (2^32 + v) / 2^64 rounded to 32 bits */
@@ -222,11 +318,10 @@ static inline fxf fxf_rcp(fxf a)
 static inline fxf fxf_div(fxf a, fxf b)
 {
     fxf r;
-    uint32_t v, q, rem;
+    uint32_t q, rem;
     if (!a.m)
         return a;
-    v = facet_fx_rcp32(b.m);
-    q = facet_fx_div2by1(a.m >> 1, a.m << 31, b.m, v, &rem); /* a.m 2^31 / b.m */
+    q = fx_div64(a.m >> 1, a.m << 31, b.m, &rem); /* a.m 2^31 / b.m */
     r.e = a.e - b.e - 31;
     if (q >> 31) {
         uint64_t m = (uint64_t)q + (rem >= b.m - rem);
@@ -329,7 +424,7 @@ static inline uint64_t fxf_fixed(fxf a, int32_t f, uint64_t max)
 /* round(a / b 2^f) with a single rounding, saturated at max (< 2^31 + 2^30). */
 static inline uint32_t fxf_div_fixed(fxf a, fxf b, int32_t f, uint32_t max)
 {
-    uint32_t v, q, rem, raw;
+    uint32_t q, rem, raw;
     int32_t k;
     if (!a.m)
         return 0;
@@ -339,8 +434,7 @@ static inline uint32_t fxf_div_fixed(fxf a, fxf b, int32_t f, uint32_t max)
         return max; /* >= 2^31 */
     if (k > 32)
         return 0;   /* < 2^32 2^-33 = 1/2 */
-    v = facet_fx_rcp32(b.m);
-    q = facet_fx_div2by1(a.m >> 1, a.m << 31, b.m, v, &rem);
+    q = fx_div64(a.m >> 1, a.m << 31, b.m, &rem);
     if (k == 0) {
         if (q == 0xFFFFFFFFu)
             return max;

@@ -114,7 +114,7 @@ uint32_t facet_ggx_d_fx(int32_t noh, int32_t alpha)
         int s = fx_clz32(a2);
         uint64_t u = fx_shr64(INV_PI_2_64, 21 - s);
         uint32_t dd = a2 << s, rem, q;
-        q = facet_fx_div2by1((uint32_t)(u >> 32), (uint32_t)u, dd, facet_fx_rcp32(dd), &rem);
+        q = fx_div64((uint32_t)(u >> 32), (uint32_t)u, dd, &rem);
         return q + (rem >= dd - rem); /* q < 2^31.4: no wrap */
     }
     d60 = ((uint64_t)((ONE - n) * (ONE + n)) << 30) + fx_mul64(n * a, n * a);

@@ -66,6 +66,33 @@ int main(void)
         bad += q != (uint32_t)(((unsigned __int128)u) / d) || rem != (uint32_t)(u % d);
     }
     CHECK(bad == 0, "div2by1 wrong in %ld cases", bad);
+
+    /* fx_div64_udiv (the Cortex-M3/M4 path, built here with the host's
+     * 32-bit division) and fx_div64 (this host's path): exact quotient and
+     * remainder, including the digit-correction corners (u1 = d - 1,
+     * d = 2^31, d with a small or all-ones low half) */
+    for (bad = 0, i = 0; i < n; i++) {
+        uint32_t d = (uint32_t)fx_next(&r) | 0x80000000u, u1 = (uint32_t)fx_next(&r), u0 = (uint32_t)fx_next(&r);
+        uint32_t rem, rem2, q, q2;
+        uint64_t u;
+        switch (i % 7) {
+        case 1: d = 0x80000000u + (uint32_t)(fx_next(&r) % 1024); break;
+        case 2: d = (d & 0xFFFF0000u) | 0xFFFFu; break;
+        case 3: d = d & 0xFFFF0000u; break;
+        case 4: d = 0xFFFFFFFFu - (uint32_t)(fx_next(&r) % 1024); break;
+        default: break;
+        }
+        u1 = (uint32_t)(u1 % d);
+        if (i % 5 == 0)
+            u1 = d - 1;
+        if (i % 11 == 0)
+            u0 = i & 1 ? 0xFFFFFFFFu : 0;
+        u = ((uint64_t)u1 << 32) | u0;
+        q = fx_div64_udiv(u1, u0, d, &rem);
+        q2 = fx_div64(u1, u0, d, &rem2);
+        bad += q != (uint32_t)(((unsigned __int128)u) / d) || rem != (uint32_t)(u % d) || q2 != q || rem2 != rem;
+    }
+    CHECK(bad == 0, "fx_div64_udiv / fx_div64 wrong in %ld cases", bad);
 #else
     SKIP("no 128-bit integer type for the rcp/div references");
 #endif
@@ -81,6 +108,10 @@ int main(void)
             x = 0xFFFFFFFE00000001ull; /* (2^32 - 1)^2 */
         g = facet_fx_isqrt64(x);
         bad += g * g > x || (g < 0xFFFFFFFFu && (g + 1) * (g + 1) <= x);
+        {
+            uint64_t rem;
+            bad += facet_fx_isqrt64_rem(x, &rem) != g || rem != x - g * g;
+        }
     }
     CHECK(bad == 0, "isqrt64 wrong in %ld cases", bad);
 

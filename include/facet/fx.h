@@ -35,13 +35,16 @@
  * before that rounding; see src/fx_core.h.  No value is an error marker:
  * every raw output is the rounded (or saturated) function value.
  *
- * Arithmetic: uint32/uint64 only (no signed overflow), no float, no divide
- * instruction, no libgcc helper; 32x32->64 products are one UMULL where the
- * core has it and four 16x16 MULS on ARMv6-M (exact either way).  Shared
- * primitives (src/fx_core.c): one reciprocal (facet_fx_rcp32: 32-entry
- * 16-bit seed table, 3 Newton steps, exact fix-up), one rsqrt
+ * Arithmetic: uint32/uint64 only (no signed overflow), no float, no libgcc
+ * helper, no dependence on a hardware divider; 32x32->64 products are one
+ * UMULL where the core has it and four 16x16 MULS on ARMv6-M (exact either
+ * way).  Shared primitives (src/fx_core.c): one reciprocal (facet_fx_rcp32:
+ * 32-entry 16-bit seed table, 3 Newton steps, exact fix-up), one rsqrt
  * (facet_fx_rsqrt32: 24-entry table, 3 Newton steps) giving an exact integer
- * square root, the exact 2-by-1 division of Moller-Granlund.
+ * square root, the exact 2-by-1 division of Moller-Granlund.  Every
+ * quotient is exact, so a core with a divide instruction may compute it
+ * with that instead (Cortex-M3/M4/M7/M33: two 32-bit UDIV digits; 64-bit
+ * hosts: the native division) with the same bits (src/fx_core.h fx_div64).
  *
  * Per-kernel contracts (formula, intermediates, overflow argument, measured
  * error, cost) are next to each function in src/fx_kernels.c and in the
