@@ -105,6 +105,17 @@ uint32_t facet_fx_isqrt64_rem(uint64_t x, uint64_t *rem)
     }
     s = fx_clz64(x) & ~1;
     xn = fx_shl64(x, s);
+#ifdef FX_HAVE_UDIV32
+    /* a divide instruction: the exact root of xn by two 16-bit digits,
+     * scaled back (floor(floor(sqrt(xn)) / 2^k) = floor(sqrt(x))) */
+    (void)t;
+    (void)gg;
+    (void)p;
+    g = fx_sqrtrem64n_udiv((uint32_t)(xn >> 32), (uint32_t)xn, rem, RSQRT_SEED) >> (s / 2);
+    if (s)
+        *rem = x - fx_mul64(g, g);
+    return g;
+#else
     t = (uint32_t)(xn >> 32);                                  /* [2^30, 2^32) */
     gg = fx_mul64(t, facet_fx_rsqrt32(t)) >> 31;               /* sqrt(xn) ~ t 2^47/sqrt(t) / 2^31 */
     gg = fx_shr64(gg, s / 2);
@@ -120,6 +131,7 @@ uint32_t facet_fx_isqrt64_rem(uint64_t x, uint64_t *rem)
     }
     *rem = x - p;
     return g;
+#endif
 }
 
 uint32_t facet_fx_isqrt64(uint64_t x)

@@ -165,6 +165,44 @@ static inline uint32_t fx_div64_udiv(uint32_t u1, uint32_t u0, uint32_t d, uint3
     return (q1 << 16) | q0;
 }
 
+/* floor(sqrt(x)) and x - g^2 (*rem) for x = hi 2^32 + lo in [2^62, 2^64)
+ * with 32-bit divisions: the 16-bit root s1 of hi (seed from the rsqrt
+ * table, two integer Newton steps, which approach floor(sqrt(hi)) from
+ * above, then a final decrement check), then one more 16-bit digit by
+ * Zimmermann's Karatsuba square root step: q = (r1 2^16 + x1) / (2 s1),
+ * S = s1 2^16 + q, R = u 2^16 + x0 - q^2, and one correction if R < 0
+ * (exact for hi >= 2^30).  Checked against facet_fx_isqrt64's reference
+ * path in tests/test_fx_prims.c. */
+static inline uint32_t fx_sqrtrem64n_udiv(uint32_t hi, uint32_t lo, uint64_t *rem, const uint16_t *seed)
+{
+    uint32_t s1, r1, h, q, u;
+    uint64_t S;
+    int64_t R;
+    s1 = ((hi >> 16) * seed[(hi >> 27) - 8]) >> 15; /* ~ sqrt(hi), 2^-6.5 relative */
+    s1 = (s1 + hi / s1) >> 1;                        /* >= floor(sqrt(hi)) */
+    s1 = (s1 + hi / s1) >> 1;
+    if (s1 > 0xFFFFu)
+        s1 = 0xFFFFu; /* floor(sqrt(hi)) <= 2^16 - 1 */
+    while (s1 * s1 > hi)
+        s1--;
+    r1 = hi - s1 * s1; /* <= 2 s1 */
+    h = (r1 << 15) | (lo >> 17); /* floor((r1 2^16 + x1) / 2) < 2^32 */
+    q = h / s1;
+    u = ((h - q * s1) << 1) | ((lo >> 16) & 1u); /* (r1 2^16 + x1) mod 2 s1 */
+    S = ((uint64_t)s1 << 16) + q;
+    R = (int64_t)(((uint64_t)u << 16) | (lo & 0xFFFFu)) - (int64_t)((uint64_t)q * q);
+    if (R < 0) {
+        R += (int64_t)(S << 1) - 1;
+        S--;
+    }
+    *rem = (uint64_t)R;
+    return (uint32_t)S;
+}
+
+#if !defined(FACET_FX_PORTABLE) && (defined(__x86_64__) || defined(__aarch64__) || defined(__ARM_FEATURE_IDIV))
+#define FX_HAVE_UDIV32 1 /* a 32-bit divide instruction (fx_core.c's isqrt) */
+#endif
+
 #if !defined(FACET_FX_PORTABLE) && (defined(__x86_64__) || defined(__aarch64__))
 static inline uint32_t fx_div64(uint32_t u1, uint32_t u0, uint32_t d, uint32_t *r)
 {

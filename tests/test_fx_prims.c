@@ -115,6 +115,22 @@ int main(void)
     }
     CHECK(bad == 0, "isqrt64 wrong in %ld cases", bad);
 
+    /* isqrt64 at and next to perfect squares (g^2 - 1, g^2, g^2 + 2g: the
+     * digit-correction corners of the divide-based root) and every
+     * normalised top-word range */
+    for (bad = 0, i = 0; i < n; i++) {
+        uint64_t g = (uint32_t)fx_next(&r) >> (fx_next(&r) % 32), x, want, rem;
+        int k = (int)(i % 3);
+        if (i < 4096)
+            g = 0xFFFFFFFFu - (uint64_t)i;
+        if (g == 0)
+            g = 1;
+        x = k == 0 ? g * g - 1 : k == 1 ? g * g : g * g + 2 * g;
+        want = k == 0 ? g - 1 : g;
+        bad += facet_fx_isqrt64_rem(x, &rem) != want || rem != x - want * want;
+    }
+    CHECK(bad == 0, "isqrt64 wrong next to perfect squares in %ld cases", bad);
+
     /* rsqrt32 accuracy: the documented 2^-29 relative bound, every seed bin */
     {
         double worst = 0;
