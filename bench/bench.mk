@@ -13,7 +13,8 @@ BENCH_DEPS    = $(HEADERS) $(wildcard bench/*.h) tests/sample.h
 BENCH_CORE := cycles bench loops_scalar loops_call loops_sse2 loops_avx2 loops_neon \
               loops_batch loops_tables peers peers_textbook peers_shader peers_shader_fm fxhook
 BENCH_CORE_OBJ := $(BENCH_CORE:%=$(BUILD)/bench/%.o)
-BENCH_RASTER_OBJ := $(BUILD)/bench/raster.o $(BUILD)/bench/raster_avx2.o $(BUILD)/bench/raster_sse2.o
+BENCH_RASTER_OBJ := $(BUILD)/bench/raster.o $(BUILD)/bench/raster_avx2.o $(BUILD)/bench/raster_sse2.o \
+                    $(BUILD)/bench/raster_neon.o
 BENCH_REPORT_OBJ := $(BUILD)/bench/png.o $(BENCH_RASTER_OBJ) \
                     $(BUILD)/bench/pictures.o
 
@@ -31,7 +32,12 @@ ifneq ($(BENCH_X86),)
 $(BUILD)/bench/loops_avx2.o $(BUILD)/bench/raster_avx2.o: BENCH_ISA = -mavx2 -mfma
 $(BUILD)/bench/loops_sse2.o $(BUILD)/bench/raster_sse2.o: BENCH_ISA = -msse2
 endif
-$(BUILD)/bench/loops_avx2.o $(BUILD)/bench/loops_sse2.o $(BUILD)/bench/raster_avx2.o $(BUILD)/bench/raster_sse2.o: $(BUILD)/bench/%.o: bench/%.c $(BENCH_DEPS)
+# armv7: NEON objects alone get the NEON flags (they check HWCAP at run time)
+ifneq ($(filter arm%,$(BENCH_TARGET)),)
+$(BUILD)/bench/loops_neon.o $(BUILD)/bench/raster_neon.o: BENCH_ISA = -mfpu=neon-vfpv4 -mfloat-abi=hard
+endif
+$(BUILD)/bench/loops_avx2.o $(BUILD)/bench/loops_sse2.o $(BUILD)/bench/raster_avx2.o $(BUILD)/bench/raster_sse2.o \
+$(BUILD)/bench/loops_neon.o $(BUILD)/bench/raster_neon.o: $(BUILD)/bench/%.o: bench/%.c $(BENCH_DEPS)
 	@mkdir -p $(dir $@)
 	$(CC) $(BENCH_FLAGS) $(BENCH_ISA) -c $< -o $@
 

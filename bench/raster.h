@@ -12,7 +12,8 @@
  * so the images differ only by the BRDF arithmetic.  Paths:
  *   scalar   facet_brdf_hammon_f32_scalar per pixel, light and channel
  *   avx2     facet_brdf_hammon_f32_avx2, 8 pixels per call (raster_avx2.c)
- *   sse2     facet_brdf_hammon_f32_sse2, 4 pixels per call (raster_avx2.c)
+ *   sse2     facet_brdf_hammon_f32_sse2, 4 pixels per call (raster_sse2.c)
+ *   neon     facet_brdf_hammon_f32_neon, 4 pixels per call (raster_neon.c)
  *   batch    deferred: the dots of all pixels for a light into arrays, one
  *            facet_brdf_hammon_f32_batch call per light and channel
  *   fx       facet_brdf_hammon_fx per pixel, light and channel: the float
@@ -54,6 +55,7 @@ void rs_shade_batch(rs_gbuf *g);
 void rs_shade_oracle(rs_gbuf *g);
 int rs_shade_avx2(rs_gbuf *g);    /* 0: not available on this CPU/build */
 int rs_shade_sse2(rs_gbuf *g);
+int rs_shade_neon(rs_gbuf *g); /* raster_neon.c: 4 px per call, 0 where NEON is not here */
 int rs_shade_fx(rs_gbuf *g);      /* facet/fx.h (always 1) */
 
 /* Tone map (exposure, clamp) and sRGB-encode g->out into rgb (w*h*3). */

@@ -618,6 +618,7 @@ static int shade(rs_gbuf *g, int path)
     case 1: return rs_shade_avx2(g);
     case 2: return rs_shade_sse2(g);
     case 3: rs_shade_batch(g); return 1;
+    case 4: return rs_shade_neon(g);
     default: return rs_shade_fx(g);
     }
 }
@@ -634,10 +635,10 @@ static double raster_avx2_per_eval = -1, raster_batch_per_eval = -1;
 
 static void section_raster(void)
 {
-    static const char *names[5] = { "scalar inline", "AVX2 inline (8 px)", "SSE2 inline (4 px)",
-                                    "batch (deferred)", "fixed point" };
-    static const char *files[5] = { "raster_scalar.png", "raster_avx2.png", "raster_sse2.png",
-                                    "raster_batch.png", "raster_fx.png" };
+    static const char *names[6] = { "scalar inline", "AVX2 inline (8 px)", "SSE2 inline (4 px)",
+                                    "batch (deferred)", "NEON inline (4 px)", "fixed point" };
+    static const char *files[6] = { "raster_scalar.png", "raster_avx2.png", "raster_sse2.png",
+                                    "raster_batch.png", "raster_neon.png", "raster_fx.png" };
     int W = quick ? 96 : 480, H = quick ? 64 : 320, p;
     rs_gbuf *g;
     unsigned char *ref, *img;
@@ -659,7 +660,7 @@ static void section_raster(void)
          "Difference: 8-bit sRGB against the same frame shaded by the double oracle, over shaded pixels.",
          W, H, g->triangles, g->n, g->n_lights, 3 * g->n_lights);
     thead(7, "path", "ticks/pixel", "est. cyc/pixel", "est. cyc/BRDF eval", "spread", "max diff", "mean diff");
-    for (p = 0; p < 5; p++) {
+    for (p = 0; p < 6; p++) {
         shade_ctx c;
         cyc_stat s;
         long reps;

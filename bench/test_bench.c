@@ -279,6 +279,7 @@ static void test_raster(void)
     PATH("batch", (rs_shade_batch(g), 1));
     PATH("avx2", rs_shade_avx2(g));
     PATH("sse2", rs_shade_sse2(g));
+    PATH("neon", rs_shade_neon(g));
     PATH_TOL("fx", rs_shade_fx(g), 4);
     free(ref);
     free(img);
