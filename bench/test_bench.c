@@ -240,6 +240,19 @@ static void test_png(void)
     }
 }
 
+/* SIMD paths exist only for their own architecture; elsewhere they are not
+ * skipped checks, they are not checks at all */
+static int applies(const char *path)
+{
+#if defined(__x86_64__) || defined(__i386__)
+    return strcmp(path, "neon") != 0;
+#elif defined(__aarch64__) || defined(__arm__)
+    return strcmp(path, "avx2") != 0 && strcmp(path, "sse2") != 0;
+#else
+    return strcmp(path, "neon") && strcmp(path, "avx2") && strcmp(path, "sse2");
+#endif
+}
+
 static void test_raster(void)
 {
     rs_gbuf *g = rs_render(64, 64);
@@ -271,8 +284,8 @@ static void test_raster(void)
             rs_diff(g, ref, img, &maxd, &meand);                                           \
             CHECK(maxd <= (tol) && meand < 0.01, "raster %s vs oracle: max %d, mean %.4f", \
                   name, maxd, meand);                                                      \
-        } else {                                                                           \
-            SKIP("raster %s: not available here", name);                                   \
+        } else if (applies(name)) {                                                        \
+            SKIP("raster %s: this CPU cannot run it", name);                               \
         }                                                                                  \
     } while (0)
     PATH("scalar", (rs_shade_scalar(g), 1));
