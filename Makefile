@@ -53,7 +53,7 @@ $(BUILD)/facet: $(CLI_OBJ) $(BUILD)/libfacet.a
 
 $(BUILD)/tests/%: tests/%.c tests/harness.h tests/sample.h $(BUILD)/libfacet.a
 	@mkdir -p $(dir $@)
-	$(CC) $(BASEFLAGS) -D_DEFAULT_SOURCE -o $@ $< $(BUILD)/libfacet.a -lm
+	$(CC) $(BASEFLAGS) -D_DEFAULT_SOURCE -o $@ $< $(BUILD)/libfacet.a -lm $(if $(findstring test_threads,$@),-pthread)
 
 tests: $(TEST_BIN) $(BUILD)/facet $(EXTRA_TESTS)
 
