@@ -351,10 +351,15 @@ void rs_shade_scalar(rs_gbuf *g)
         float acc[3] = { 0, 0, 0 };
         for (l = 0; l < g->n_lights; l++) {
             float nol, nov, lov, sc;
+            float f0[3], alb[3], b[3];
             geom(g, i, l, &nol, &nov, &lov, &sc);
+            for (c = 0; c < 3; c++) {
+                f0[c] = g->f0[c][i];
+                alb[c] = g->alb[c][i];
+            }
+            facet_brdf_hammon_rgb_f32_scalar(b, nol, nov, lov, g->alpha[i], f0, alb);
             for (c = 0; c < 3; c++)
-                acc[c] += facet_brdf_hammon_f32_scalar(nol, nov, lov, g->alpha[i], g->f0[c][i],
-                                                       g->alb[c][i]) * sc * g->light[l].e[c];
+                acc[c] += b[c] * sc * g->light[l].e[c];
         }
         for (c = 0; c < 3; c++)
             g->out[c][i] = acc[c];

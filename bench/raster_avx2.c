@@ -29,7 +29,7 @@ int rs_shade_avx2(rs_gbuf *g)
 #define DIV _mm256_div_ps
 #define SQRT _mm256_sqrt_ps
 #define MAX _mm256_max_ps
-#define BRDF facet_brdf_hammon_f32_avx2
+#define BRDF_RGB facet_brdf_hammon_rgb_f32_avx2
 #define SHADE_FN static int shade
 #include "raster_simd_body.h"
 #else

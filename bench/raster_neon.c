@@ -42,7 +42,7 @@ int rs_shade_neon(rs_gbuf *g)
 #define DIV div_
 #define SQRT sqrt_
 #define MAX vmaxq_f32
-#define BRDF facet_brdf_hammon_f32_neon
+#define BRDF_RGB facet_brdf_hammon_rgb_f32_neon
 #define SHADE_FN static int shade
 #include "raster_simd_body.h"
 #else

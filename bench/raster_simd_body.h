@@ -1,6 +1,6 @@
 /* raster_simd_body.h - the SIMD-inline shading path of the rasterizer,
  * W pixels per kernel call.  Included by raster_avx2.c / raster_sse2.c with
- * V, W, LD, ST, SET1, ADD, SUB, MUL, DIV, SQRT, MAX, BRDF, SHADE_FN defined.
+ * V, W, LD, ST, SET1, ADD, SUB, MUL, DIV, SQRT, MAX, BRDF_RGB, SHADE_FN defined.
  * Same lighting as rs_shade_scalar (raster.c), vectorised across pixels. */
 SHADE_FN(rs_gbuf *g)
 {
@@ -37,9 +37,16 @@ SHADE_FN(rs_gbuf *g)
             nov = ADD(ADD(MUL(nx, vx), MUL(ny, vy)), MUL(nz, vz));
             lov = ADD(ADD(MUL(dx, vx), MUL(dy, vy)), MUL(dz, vz));
             sc = MUL(MAX(nol, zero), att);
-            for (c = 0; c < 3; c++) {
-                V b = BRDF(nol, nov, lov, a, LD(g->f0[c] + i), LD(g->alb[c] + i));
-                acc[c] = ADD(acc[c], MUL(MUL(b, sc), SET1(L->e[c])));
+            {
+                /* the RGB kernel: geometry once, three channels */
+                V f0v[3], albv[3], b[3];
+                for (c = 0; c < 3; c++) {
+                    f0v[c] = LD(g->f0[c] + i);
+                    albv[c] = LD(g->alb[c] + i);
+                }
+                BRDF_RGB(b, nol, nov, lov, a, f0v, albv);
+                for (c = 0; c < 3; c++)
+                    acc[c] = ADD(acc[c], MUL(MUL(b[c], sc), SET1(L->e[c])));
             }
         }
         for (c = 0; c < 3; c++)

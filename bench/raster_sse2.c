@@ -21,7 +21,7 @@
 #define DIV _mm_div_ps
 #define SQRT _mm_sqrt_ps
 #define MAX _mm_max_ps
-#define BRDF facet_brdf_hammon_f32_sse2
+#define BRDF_RGB facet_brdf_hammon_rgb_f32_sse2
 #define SHADE_FN int rs_shade_sse2
 #include "raster_simd_body.h"
 #else

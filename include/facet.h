@@ -178,9 +178,11 @@ float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, flo
 float facet_brdf_hammon_f32(float nol, float nov, float lov, float alpha,
                             float f0, float albedo);
 
-/* brdf_hammon for an RGB f0 and albedo, sharing the geometry:
- * out[c] = facet_brdf_hammon_f32(nol, nov, lov, alpha, f0[c], albedo[c]),
- * to within the same bound. */
+/* brdf_hammon for an RGB f0 and albedo, the geometry (D, Vis, 1 - L.H, the
+ * diffuse shape) computed once: out[c] equals
+ * facet_brdf_hammon_f32(nol, nov, lov, alpha, f0[c], albedo[c]) bit for bit.
+ * Every port header has the same as facet_brdf_hammon_rgb_f32_<port>(out[3],
+ * ..., const V f0[3], const V albedo[3]) on its vector type. */
 void facet_brdf_hammon_rgb_f32(float out[3], float nol, float nov, float lov,
                                float alpha, const float f0[3], const float albedo[3]);
 

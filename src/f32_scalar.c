@@ -35,7 +35,5 @@ float facet_lambert_f32(float albedo)
 void facet_brdf_hammon_rgb_f32(float out[3], float nol, float nov, float lov,
                                float alpha, const float f0[3], const float albedo[3])
 {
-    int c;
-    for (c = 0; c < 3; c++)
-        out[c] = facet_brdf_hammon_f32_scalar(nol, nov, lov, alpha, f0[c], albedo[c]);
+    facet_brdf_hammon_rgb_f32_scalar(out, nol, nov, lov, alpha, f0, albedo);
 }

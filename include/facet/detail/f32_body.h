@@ -210,15 +210,20 @@ FACET_INLINE V_ FACET_K(smith_vis_hammon)(V_ nol, V_ nov, V_ alpha)
  *   pi single = (1 - alpha) smooth + alpha rough,  pi multi = 0.1159 pi alpha
  *   pi diffuse = albedo (pi single + albedo pi multi)
  * The caller applies the 1/pi (brdf_hammon folds it with the specular). */
-FACET_INLINE V_ FACET_K(x_diffuse_pi)(V_ nl, V_ nv, V_ t, V_ h, V_ a, V_ alb)
+FACET_INLINE V_ FACET_K(x_diffuse_single)(V_ nl, V_ nv, V_ t, V_ h, V_ a, V_ *multi)
 {
     V_ rough = MUL_(MUL_(t, FNMA_(C_(0.1f), t, C_(0.45f))), ADD_(C_(1.0f), h));
     /* 1 - alpha is exact for alpha >= 1/2; the product of the two powers is
      * formed first so that swapping N.L and N.V gives the same bits */
     V_ c = MUL_(C_(1.05f), SUB_(C_(1.0f), a));
     V_ smooth = MUL_(c, MUL_(FACET_K(x_one_minus_pow5)(nl), FACET_K(x_one_minus_pow5)(nv)));
-    V_ single = FMA_(a, rough, smooth);
-    V_ multi = MUL_(C_(0.364110589f), a); /* 0.1159 pi */
+    *multi = MUL_(C_(0.364110589f), a); /* 0.1159 pi */
+    return FMA_(a, rough, smooth);
+}
+
+FACET_INLINE V_ FACET_K(x_diffuse_pi)(V_ nl, V_ nv, V_ t, V_ h, V_ a, V_ alb)
+{
+    V_ multi, single = FACET_K(x_diffuse_single)(nl, nv, t, h, a, &multi);
     return MUL_(alb, FMA_(alb, multi, single));
 }
 
@@ -250,8 +255,15 @@ FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ alb
  *   spec = (2/pi) (alpha t)^2 F / (e^2 m) = (2/pi) (u m) u F,  u = alpha t / (e m),
  * ordered so that no intermediate overflows at the grazing corner.
  * Three reciprocals (1/(e m), 1/(1 + L.H), 1/s) and one rsqrt in all. */
-FACET_INLINE V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_ albedo)
+/* What brdf_hammon computes before f0 and albedo enter: F = f0 + (1 - f0) y5,
+ * brdf = (dv2 F + albedo (single + albedo multi)) / pi.  The RGB form shares
+ * it across channels; per channel the same operations run in the same order,
+ * so each channel equals brdf_hammon to the bit. */
+typedef struct FACET_K(x_brdf_parts) { V_ y5, dv2, single, multi; } FACET_K(x_brdf_parts);
+
+FACET_INLINE FACET_K(x_brdf_parts) FACET_K(x_brdf_geometry)(V_ nol, V_ nov, V_ lov, V_ alpha)
 {
+    FACET_K(x_brdf_parts) g;
     V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
     V_ lv = FACET_K(x_lov)(lov);
     V_ a = FACET_K(x_alpha)(alpha);
@@ -281,9 +293,7 @@ FACET_INLINE V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_
     /* below L.H = 1/2, 1 - L.H itself is the better conditioned form */
     V_ y = FACET_OP(sel_lt)(lh, C_(0.5f), SUB_(C_(1.0f), lh),
                             MUL_(MUL_(C_(0.5f), w), RCP_(ADD_(C_(1.0f), lh))));
-    V_ f0c = FACET_K(x_unit)(f0);
     V_ y2 = MUL_(y, y);
-    V_ f = FMA_(SUB_(C_(1.0f), f0c), MUL_(MUL_(y2, y2), y), f0c);
     /* D Vis = (4/pi)(alpha t / e)^2 (0.5 / m) = (2/pi) (alpha t)^2 / (e^2 m),
      * and 1 / (e^2 m) = m R^2 with R = 1 / (e m): one reciprocal */
     V_ R = RCP_(MUL_(e, m));
@@ -291,8 +301,35 @@ FACET_INLINE V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_
     V_ dv_pi = MUL_(MUL_(u, m), u);             /* pi D Vis / 2; u m = alpha t / e <= 512 */
     /* 0.5 / N.H = L.H / s (N.H = s / (2 L.H)), at least 0.5 */
     V_ h = MAX_(MUL_(lh, RCP_(sh)), C_(0.5f));
-    V_ dif = FACET_K(x_diffuse_pi)(nl, nv, t, h, a, FACET_K(x_unit)(albedo));
-    return MUL_(FMA_(ADD_(dv_pi, dv_pi), f, dif), C_(FACET_INV_PI_));
+    g.y5 = MUL_(MUL_(y2, y2), y);
+    g.dv2 = ADD_(dv_pi, dv_pi);
+    g.single = FACET_K(x_diffuse_single)(nl, nv, t, h, a, &g.multi);
+    return g;
+}
+
+FACET_INLINE V_ FACET_K(x_brdf_channel)(const FACET_K(x_brdf_parts) *g, V_ f0, V_ albedo)
+{
+    V_ f0c = FACET_K(x_unit)(f0), alb = FACET_K(x_unit)(albedo);
+    V_ f = FMA_(SUB_(C_(1.0f), f0c), g->y5, f0c);
+    V_ dif = MUL_(alb, FMA_(alb, g->multi, g->single));
+    return MUL_(FMA_(g->dv2, f, dif), C_(FACET_INV_PI_));
+}
+
+FACET_INLINE V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_ albedo)
+{
+    FACET_K(x_brdf_parts) g = FACET_K(x_brdf_geometry)(nol, nov, lov, alpha);
+    return FACET_K(x_brdf_channel)(&g, f0, albedo);
+}
+
+/* brdf_hammon for three channels of f0 and albedo at once, the geometry
+ * computed once: out[c] equals brdf_hammon(..., f0[c], albedo[c]) bit for bit. */
+FACET_INLINE void FACET_K(brdf_hammon_rgb)(V_ out[3], V_ nol, V_ nov, V_ lov, V_ alpha,
+                                           const V_ f0[3], const V_ albedo[3])
+{
+    FACET_K(x_brdf_parts) g = FACET_K(x_brdf_geometry)(nol, nov, lov, alpha);
+    out[0] = FACET_K(x_brdf_channel)(&g, f0[0], albedo[0]);
+    out[1] = FACET_K(x_brdf_channel)(&g, f0[1], albedo[1]);
+    out[2] = FACET_K(x_brdf_channel)(&g, f0[2], albedo[2]);
 }
 
 /* Lambert: albedo / pi, the baseline diffuse. */
