@@ -60,57 +60,66 @@ static const facet_fx_port *fx_port(void)
 
 const char *facet_fx_port_name(void) { return fx_port()->name; }
 
+static int all_vector; /* facet_fx_dispatch_all_vector */
+
+void facet_fx_dispatch_all_vector(int on) { __atomic_store_n(&all_vector, on, __ATOMIC_RELAXED); }
+
+/* the port's code for kernel k where it was measured faster, else scalar */
+#define PICK(k, K)                                                                  \
+    ((fx_port()->faster & FX_BIT(K)) || __atomic_load_n(&all_vector, __ATOMIC_RELAXED) \
+         ? fx_port()->k : facet_fx_port_scalar.k)
+
 #define I const int32_t *
 void facet_noh_from_dots_fx_batch(int32_t *out, I nol, I nov, I lov, size_t n)
 {
-    fx_port()->noh_from_dots(out, nol, nov, lov, n);
+    PICK(noh_from_dots, FX_NOH_FROM_DOTS)(out, nol, nov, lov, n);
 }
 void facet_loh_from_dots_fx_batch(int32_t *out, I lov, size_t n)
 {
-    fx_port()->loh_from_dots(out, lov, n);
+    PICK(loh_from_dots, FX_LOH_FROM_DOTS)(out, lov, n);
 }
 void facet_fresnel_schlick_fx_batch(int32_t *out, I f0, I cos_theta, size_t n)
 {
-    fx_port()->fresnel_schlick(out, f0, cos_theta, n);
+    PICK(fresnel_schlick, FX_FRESNEL_SCHLICK)(out, f0, cos_theta, n);
 }
 void facet_ggx_d_fx_batch(uint32_t *out, I noh, I alpha, size_t n)
 {
-    fx_port()->ggx_d(out, noh, alpha, n);
+    PICK(ggx_d, FX_GGX_D)(out, noh, alpha, n);
 }
 void facet_smith_g1_fx_batch(int32_t *out, I nov, I alpha, size_t n)
 {
-    fx_port()->smith_g1(out, nov, alpha, n);
+    PICK(smith_g1, FX_SMITH_G1)(out, nov, alpha, n);
 }
 void facet_smith_g2_fx_batch(int32_t *out, I nol, I nov, I alpha, size_t n)
 {
-    fx_port()->smith_g2(out, nol, nov, alpha, n);
+    PICK(smith_g2, FX_SMITH_G2)(out, nol, nov, alpha, n);
 }
 void facet_smith_g2_uncorrelated_fx_batch(int32_t *out, I nol, I nov, I alpha, size_t n)
 {
-    fx_port()->smith_g2_uncorrelated(out, nol, nov, alpha, n);
+    PICK(smith_g2_uncorrelated, FX_SMITH_G2_UNCORRELATED)(out, nol, nov, alpha, n);
 }
 void facet_smith_vis_fx_batch(uint32_t *out, I nol, I nov, I alpha, size_t n)
 {
-    fx_port()->smith_vis(out, nol, nov, alpha, n);
+    PICK(smith_vis, FX_SMITH_VIS)(out, nol, nov, alpha, n);
 }
 void facet_smith_g1_hammon_fx_batch(int32_t *out, I nov, I alpha, size_t n)
 {
-    fx_port()->smith_g1_hammon(out, nov, alpha, n);
+    PICK(smith_g1_hammon, FX_SMITH_G1_HAMMON)(out, nov, alpha, n);
 }
 void facet_smith_g2_hammon_fx_batch(int32_t *out, I nol, I nov, I alpha, size_t n)
 {
-    fx_port()->smith_g2_hammon(out, nol, nov, alpha, n);
+    PICK(smith_g2_hammon, FX_SMITH_G2_HAMMON)(out, nol, nov, alpha, n);
 }
 void facet_smith_vis_hammon_fx_batch(uint32_t *out, I nol, I nov, I alpha, size_t n)
 {
-    fx_port()->smith_vis_hammon(out, nol, nov, alpha, n);
+    PICK(smith_vis_hammon, FX_SMITH_VIS_HAMMON)(out, nol, nov, alpha, n);
 }
 void facet_diffuse_hammon_fx_batch(uint32_t *out, I nol, I nov, I lov, I alpha, I albedo, size_t n)
 {
-    fx_port()->diffuse_hammon(out, nol, nov, lov, alpha, albedo, n);
+    PICK(diffuse_hammon, FX_DIFFUSE_HAMMON)(out, nol, nov, lov, alpha, albedo, n);
 }
 void facet_brdf_hammon_fx_batch(uint64_t *out, I nol, I nov, I lov, I alpha, I f0, I albedo,
                                 size_t n)
 {
-    fx_port()->brdf_hammon(out, nol, nov, lov, alpha, f0, albedo, n);
+    PICK(brdf_hammon, FX_BRDF_HAMMON)(out, nol, nov, lov, alpha, f0, albedo, n);
 }

@@ -368,7 +368,7 @@ static void scalar_brdf_hammon(uint64_t *out, const int32_t *nol, const int32_t 
 }
 
 const facet_fx_port facet_fx_port_scalar = {
-    "scalar", 1,
+    "scalar", 1, FX_ALL,
     scalar_noh_from_dots, scalar_loh_from_dots, scalar_fresnel_schlick, scalar_ggx_d,
     scalar_smith_g1, scalar_smith_g2, scalar_smith_g2_uncorrelated, scalar_smith_vis,
     scalar_smith_g1_hammon, scalar_smith_g2_hammon, scalar_smith_vis_hammon,

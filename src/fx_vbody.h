@@ -44,6 +44,8 @@
  *   fv_load(p)                 FXV_W int32_t sign-extended
  *   fv_store32(p, v) fv_store64(p, v)   low words / whole lanes, unaligned
  *   FXV_PORT                   the port's name token (avx2, neon)
+ *   FXV_FASTER                 (optional) FX_BIT mask of the kernels to dispatch
+ *                              here; the others run the scalar loop (fx_port.h)
  */
 #include "facet/fx.h"
 #include "fx_port.h"
@@ -622,8 +624,11 @@ static void FXV_FN(brdf_hammon)(uint64_t *out, I a, I b, I c, I d, I e, I f, siz
 }
 #undef I
 
+#ifndef FXV_FASTER
+#define FXV_FASTER FX_ALL
+#endif
 const facet_fx_port FXV_CAT(facet_fx_port_, FXV_PORT) = {
-    FXV_STR(FXV_PORT), FXV_W,
+    FXV_STR(FXV_PORT), FXV_W, FXV_FASTER,
     FXV_FN(noh_from_dots), FXV_FN(loh_from_dots), FXV_FN(fresnel_schlick), FXV_FN(ggx_d),
     FXV_FN(smith_g1), FXV_FN(smith_g2), FXV_FN(smith_g2_uncorrelated), FXV_FN(smith_vis),
     FXV_FN(smith_g1_hammon), FXV_FN(smith_g2_hammon), FXV_FN(smith_vis_hammon),

@@ -16,6 +16,7 @@
 #include "facet/fx.h"
 #include "fx_test.h"
 #include "fx_hash.h"
+#include "../src/fx_port.h" /* facet_fx_dispatch_all_vector */
 #if defined(__x86_64__) || defined(__i386__)
 #include <x86intrin.h>
 #endif
@@ -268,7 +269,12 @@ int main(void)
             fxn = facet_fx_port_name();
             CHECK(!strcmp(fxn, pn) || !strcmp(fxn, "scalar") || (!strcmp(pn, "avx512") && !strcmp(fxn, "avx2")),
                   "%s: fx port %s", pn, fxn);
-            test_kernel_port(k, pn);
+            test_kernel_port(k, pn); /* as dispatched (vector code where measured faster) */
+            if (strcmp(fxn, "scalar")) { /* and the port's vector code for every kernel */
+                facet_fx_dispatch_all_vector(1);
+                test_kernel_port(k, pn);
+                facet_fx_dispatch_all_vector(0);
+            }
             if (timing) {
                 double t = time_batch(k);
                 if (!strcmp(fxn, "scalar") && !strcmp(pn, "scalar"))
@@ -295,6 +301,9 @@ int main(void)
             CHECK(!strcmp(facet_fx_port_name(), "neon"), "neon: the fx kernels run vectorised");
 #endif
         test_hash(pn);
+        facet_fx_dispatch_all_vector(1);
+        test_hash(pn);
+        facet_fx_dispatch_all_vector(0);
     }
     facet_set_port("auto");
     printf("fx_ports: %ld random outputs compared bit for bit (%lu per kernel and port)\n",

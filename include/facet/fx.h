@@ -114,10 +114,14 @@ uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alp
  * (clamping and saturation included) and every n, alignment and tail.
  * Dispatched like the f32 batches: the fx implementation of the active f32
  * port (facet_port_name(), facet_set_port(), FACET_PORT), the scalar loop
- * where that port has none; facet_fx_port_name() says which runs.
- * Vectorised: every kernel on avx2 (x86) and neon (aarch64, armv7); sse2
- * and scalar run the scalar loop.  out may be the very same array as an
- * input (32-bit outputs); no other overlap. */
+ * where that port has none; facet_fx_port_name() names that implementation.
+ * Vectorised code exists for every kernel on avx2 (x86) and neon (aarch64,
+ * armv7), but a kernel is dispatched to it only where it was measured
+ * faster than the scalar loop: on x86 only fresnel_schlick (the scalar loop
+ * divides with the native 64-bit instruction, the 64-bit lanes cannot);
+ * neon, unmeasured on hardware here, runs all of them.  sse2 and scalar run
+ * the scalar loop.  out may be the very same array as an input (32-bit
+ * outputs); no other overlap. */
 const char *facet_fx_port_name(void); /* "avx2", "neon" or "scalar" */
 void facet_noh_from_dots_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
                                   const int32_t *lov, size_t n);

@@ -16,6 +16,12 @@
 typedef struct { __m256i a, b; } fv;
 #define FXV_W 8
 #define FXV_PORT avx2
+/* Dispatched only where measured faster than the scalar loop, which on
+ * x86-64 divides with the native instruction (fx_div64) while 64-bit lanes
+ * here divide in software: `facet bench --format fx` on an AVX-512 Xeon,
+ * TSC ticks/sample scalar vs avx2: fresnel_schlick 4.4 vs 2.1; every other
+ * kernel 1.2x-6x slower here (ggx_d 14.4 vs 83.2, brdf_hammon 345 vs 490). */
+#define FXV_FASTER FX_BIT(FX_FRESNEL_SCHLICK)
 
 static inline fv fv_2(__m256i a, __m256i b)
 {
