@@ -207,21 +207,37 @@ static double model_err(int which, double nl, double nv, double a)
     }
 }
 
-pic pic_heatmap(int which)
+/* Four square panels side by side, one per alpha; cell() gives the value
+ * err_colour() maps at (N.L, N.V) = ((x + 0.5)/S, 1 - (y + 0.5)/S). */
+typedef double (*panel_cell)(const void *ctx, double nl, double nv, double a, int y, int S);
+
+static pic panels(const double alphas[4], panel_cell cell, const void *ctx)
 {
-    static const double alphas[4] = { 0.02, 0.1, 0.4, 1.0 };
     int S = 96, gap = 4, ai, x, y;
     pic p = pic_new(4 * (S + gap) + gap, S + 2 * gap);
     memset(p.rgb, 255, (size_t)p.w * (size_t)p.h * 3);
     for (ai = 0; ai < 4; ai++)
         for (y = 0; y < S; y++)
             for (x = 0; x < S; x++) {
-                double nl = (x + 0.5) / S, nv = 1 - (y + 0.5) / S, c[3], a = alphas[ai];
-                if (which == 2) /* G1 has one cosine: x = N.V, y = alpha (log, 2^-10..1) */
-                    a = pow(2.0, -10.0 * (y + 0.5) / S);
-                err_colour(model_err(which, nl, which == 2 ? nl : nv, a), c);
+                double c[3];
+                err_colour(cell(ctx, (x + 0.5) / S, 1 - (y + 0.5) / S, alphas[ai], y, S), c);
                 put(&p, gap + ai * (S + gap) + x, gap + y, c);
             }
+    return p;
+}
+
+static double model_cell(const void *ctx, double nl, double nv, double a, int y, int S)
+{
+    int which = *(const int *)ctx;
+    if (which == 2) /* G1 has one cosine: x = N.V, y = alpha (log, 2^-10..1) */
+        return model_err(which, nl, nl, pow(2.0, -10.0 * (y + 0.5) / S));
+    return model_err(which, nl, nv, a);
+}
+
+pic pic_heatmap(int which)
+{
+    static const double alphas[4] = { 0.02, 0.1, 0.4, 1.0 };
+    pic p = panels(alphas, model_cell, &which);
     snprintf(p.title, sizeof p.title, "%s", hm_name[which]);
     if (which == 2)
         snprintf(p.caption, sizeof p.caption,
@@ -235,25 +251,27 @@ pic pic_heatmap(int which)
     return p;
 }
 
+/* L.V in the plane of incidence with L and V mirror-symmetric in azimuth,
+ * so that N.H ~ 1 along the diagonal N.L = N.V (the specular peak) */
+static double mirror_lov(double nl, double nv)
+{
+    return nl * nv - sqrt((1.0 - nl * nl) * (1.0 - nv * nv));
+}
+
+static double f32_cell(const void *ctx, double dnl, double dnv, double da, int y, int S)
+{
+    float nl = (float)dnl, nv = (float)dnv, a = (float)da;
+    float lv = (float)mirror_lov(nl, nv);
+    (void)ctx, (void)y, (void)S;
+    /* shifted by 1e3: -10 .. -3 mapped onto the bar */
+    return 1e3 * bench_rel_err(facet_brdf_hammon_f32_scalar(nl, nv, lv, a, 0.04f, 0.8f),
+                               facet_oracle_brdf_hammon(nl, nv, lv, a, 0.04, 0.8));
+}
+
 pic pic_heatmap_f32(void)
 {
     static const double alphas[4] = { 0.001, 0.02, 0.2, 1.0 };
-    int S = 96, gap = 4, ai, x, y;
-    pic p = pic_new(4 * (S + gap) + gap, S + 2 * gap);
-    memset(p.rgb, 255, (size_t)p.w * (size_t)p.h * 3);
-    for (ai = 0; ai < 4; ai++)
-        for (y = 0; y < S; y++)
-            for (x = 0; x < S; x++) {
-                float nl = (float)((x + 0.5) / S), nv = (float)(1 - (y + 0.5) / S);
-                float lv, a = (float)alphas[ai];
-                double c[3], e;
-                /* near the mirror direction: L.V chosen so that N.H ~ 1 along the diagonal */
-                lv = (float)((double)nl * nv - sqrt((1.0 - (double)nl * nl) * (1.0 - (double)nv * nv)));
-                e = bench_rel_err(facet_brdf_hammon_f32_scalar(nl, nv, lv, a, 0.04f, 0.8f),
-                                  facet_oracle_brdf_hammon(nl, nv, lv, a, 0.04, 0.8));
-                err_colour(e * 1e3, c); /* shifted: -10 .. -3 mapped onto the bar */
-                put(&p, gap + ai * (S + gap) + x, gap + y, c);
-            }
+    pic p = panels(alphas, f32_cell, NULL);
     snprintf(p.title, sizeof p.title, "brdf_hammon f32 (scalar) vs oracle");
     snprintf(p.caption, sizeof p.caption,
              "Relative arithmetic error of the f32 kernel, log10 from -10 (dark) to -3 (white), over N.L "
@@ -267,35 +285,29 @@ static int32_t q15(double x)
     return (int32_t)floor(x * 32768.0 + 0.5); /* ties up, the fx.h rule */
 }
 
+static double fx_cell(const void *ctx, double nl, double nv, double a, int y, int S)
+{
+    int which = *(const int *)ctx;
+    double lv = mirror_lov(nl, nv), got;
+    int32_t in[6];
+    (void)y, (void)S;
+    in[0] = q15(nl); in[1] = q15(nv); in[2] = q15(lv);
+    in[3] = q15(a); in[4] = q15(0.04); in[5] = q15(0.8);
+    if (in[0] < FACET_FX_COS_MIN) in[0] = FACET_FX_COS_MIN;
+    if (in[1] < FACET_FX_COS_MIN) in[1] = FACET_FX_COS_MIN;
+    if (in[3] < FACET_FX_ALPHA_MIN) in[3] = FACET_FX_ALPHA_MIN;
+    got = ldexp((double)facet_brdf_hammon_fx(in[0], in[1], in[2], in[3], in[4], in[5]), -24);
+    if (which == 0) /* -10 .. -3, as the f32 map */
+        return 1e3 * bench_rel_err(got, facet_oracle_brdf_hammon(in[0] / 32768.0, in[1] / 32768.0,
+                                                                 in[2] / 32768.0, in[3] / 32768.0,
+                                                                 in[4] / 32768.0, in[5] / 32768.0));
+    return bench_rel_err(got, facet_oracle_brdf_hammon(nl, nv, lv, a, 0.04, 0.8));
+}
+
 pic pic_heatmap_fx(int which)
 {
     static const double alphas[4] = { 0.001, 0.02, 0.2, 1.0 };
-    int S = 96, gap = 4, ai, x, y;
-    pic p = pic_new(4 * (S + gap) + gap, S + 2 * gap);
-    memset(p.rgb, 255, (size_t)p.w * (size_t)p.h * 3);
-    for (ai = 0; ai < 4; ai++)
-        for (y = 0; y < S; y++)
-            for (x = 0; x < S; x++) {
-                double nl = (x + 0.5) / S, nv = 1 - (y + 0.5) / S, a = alphas[ai], c[3], e, got;
-                double lv = nl * nv - sqrt((1.0 - nl * nl) * (1.0 - nv * nv));
-                int32_t in[6];
-                in[0] = q15(nl); in[1] = q15(nv); in[2] = q15(lv);
-                in[3] = q15(a); in[4] = q15(0.04); in[5] = q15(0.8);
-                if (in[0] < FACET_FX_COS_MIN) in[0] = FACET_FX_COS_MIN;
-                if (in[1] < FACET_FX_COS_MIN) in[1] = FACET_FX_COS_MIN;
-                if (in[3] < FACET_FX_ALPHA_MIN) in[3] = FACET_FX_ALPHA_MIN;
-                got = ldexp((double)facet_brdf_hammon_fx(in[0], in[1], in[2], in[3], in[4], in[5]), -24);
-                if (which == 0) {
-                    e = bench_rel_err(got, facet_oracle_brdf_hammon(in[0] / 32768.0, in[1] / 32768.0,
-                                                                    in[2] / 32768.0, in[3] / 32768.0,
-                                                                    in[4] / 32768.0, in[5] / 32768.0));
-                    err_colour(e * 1e3, c); /* -10 .. -3, as the f32 map */
-                } else {
-                    e = bench_rel_err(got, facet_oracle_brdf_hammon(nl, nv, lv, a, 0.04, 0.8));
-                    err_colour(e, c);
-                }
-                put(&p, gap + ai * (S + gap) + x, gap + y, c);
-            }
+    pic p = panels(alphas, fx_cell, &which);
     if (which == 0) {
         snprintf(p.title, sizeof p.title, "brdf_hammon fixed point vs oracle at the same Q15 inputs");
         snprintf(p.caption, sizeof p.caption,
