@@ -90,6 +90,19 @@ static inline float smp_domain_lo(const facet_kernel *k, int i)
     return 0.0f;
 }
 
+/* The first (best) port this CPU runs: what "auto" must choose. */
+static inline const char *smp_best_port(void)
+{
+    size_t i;
+    for (i = 0; i < facet_port_count(); i++) {
+        int sup;
+        const char *n = facet_port_at(i, &sup, NULL);
+        if (sup)
+            return n;
+    }
+    return "scalar";
+}
+
 /* One in-domain sample for a kernel, by its input names. */
 static void smp_inputs(smp_rng *r, const facet_kernel *k, float *in)
 {

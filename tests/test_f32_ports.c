@@ -161,7 +161,7 @@ int main(void)
     }
     CHECK(facet_port_at(facet_port_count(), NULL, NULL) == NULL, "facet_port_at past the end is NULL");
     facet_set_port("auto");
-    CHECK(!strcmp(facet_port_name(), facet_port_at(0, NULL, NULL)) || getenv("FACET_PORT"),
+    CHECK(!strcmp(facet_port_name(), smp_best_port()) || getenv("FACET_PORT"),
           "auto picks the best supported port (%s)", facet_port_name());
     return th_done();
 }
