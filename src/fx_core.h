@@ -222,28 +222,27 @@ static inline uint32_t fx_div64(uint32_t u1, uint32_t u0, uint32_t d, uint32_t *
 /* ---- fxf: m 2^e --------------------------------------------------------- */
 typedef struct { uint32_t m; int32_t e; } fxf;
 
+/* m 2^e plus the rounding bit rb (ties up), m normalised (bit 31 set) */
+static inline fxf fxf_round_(uint32_t m, uint32_t rb, int32_t e)
+{
+    fxf r;
+    m += rb;
+    if (!m) { /* rounded up to 2^32 */
+        m = 0x80000000u;
+        e++;
+    }
+    r.m = m;
+    r.e = e;
+    return r;
+}
+
 /* round(x / 2^32) or round(x / 2^31) of x = hi 2^32 + lo in [2^62, 2^64)
  * (whichever keeps 32 bits) times 2^e, normalised; 32-bit operations only */
 static inline fxf fxf_from_w(uint32_t hi, uint32_t lo, int32_t e)
 {
-    fxf r;
-    uint32_t m, rb;
-    if (hi >> 31) {
-        m = hi;
-        rb = lo >> 31;
-        r.e = e + 32;
-    } else {
-        m = (hi << 1) | (lo >> 31);
-        rb = (lo >> 30) & 1u;
-        r.e = e + 31;
-    }
-    m += rb;
-    if (!m) { /* rounded up to 2^32 */
-        m = 0x80000000u;
-        r.e++;
-    }
-    r.m = m;
-    return r;
+    if (hi >> 31)
+        return fxf_round_(hi, lo >> 31, e + 32);
+    return fxf_round_((hi << 1) | (lo >> 31), (lo >> 30) & 1u, e + 31);
 }
 
 /* x 2^e, rounded to 32 significant bits (32-bit operations: no 64-bit
@@ -251,7 +250,7 @@ static inline fxf fxf_from_w(uint32_t hi, uint32_t lo, int32_t e)
 static inline fxf fxf_u64(uint64_t x, int32_t e)
 {
     fxf r;
-    uint32_t hi = (uint32_t)(x >> 32), lo = (uint32_t)x, m, rb;
+    uint32_t hi = (uint32_t)(x >> 32), lo = (uint32_t)x;
     int lz;
     if (!hi) {
         if (!lo) {
@@ -265,21 +264,9 @@ static inline fxf fxf_u64(uint64_t x, int32_t e)
         return r;
     }
     lz = fx_clz32(hi); /* round(x / 2^(32 - lz)) */
-    if (lz == 0) {
-        m = hi;
-        rb = lo >> 31;
-    } else {
-        m = (hi << lz) | (lo >> (32 - lz));
-        rb = (lo >> (31 - lz)) & 1u;
-    }
-    r.e = e + (32 - lz);
-    m += rb;
-    if (!m) { /* rounded up to 2^32 */
-        m = 0x80000000u;
-        r.e++;
-    }
-    r.m = m;
-    return r;
+    if (lz == 0)
+        return fxf_round_(hi, lo >> 31, e + 32);
+    return fxf_round_((hi << lz) | (lo >> (32 - lz)), (lo >> (31 - lz)) & 1u, e + (32 - lz));
 }
 
 /* round(p / 2^32) of a product p in [2^62, 2^64) as a normalised fxf */
