@@ -18,7 +18,7 @@
 /* pad value: any value works (kernels clamp), 0.5 is inside every domain */
 #define BATCH_PAD 0.5f
 
-#define BATCH_DEF(k, n, PARAMS, LOADS, TAILCOPY, TAILLOADS)                       \
+#define BATCH_DEF(k, PARAMS, LOADS, TAILCOPY, TAILLOADS)                          \
     static void BATCH_FN(k) PARAMS                                                \
     {                                                                             \
         size_t i = 0;                                                             \
@@ -39,18 +39,18 @@
 #define TC_(q, src) t_[q][j] = j < r ? src[i + j] : BATCH_PAD;
 #define TL_(q) BATCH_LOAD(t_[q])
 
-#define BATCH1(k) BATCH_DEF(k, 1, (float *out, const float *a, size_t n_),                  \
+#define BATCH1(k) BATCH_DEF(k, (float *out, const float *a, size_t n_),                  \
     (BATCH_LOAD(a + i)), TC_(0, a), (TL_(0)))
-#define BATCH2(k) BATCH_DEF(k, 2, (float *out, const float *a, const float *b, size_t n_),  \
+#define BATCH2(k) BATCH_DEF(k, (float *out, const float *a, const float *b, size_t n_),  \
     (BATCH_LOAD(a + i), BATCH_LOAD(b + i)), TC_(0, a) TC_(1, b), (TL_(0), TL_(1)))
-#define BATCH3(k) BATCH_DEF(k, 3, (float *out, const float *a, const float *b, const float *c, size_t n_), \
+#define BATCH3(k) BATCH_DEF(k, (float *out, const float *a, const float *b, const float *c, size_t n_), \
     (BATCH_LOAD(a + i), BATCH_LOAD(b + i), BATCH_LOAD(c + i)), TC_(0, a) TC_(1, b) TC_(2, c),               \
     (TL_(0), TL_(1), TL_(2)))
-#define BATCH5(k) BATCH_DEF(k, 5, (float *out, const float *a, const float *b, const float *c,               \
+#define BATCH5(k) BATCH_DEF(k, (float *out, const float *a, const float *b, const float *c,               \
     const float *d, const float *e, size_t n_),                                                             \
     (BATCH_LOAD(a + i), BATCH_LOAD(b + i), BATCH_LOAD(c + i), BATCH_LOAD(d + i), BATCH_LOAD(e + i)),        \
     TC_(0, a) TC_(1, b) TC_(2, c) TC_(3, d) TC_(4, e), (TL_(0), TL_(1), TL_(2), TL_(3), TL_(4)))
-#define BATCH6(k) BATCH_DEF(k, 6, (float *out, const float *a, const float *b, const float *c,               \
+#define BATCH6(k) BATCH_DEF(k, (float *out, const float *a, const float *b, const float *c,               \
     const float *d, const float *e, const float *f, size_t n_),                                             \
     (BATCH_LOAD(a + i), BATCH_LOAD(b + i), BATCH_LOAD(c + i), BATCH_LOAD(d + i), BATCH_LOAD(e + i),         \
      BATCH_LOAD(f + i)),                                                                                    \
