@@ -7,19 +7,12 @@
 /* Reciprocal seeds: RCP_SEED[i] = round(2^15 * 64 / (i + 32.5)), 1/x at the
  * midpoint of [(i + 32)/64, (i + 33)/64) in Q1.15, for d = x 2^32 with
  * i = (d >> 26) - 32.  Relative error <= 2^-7 (half a bin at x = 1/2). */
-static const uint16_t RCP_SEED[32] = {
-    64528, 62602, 60787, 59075, 57456, 55924, 54471, 53092, 51782, 50534, 49345,
-    48210, 47127, 46091, 45100, 44151, 43240, 42367, 41528, 40721, 39946, 39199,
-    38480, 37787, 37118, 36472, 35849, 35246, 34664, 34100, 33554, 33026,
-};
+static const uint16_t RCP_SEED[32] = { FX_RCP_SEED_VALUES };
 
 /* rsqrt seeds: RSQRT_SEED[i] = round(2^15 / sqrt((i + 8.5) / 32)), 1/sqrt(X)
  * at the bin midpoint in Q1.15, for x = X 2^32 with i = (x >> 27) - 8.
  * Relative error <= 2^-6.5 (half a bin at X = 1/4). */
-static const uint16_t RSQRT_SEED[24] = {
-    63579, 60140, 57205, 54661, 52429, 50450, 48679, 47082, 45633, 44310, 43096, 41977,
-    40940, 39977, 39078, 38238, 37449, 36708, 36008, 35347, 34722, 34128, 33564, 33027,
-};
+static const uint16_t RSQRT_SEED[24] = { FX_RSQRT_SEED_VALUES };
 
 /* r in Q1.31 ~ 2^63 / d; Newton r' = r + r (1 - d r / 2^63).  Error 2^-7 ->
  * 2^-14 -> 2^-28 -> arithmetic limit (~2 ulp); the exact fix-up follows. */

@@ -219,6 +219,18 @@ static inline uint32_t fx_div64(uint32_t u1, uint32_t u0, uint32_t d, uint32_t *
 }
 #endif
 
+/* ---- seed tables (src/fx_core.c), the one list of their values: the
+ * scalar primitives and the SIMD ports (src/fx_vbody.h) both initialise
+ * from these.  FX_RCP_SEED_VALUES[i] = round(2^15 / ((i + 32.5) / 64)),
+ * FX_RSQRT_SEED_VALUES[i] = round(2^15 / sqrt((i + 8.5) / 32)). */
+#define FX_RCP_SEED_VALUES                                                                  \
+    64528, 62602, 60787, 59075, 57456, 55924, 54471, 53092, 51782, 50534, 49345, 48210,     \
+    47127, 46091, 45100, 44151, 43240, 42367, 41528, 40721, 39946, 39199, 38480, 37787,     \
+    37118, 36472, 35849, 35246, 34664, 34100, 33554, 33026
+#define FX_RSQRT_SEED_VALUES                                                                \
+    63579, 60140, 57205, 54661, 52429, 50450, 48679, 47082, 45633, 44310, 43096, 41977,     \
+    40940, 39977, 39078, 38238, 37449, 36708, 36008, 35347, 34722, 34128, 33564, 33027
+
 /* ---- fxf: m 2^e --------------------------------------------------------- */
 typedef struct { uint32_t m; int32_t e; } fxf;
 

@@ -49,6 +49,7 @@
  */
 #include "facet/fx.h"
 #include "fx_port.h"
+#include "fx_core.h" /* the seed table values */
 
 #define FXV_ONE 32768u
 #define FXV_STR_(x) #x
@@ -94,16 +95,8 @@ static inline vf vf_k(uint32_t m, int32_t e)
 
 /* the seed tables of src/fx_core.c (the same values, widened to 32 bits for
  * the gathers; the rsqrt table padded to 32 so a masked index stays inside) */
-static const uint32_t V_RCP_SEED[32] = {
-    64528, 62602, 60787, 59075, 57456, 55924, 54471, 53092, 51782, 50534, 49345,
-    48210, 47127, 46091, 45100, 44151, 43240, 42367, 41528, 40721, 39946, 39199,
-    38480, 37787, 37118, 36472, 35849, 35246, 34664, 34100, 33554, 33026,
-};
-static const uint32_t V_RSQRT_SEED[32] = {
-    63579, 60140, 57205, 54661, 52429, 50450, 48679, 47082, 45633, 44310, 43096, 41977,
-    40940, 39977, 39078, 38238, 37449, 36708, 36008, 35347, 34722, 34128, 33564, 33027,
-    0, 0, 0, 0, 0, 0, 0, 0,
-};
+static const uint32_t V_RCP_SEED[32] = { FX_RCP_SEED_VALUES };
+static const uint32_t V_RSQRT_SEED[32] = { FX_RSQRT_SEED_VALUES }; /* rest 0 */
 
 /* ---- facet_fx_rcp32 ------------------------------------------------------ */
 static inline fv v_rcp32(fv d)
