@@ -13,7 +13,6 @@
 #include "loops.h"
 #include "peers.h"
 #include "fxhook.h"
-#include "../src/fx_port.h" /* facet_fx_dispatch_all_vector */
 
 #define ERR_FLOOR 0x1p-100
 
@@ -434,17 +433,6 @@ static void run_fx(const bench_fx *fx, const kdata *d, const bench_opts *o, benc
         fx_err(&row.err, fx, d, &x);
         row.thr = fx_time(fx->batch, &x, d, o);
         finish(&row, o, sink, ctx, count);
-        if (strcmp(facet_fx_port_name(), "scalar")) {
-            /* the port's vector code itself, also where dispatch prefers scalar */
-            facet_fx_dispatch_all_vector(1);
-            fx_row(&row, fx, d, pn, "vector");
-            row.note = "the port's vector fx code (dispatched only where measured faster)";
-            fx_run_all(fx->batch, d, &x);
-            fx_err(&row.err, fx, d, &x);
-            row.thr = fx_time(fx->batch, &x, d, o);
-            finish(&row, o, sink, ctx, count);
-            facet_fx_dispatch_all_vector(0);
-        }
     }
     facet_set_port(saved_port ? saved_port : "auto");
     /* one library call per sample, and its latency */

@@ -2,44 +2,27 @@
 #include <math.h>
 #include <string.h>
 #include "fxhook.h"
+#include "../src/kernel_list.h"
 
 static volatile int32_t opaque_zero; /* always 0; the compiler cannot know */
 
-#define FX_A1(i) in[0][i]
-#define FX_A2(i) in[0][i], in[1][i]
-#define FX_A3(i) FX_A2(i), in[2][i]
-#define FX_A5(i) FX_A3(i), in[3][i], in[4][i]
-#define FX_A6(i) FX_A5(i), in[5][i]
-#define FX_C1(i) in[0][i] + (int32_t)(uint32_t)y * z
-#define FX_C2(i) FX_C1(i), in[1][i]
-#define FX_C3(i) FX_C2(i), in[2][i]
-#define FX_C5(i) FX_C3(i), in[3][i], in[4][i]
-#define FX_C6(i) FX_C5(i), in[5][i]
-#define FX_B1 in[0]
-#define FX_B2 in[0], in[1]
-#define FX_B3 FX_B2, in[2]
-#define FX_B5 FX_B3, in[3], in[4]
-#define FX_B6 FX_B5, in[5]
+#define ROW_(q) in[q][i]
+#define COL_(q) in[q]
+#define CHAINED_(q) (q == 0 ? in[0][i] + (int32_t)(uint32_t)y * z : in[q][i])
 
-/* name, arity, output container */
-#define FX_KERNELS(X)                                                                              \
-    X(noh_from_dots, 3, int32_t) X(loh_from_dots, 1, int32_t) X(fresnel_schlick, 2, int32_t)        \
-    X(ggx_d, 2, uint32_t) X(smith_g1, 2, int32_t) X(smith_g2, 3, int32_t)                           \
-    X(smith_g2_uncorrelated, 3, int32_t) X(smith_vis, 3, uint32_t) X(smith_g1_hammon, 2, int32_t)   \
-    X(smith_g2_hammon, 3, int32_t) X(smith_vis_hammon, 3, uint32_t)                                 \
-    X(diffuse_hammon, 5, uint32_t) X(brdf_hammon, 6, uint64_t)
-
-#define FX_LOOPS(name, n, T)                                                                       \
+/* Names generated here from src/kernels.def: three loops per fixed-point
+ * kernel and the table. */
+#define FACET_KERNEL(name, NAME, n, T, ...) FACET_IF_FX(T,                                          \
     static void batch_##name(void *out, const int32_t *const *in, size_t n_)                       \
     {                                                                                              \
-        facet_##name##_fx_batch((T *)out, FX_B##n, n_);                                            \
+        facet_##name##_fx_batch((T *)out, FACET_EACH_INPUT(n, COL_), n_);                          \
     }                                                                                              \
     static void call_##name(void *out, const int32_t *const *in, size_t n_)                        \
     {                                                                                              \
         T *o = (T *)out;                                                                           \
         size_t i;                                                                                  \
         for (i = 0; i < n_; i++)                                                                   \
-            o[i] = facet_##name##_fx(FX_A##n(i));                                                  \
+            o[i] = facet_##name##_fx(FACET_EACH_INPUT(n, ROW_));                                   \
     }                                                                                              \
     static void chain_##name(void *out, const int32_t *const *in, size_t n_)                       \
     {                                                                                              \
@@ -47,10 +30,11 @@ static volatile int32_t opaque_zero; /* always 0; the compiler cannot know */
         int32_t z = opaque_zero;                                                                   \
         size_t i;                                                                                  \
         for (i = 0; i < n_; i++)                                                                   \
-            y = facet_##name##_fx(FX_C##n(i));                                                     \
+            y = facet_##name##_fx(FACET_EACH_INPUT(n, CHAINED_));                                  \
         *(T *)out = y;                                                                             \
-    }
-FX_KERNELS(FX_LOOPS)
+    })
+#include "../src/kernels.def"
+#undef FACET_KERNEL
 
 void bench_fx_identity_chain(void *out, const int32_t *const *in, size_t n_)
 {
@@ -61,8 +45,11 @@ void bench_fx_identity_chain(void *out, const int32_t *const *in, size_t n_)
     *(int32_t *)out = y;
 }
 
-#define FX_ENTRY(name, n, T) { #name, NULL, batch_##name, call_##name, chain_##name },
-static bench_fx table[] = { FX_KERNELS(FX_ENTRY) };
+static bench_fx table[] = {
+#define FACET_KERNEL(name, NAME, n, T, ...) FACET_IF_FX(T, { #name, NULL, batch_##name, call_##name, chain_##name },)
+#include "../src/kernels.def"
+#undef FACET_KERNEL
+};
 
 int bench_fx_available(void)
 {

@@ -3,23 +3,24 @@
  * (the latency of a port is its inline kernel's, see loops_<port>.c). */
 #include "facet.h"
 #include "loops.h"
+#include "../src/kernel_list.h"
 
 static int always(void) { return 1; }
 
-#define B1(name) facet_##name##_f32_batch(out, in[0], n)
-#define B2(name) facet_##name##_f32_batch(out, in[0], in[1], n)
-#define B3(name) facet_##name##_f32_batch(out, in[0], in[1], in[2], n)
-#define B5(name) facet_##name##_f32_batch(out, in[0], in[1], in[2], in[3], in[4], n)
-#define B6(name) facet_##name##_f32_batch(out, in[0], in[1], in[2], in[3], in[4], in[5], n)
-#define K(name, NAME, n_, ...) \
-    static void batch_##name(float *out, const float *const *in, size_t n) { B##n_(name); }
+#define COL_(q) in[q]
+/* Names generated here from src/kernels.def: one loop per kernel. */
+#define FACET_KERNEL(name, NAME, n_in, ...)                                    \
+    static void batch_##name(float *out, const float *const *in, size_t n)     \
+    {                                                                          \
+        facet_##name##_f32_batch(out, FACET_EACH_INPUT(n_in, COL_), n);        \
+    }
 #include "../src/kernels.def"
-#undef K
+#undef FACET_KERNEL
 
 static const bench_loop k_[] = {
-#define K(name, NAME, n, ...) { batch_##name, 0 },
+#define FACET_KERNEL(name, NAME, n, ...) { batch_##name, 0 },
 #include "../src/kernels.def"
-#undef K
+#undef FACET_KERNEL
     { 0, 0 },
 };
 

@@ -5,35 +5,39 @@
  * then include this file once. */
 #include "facet.h"
 #include "loops.h"
+#include "../src/kernel_list.h"
 
 #define LP_CAT_(a, b) a##b
 #define LP_CAT(a, b) LP_CAT_(a, b)
 
-#define LP_A1(i, f0) f0(0, i)
-#define LP_A2(i, f0) f0(0, i), LP_LOAD(in[1] + i)
-#define LP_A3(i, f0) LP_A2(i, f0), LP_LOAD(in[2] + i)
-#define LP_A5(i, f0) LP_A3(i, f0), LP_LOAD(in[3] + i), LP_LOAD(in[4] + i)
-#define LP_A6(i, f0) LP_A5(i, f0), LP_LOAD(in[5] + i)
-#define LP_PLAIN(q, i) LP_LOAD(in[q] + i)
-#define LP_FED(q, i) LP_FEED(LP_LOAD(in[q] + i), y)
+/* input q at sample i, plain, or (the chain) the first one fed by y */
+#define LP_PLAIN_(q) LP_LOAD(in[q] + i)
+#define LP_FED_(q) LP_CAT(LP_FED_AT_, q)
+#define LP_FED_AT_0 LP_FEED(LP_LOAD(in[0] + i), y)
+#define LP_FED_AT_1 LP_PLAIN_(1)
+#define LP_FED_AT_2 LP_PLAIN_(2)
+#define LP_FED_AT_3 LP_PLAIN_(3)
+#define LP_FED_AT_4 LP_PLAIN_(4)
+#define LP_FED_AT_5 LP_PLAIN_(5)
 
-#define K(name, NAME, n, ...)                                                   \
+/* Names generated here from src/kernels.def: two loops per kernel. */
+#define FACET_KERNEL(name, NAME, n, ...)                                        \
     static void LP_CAT(thr_, name)(float *out, const float *const *in, size_t n_) \
     {                                                                           \
         size_t i;                                                               \
         for (i = 0; i < n_; i += LP_W)                                          \
-            LP_STORE(out + i, LP_K(name)(LP_A##n(i, LP_PLAIN)));                \
+            LP_STORE(out + i, LP_K(name)(FACET_EACH_INPUT(n, LP_PLAIN_)));      \
     }                                                                           \
     static void LP_CAT(chain_, name)(float *out, const float *const *in, size_t n_) \
     {                                                                           \
         size_t i;                                                               \
         LP_V y = LP_ZERO;                                                       \
         for (i = 0; i < n_; i += LP_W)                                          \
-            y = LP_K(name)(LP_A##n(i, LP_FED));                                 \
+            y = LP_K(name)(FACET_EACH_INPUT(n, LP_FED_));                       \
         LP_STORE(out, y);                                                       \
     }
 #include "../src/kernels.def"
-#undef K
+#undef FACET_KERNEL
 
 static void lp_thr_identity(float *out, const float *const *in, size_t n_)
 {
@@ -52,9 +56,9 @@ static void lp_chain_identity(float *out, const float *const *in, size_t n_)
 }
 
 static const bench_loop LP_CAT(lp_k_, LP_NAME)[] = {
-#define K(name, NAME, n, ...) { LP_CAT(thr_, name), LP_CAT(chain_, name) },
+#define FACET_KERNEL(name, NAME, n, ...) { LP_CAT(thr_, name), LP_CAT(chain_, name) },
 #include "../src/kernels.def"
-#undef K
+#undef FACET_KERNEL
     { lp_thr_identity, lp_chain_identity },
 };
 

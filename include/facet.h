@@ -236,6 +236,9 @@ int facet_set_port(const char *name);
 const char *facet_port_name(void);
 size_t facet_port_count(void);
 const char *facet_port_at(size_t i, int *supported, int *lanes);
+/* 1 if the port is compiled in and this CPU (and OS) runs it: the one answer
+ * the library, the bench and the rasterizer all use (CPUID/XCR0, HWCAP). */
+int facet_port_supported(const char *name);
 
 /* ---- the kernel table ----------------------------------------------------
  * One entry per kernel, in `facet list` order, for tools that drive every

@@ -1,157 +1,122 @@
-/* dispatch.c - picks the f32 port for the running CPU, once, and routes the
- * public facet_<kernel>_f32_batch functions to it.
+/* dispatch.c - the one dispatcher: picks the port for the running CPU once,
+ * for both formats, and routes every public facet_<kernel>_f32_batch and
+ * facet_<kernel>_fx_batch to it.
+ * Names generated here from src/kernels.def: the public f32 batch entry
+ * points (the fx ones are in src/fx_batch.c and ask facet_fx_active_port()).
  *
- * Ports compiled in follow the target: x86-64 -> avx512, avx2, sse2
- * (i386: avx2, sse2); aarch64/armv7 ->
- * neon; everywhere -> scalar.  "Supported" means the CPU and OS can run the
- * port: x86 checks CPUID (AVX-512F / AVX2, FMA, OSXSAVE) and XCR0 (the OS
- * saves the YMM / ZMM and opmask state);
- * armv7 checks HWCAP (NEON and VFPv4); aarch64 always has NEON.
- * The choice is a pointer published with an atomic store: threads racing on
- * the first call compute the same choice, so no lock is needed. */
-#if defined(__linux__) && !defined(_GNU_SOURCE)
-#define _GNU_SOURCE /* getauxval */
-#endif
+ * Ports compiled in follow the target, best first: x86-64 -> avx512, avx2,
+ * sse2 (i386: avx2, sse2); aarch64 / armv7 Linux -> neon; everywhere ->
+ * scalar.  A port is "supported" when src/cpu.c says this CPU and OS run it.
+ * Each port brings its f32 batches and, where it has any, fixed-point code
+ * (src/port.h): avx512 and avx2 run the AVX2 fx code, aarch64 neon the NEON
+ * fx code, the others the scalar fx loops.
+ *
+ * The choice is one pointer.  The first batch call computes the automatic
+ * choice (FACET_PORT, else the best supported port) and installs it with a
+ * compare-and-swap from "not chosen", so it can never overwrite a choice
+ * another thread made meanwhile with facet_set_port(); facet_set_port()
+ * stores its port directly.  Every later call is one acquire load. */
 #include <stdlib.h>
 #include <string.h>
 #include "facet.h"
+#include "facet/fx.h"
+#include "cpu.h"
 #include "port.h"
 
 #if defined(__x86_64__) || defined(__i386__)
 #define FACET_X86 1
-#include <cpuid.h>
 #elif defined(__aarch64__) || (defined(__arm__) && defined(__linux__))
 #define FACET_ARM 1
-#if !defined(__aarch64__)
-#include <sys/auxv.h>
-#endif
 #endif
 
-#if FACET_X86
-int facet_cpu_avx2_fma(void)
-{
-    unsigned a, b, c, d, xlo, xhi;
-    if (!__get_cpuid(1, &a, &b, &c, &d))
-        return 0;
-    if (!(c & (1u << 12)) || !(c & (1u << 27)) || !(c & (1u << 28))) /* FMA, OSXSAVE, AVX */
-        return 0;
-    __asm__ volatile("xgetbv" : "=a"(xlo), "=d"(xhi) : "c"(0));
-    if ((xlo & 6u) != 6u) /* XMM and YMM state enabled by the OS */
-        return 0;
-    if (!__get_cpuid_count(7, 0, &a, &b, &c, &d))
-        return 0;
-    return (b >> 5) & 1u; /* AVX2 */
-}
-#if defined(__x86_64__)
-int facet_cpu_avx512f(void)
-{
-    unsigned a, b, c, d, xlo, xhi;
-    if (!__get_cpuid(1, &a, &b, &c, &d) || !(c & (1u << 27))) /* OSXSAVE */
-        return 0;
-    __asm__ volatile("xgetbv" : "=a"(xlo), "=d"(xhi) : "c"(0));
-    if ((xlo & 0xe6u) != 0xe6u) /* XMM, YMM, opmask, ZMM0-15 upper, ZMM16-31 */
-        return 0;
-    if (!__get_cpuid_count(7, 0, &a, &b, &c, &d))
-        return 0;
-    return (b >> 16) & 1u; /* AVX512F */
-}
-#endif
-int facet_cpu_sse41(void)
-{
-    unsigned a, b, c, d;
-    return __get_cpuid(1, &a, &b, &c, &d) && ((c >> 19) & 1u);
-}
-int facet_cpu_sse2(void)
-{
-#if defined(__x86_64__)
-    return 1;
-#else
-    unsigned a, b, c, d;
-    return __get_cpuid(1, &a, &b, &c, &d) && ((d >> 26) & 1u);
-#endif
-}
-#endif
-
-#if FACET_ARM
-int facet_cpu_neon(void)
-{
-#if defined(__aarch64__)
-    return 1;
-#else
-    unsigned long hw = getauxval(AT_HWCAP);
-    return (hw & (1ul << 12)) && (hw & (1ul << 16)); /* HWCAP_NEON, HWCAP_VFPv4 */
-#endif
-}
-#endif
-
-static int always(void) { return 1; }
-
-typedef struct {
-    const facet_f32_port *port;
+typedef struct port_entry {
+    const facet_f32_port *f32;
+    const facet_fx_port *fx; /* NULL: the scalar fx loops for every kernel */
     int (*supported)(void);
 } port_entry;
+
+static int always(void) { return 1; }
+#if defined(__x86_64__)
+/* the avx512 port also runs the AVX2 fx code: ask for both */
+static int avx512_and_avx2(void) { return facet_cpu_avx512f() && facet_cpu_avx2_fma(); }
+#endif
 
 /* best first */
 static const port_entry ports[] = {
 #if FACET_X86
 #if defined(__x86_64__)
-    { &facet_port_avx512_f32, facet_cpu_avx512f },
+    { &facet_port_avx512_f32, &facet_fx_port_avx2, avx512_and_avx2 },
 #endif
-    { &facet_port_avx2_f32, facet_cpu_avx2_fma },
-    { &facet_port_sse2_f32, facet_cpu_sse2 },
+    { &facet_port_avx2_f32, &facet_fx_port_avx2, facet_cpu_avx2_fma },
+    { &facet_port_sse2_f32, NULL, facet_cpu_sse2 },
 #endif
 #if FACET_ARM
-    { &facet_port_neon_f32, facet_cpu_neon },
+#if defined(__aarch64__)
+    { &facet_port_neon_f32, &facet_fx_port_neon, facet_cpu_neon },
+#else
+    { &facet_port_neon_f32, NULL, facet_cpu_neon }, /* armv7: see ports/neon/fx_neon.c */
 #endif
-    { &facet_port_scalar_f32, always },
+#endif
+    { &facet_port_scalar_f32, NULL, always },
 };
 #define N_PORTS (sizeof ports / sizeof ports[0])
+#define SCALAR_PORT (&ports[N_PORTS - 1])
 
-static const facet_f32_port *active;
-
-static const facet_f32_port *best_port(void)
+static const port_entry *find(const char *name)
 {
     size_t i;
-    const char *env = getenv("FACET_PORT");
-    if (env && *env && strcmp(env, "auto"))
-        for (i = 0; i < N_PORTS; i++)
-            if (!strcmp(env, ports[i].port->name) && ports[i].supported())
-                return ports[i].port;
-    for (i = 0; i < N_PORTS; i++)
-        if (ports[i].supported())
-            return ports[i].port;
-    return &facet_port_scalar_f32;
+    for (i = 0; name && i < N_PORTS; i++)
+        if (!strcmp(name, ports[i].f32->name))
+            return &ports[i];
+    return NULL;
 }
 
-static const facet_f32_port *port(void)
+/* FACET_PORT if it names a supported port, else the best supported one */
+static const port_entry *automatic(void)
 {
-    const facet_f32_port *p = __atomic_load_n(&active, __ATOMIC_ACQUIRE);
+    const port_entry *p = find(getenv("FACET_PORT"));
+    size_t i;
+    if (p && p->supported())
+        return p;
+    for (i = 0; i < N_PORTS; i++)
+        if (ports[i].supported())
+            return &ports[i];
+    return SCALAR_PORT;
+}
+
+static const port_entry *active; /* NULL: not chosen yet */
+
+static const port_entry *port(void)
+{
+    const port_entry *p = __atomic_load_n(&active, __ATOMIC_ACQUIRE);
     if (!p) {
-        p = best_port();
-        __atomic_store_n(&active, p, __ATOMIC_RELEASE);
+        const port_entry *mine = automatic();
+        /* installs ours unless another thread chose first; p gets theirs */
+        if (__atomic_compare_exchange_n(&active, &p, mine, 0, __ATOMIC_ACQ_REL, __ATOMIC_ACQUIRE))
+            p = mine;
     }
     return p;
 }
 
 int facet_set_port(const char *name)
 {
-    size_t i;
+    const port_entry *p;
     if (!name || !strcmp(name, "auto")) {
-        __atomic_store_n(&active, (const facet_f32_port *)NULL, __ATOMIC_RELEASE);
-        (void)port();
+        __atomic_store_n(&active, automatic(), __ATOMIC_RELEASE);
         return 0;
     }
-    for (i = 0; i < N_PORTS; i++)
-        if (!strcmp(name, ports[i].port->name)) {
-            if (!ports[i].supported())
-                return 2;
-            __atomic_store_n(&active, ports[i].port, __ATOMIC_RELEASE);
-            return 0;
-        }
-    return 1;
+    p = find(name);
+    if (!p)
+        return 1;
+    if (!p->supported())
+        return 2;
+    __atomic_store_n(&active, p, __ATOMIC_RELEASE);
+    return 0;
 }
 
-const char *facet_port_name(void) { return port()->name; }
+const char *facet_port_name(void) { return port()->f32->name; }
+
+const char *facet_fx_port_name(void) { return facet_fx_active_port()->name; }
 
 size_t facet_port_count(void) { return N_PORTS; }
 
@@ -162,25 +127,32 @@ const char *facet_port_at(size_t i, int *supported, int *lanes)
     if (supported)
         *supported = ports[i].supported();
     if (lanes)
-        *lanes = ports[i].port->lanes;
-    return ports[i].port->name;
+        *lanes = ports[i].f32->lanes;
+    return ports[i].f32->name;
 }
 
-/* the public batch entry points */
-#define P1 const float *a
-#define P2 P1, const float *b
-#define P3 P2, const float *c
-#define P5 P3, const float *d, const float *e
-#define P6 P5, const float *f
-#define A1 a
-#define A2 A1, b
-#define A3 A2, c
-#define A5 A3, d, e
-#define A6 A5, f
-#define K(name, NAME, n, ...)                                      \
-    void facet_##name##_f32_batch(float *out, P##n, size_t count)  \
-    {                                                              \
-        port()->name(out, A##n, count);                            \
+int facet_port_supported(const char *name)
+{
+    const port_entry *p = find(name);
+    return p && p->supported();
+}
+
+/* ---- the public batch entry points -------------------------------------- */
+#define F32_PARAM_(q) const float *x##q
+#define FX_PARAM_(q) const int32_t *x##q
+#define ARG_(q) x##q
+
+#define FACET_KERNEL(name, NAME, n, fx_type, ...)                                    \
+    void facet_##name##_f32_batch(float *out, FACET_EACH_INPUT(n, F32_PARAM_), size_t count) \
+    {                                                                                \
+        port()->f32->name(out, FACET_EACH_INPUT(n, ARG_), count);                    \
     }
 #include "kernels.def"
-#undef K
+#undef FACET_KERNEL
+
+/* the fx batch entry points (src/fx_batch.c) ask here */
+const facet_fx_port *facet_fx_active_port(void)
+{
+    const facet_fx_port *fx = port()->fx;
+    return fx ? fx : &facet_fx_port_scalar;
+}

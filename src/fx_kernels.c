@@ -11,19 +11,17 @@
  */
 #include "facet/fx.h"
 #include "fx_core.h"
-#include "fx_port.h"
+#include "port.h"
+#include "fx_ops_scalar.h"
+#include "fx_body.h" /* the kernels written over lanes, here on one lane */
 
 #define ONE 32768u
 
-static uint32_t clamp_(int32_t x, int32_t lo, int32_t hi)
-{
-    return (uint32_t)(x < lo ? lo : x > hi ? hi : x);
-}
-static uint32_t unit_(int32_t x) { return clamp_(x, 0, FACET_FX_ONE); }
-static uint32_t cos_(int32_t x) { return clamp_(x, FACET_FX_COS_MIN, FACET_FX_ONE); }
-static uint32_t alpha_(int32_t x) { return clamp_(x, FACET_FX_ALPHA_MIN, FACET_FX_ONE); }
+static uint32_t unit_(int32_t x) { return fxv_clamp(x, 0, FACET_FX_ONE); }
+static uint32_t cos_(int32_t x) { return fxv_clamp(x, FACET_FX_COS_MIN, FACET_FX_ONE); }
+static uint32_t alpha_(int32_t x) { return fxv_clamp(x, FACET_FX_ALPHA_MIN, FACET_FX_ONE); }
 /* T = (1 + L.V) 2^15 in [0, 2^16] */
-static uint32_t t_(int32_t lov) { return clamp_(lov, -FACET_FX_ONE, FACET_FX_ONE) + ONE; }
+static uint32_t t_(int32_t lov) { return (uint32_t)(lov < -FACET_FX_ONE ? -FACET_FX_ONE : lov > FACET_FX_ONE ? FACET_FX_ONE : lov) + ONE; }
 
 /* a 64-bit x times a 32-bit y, the product known to fit 64 bits */
 static uint64_t mul64x32(uint64_t x, uint32_t y)
@@ -68,25 +66,10 @@ int32_t facet_loh_from_dots_fx(int32_t lov)
     return (int32_t)fx_isqrt64_rnd((uint64_t)t_(lov) << 14);
 }
 
-/* ---- Fresnel ------------------------------------------------------------------
- * F = f0 + (1 - f0) y^5, y = 1 - cos.  With Y = 2^15 - C exact:
- *   raw = F0 + round((2^15 - F0) Y^5 / 2^75),
- * the product Z = P Y^4 (P = Y (2^15 - F0) <= 2^30, Y^4 Q60 exact) kept to 90
- * bits as hi/lo words, so the one rounding is of the exact value.
- * F(f0, 1) = f0 and F(f0, 0) = 1 exactly.
- * Error: 0 LSB (correctly rounded).  Cost: 2 mul32, 3 mul64. */
-static uint32_t fresnel_(uint32_t f0, uint32_t y)
-{
-    uint32_t p = y * (ONE - f0);                 /* <= 2^30 */
-    uint64_t y4 = fx_mul64(y * y, y * y);         /* Q60, y^2 <= 2^30 */
-    uint64_t lo = fx_mul64(p, (uint32_t)y4);      /* < 2^62 */
-    uint64_t zhi = fx_mul64(p, (uint32_t)(y4 >> 32)) + (lo >> 32); /* Z / 2^32 < 2^59 */
-    return f0 + (uint32_t)((zhi >> 43) + ((zhi >> 42) & 1u)); /* round(Z / 2^75) */
-}
-
+/* ---- Fresnel: src/fx_body.h (written over lanes) ------------------------- */
 int32_t facet_fresnel_schlick_fx(int32_t f0, int32_t cos_theta)
 {
-    return (int32_t)fresnel_(unit_(f0), ONE - unit_(cos_theta));
+    return (int32_t)fxb_fresnel_schlick(f0, cos_theta);
 }
 
 /* ---- GGX D --------------------------------------------------------------------
@@ -225,7 +208,7 @@ uint32_t facet_smith_vis_hammon_fx(int32_t nol, int32_t nov, int32_t alpha)
  *   smooth = 1.05 P(nl) P(nv),  P(x) = 1 - (1 - x)^5
  *   result = albedo / pi ((1 - alpha) smooth + alpha rough + albedo 0.1159 pi alpha)
  * 4.5 - t = (9 2^30 - t31) 2^-31 and 2 - t are exact; P(x) is exact to Q30
- * (fresnel_'s 90-bit product), everything else fxf (all terms >= 0: no
+ * (fxb_p_y4_hi's 90-bit product), everything else fxf (all terms >= 0: no
  * cancellation).  Max 20.65 at nl = nv = FACET_FX_COS_MIN, L.V = 1, alpha =
  * albedo = 1 (N.H = 2^-8) [UQ8.24 raw < 2^28.4]. */
 #define C105_M 0x86666666u    /* round(1.05 2^31), e = -31 */
@@ -240,14 +223,12 @@ static fxf k_(uint32_t m, int32_t e)
     return r;
 }
 
-/* 1 - (1 - x)^5 in Q30: 2^30 - round(Y^5 / 2^45) [Y^5 Q75 as in fresnel_] */
+/* 1 - (1 - x)^5 in Q30: 2^30 - round(Y^5 / 2^45) [Y^5 Q75 exact as in
+ * Fresnel: fxb_p_y4_hi(Y, Y) = Y^5 / 2^32 < 2^44] */
 static uint32_t one_minus_pow5_q30_(uint32_t x)
 {
     uint32_t y = ONE - x;
-    uint64_t y4 = fx_mul64(y * y, y * y);
-    uint64_t lo = fx_mul64(y, (uint32_t)y4);
-    uint64_t zhi = fx_mul64(y, (uint32_t)(y4 >> 32)) + (lo >> 32); /* Y^5 / 2^32 < 2^44 */
-    return (1u << 30) - (uint32_t)((zhi >> 13) + ((zhi >> 12) & 1u));
+    return (1u << 30) - fxv_narrow(fxb_rshr64(fxb_p_y4_hi(y, y), 13));
 }
 
 /* diffuse as fxf from the shared pieces; nl, nv, a, alb raw, t31 raised */
@@ -310,67 +291,26 @@ uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alp
 }
 
 /* ---- the scalar port's batches ------------------------------------------
- * The public facet_<kernel>_fx_batch entry points are in src/fx_dispatch.c;
- * they route here unless the active port has an fx implementation (ports/
- * <isa>/fx_<isa>.c), which must give the same bits.  Each element is read
- * before its output is written, so out may be the same array as an input. */
-#define B1(k, T)                                                                 \
-    static void scalar_##k(T *out, const int32_t *x0, size_t n)                 \
-    {                                                                            \
-        size_t i;                                                                \
-        for (i = 0; i < n; i++)                                                  \
-            out[i] = facet_##k##_fx(x0[i]);                                      \
-    }
-#define B2(k, T)                                                                 \
-    static void scalar_##k(T *out, const int32_t *x0, const int32_t *x1, size_t n) \
-    {                                                                            \
-        size_t i;                                                                \
-        for (i = 0; i < n; i++)                                                  \
-            out[i] = facet_##k##_fx(x0[i], x1[i]);                               \
-    }
-#define B3(k, T)                                                                 \
-    static void scalar_##k(T *out, const int32_t *x0, const int32_t *x1,        \
-                           const int32_t *x2, size_t n)                          \
-    {                                                                            \
-        size_t i;                                                                \
-        for (i = 0; i < n; i++)                                                  \
-            out[i] = facet_##k##_fx(x0[i], x1[i], x2[i]);                        \
-    }
-
-B3(noh_from_dots, int32_t)
-B1(loh_from_dots, int32_t)
-B2(fresnel_schlick, int32_t)
-B2(ggx_d, uint32_t)
-B2(smith_g1, int32_t)
-B3(smith_g2, int32_t)
-B3(smith_g2_uncorrelated, int32_t)
-B3(smith_vis, uint32_t)
-B2(smith_g1_hammon, int32_t)
-B3(smith_g2_hammon, int32_t)
-B3(smith_vis_hammon, uint32_t)
-
-static void scalar_diffuse_hammon(uint32_t *out, const int32_t *nol, const int32_t *nov,
-                                  const int32_t *lov, const int32_t *alpha,
-                                  const int32_t *albedo, size_t n)
-{
-    size_t i;
-    for (i = 0; i < n; i++)
-        out[i] = facet_diffuse_hammon_fx(nol[i], nov[i], lov[i], alpha[i], albedo[i]);
-}
-
-static void scalar_brdf_hammon(uint64_t *out, const int32_t *nol, const int32_t *nov,
-                               const int32_t *lov, const int32_t *alpha, const int32_t *f0,
-                               const int32_t *albedo, size_t n)
-{
-    size_t i;
-    for (i = 0; i < n; i++)
-        out[i] = facet_brdf_hammon_fx(nol[i], nov[i], lov[i], alpha[i], f0[i], albedo[i]);
-}
+ * The public facet_<kernel>_fx_batch entry points are in src/dispatch.c;
+ * they run these loops unless the active port has code of its own for the
+ * kernel (ports/<isa>/fx_<isa>.c), which gives the same bits.  Each element
+ * is read before its output is written, so out may be the same array as an
+ * input.  Names generated here from src/kernels.def: one loop per kernel. */
+#define PARAM_(q) const int32_t *x##q
+#define AT_(q) x##q[i]
+#define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type,              \
+    static void scalar_##name(fx_type *out, FACET_EACH_INPUT(n, PARAM_), size_t count) \
+    {                                                                               \
+        size_t i;                                                                   \
+        for (i = 0; i < count; i++)                                                 \
+            out[i] = facet_##name##_fx(FACET_EACH_INPUT(n, AT_));                   \
+    })
+#include "kernels.def"
+#undef FACET_KERNEL
 
 const facet_fx_port facet_fx_port_scalar = {
-    "scalar", 1, FX_ALL,
-    scalar_noh_from_dots, scalar_loh_from_dots, scalar_fresnel_schlick, scalar_ggx_d,
-    scalar_smith_g1, scalar_smith_g2, scalar_smith_g2_uncorrelated, scalar_smith_vis,
-    scalar_smith_g1_hammon, scalar_smith_g2_hammon, scalar_smith_vis_hammon,
-    scalar_diffuse_hammon, scalar_brdf_hammon,
+    "scalar", 1,
+#define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type, scalar_##name,)
+#include "kernels.def"
+#undef FACET_KERNEL
 };

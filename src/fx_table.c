@@ -1,62 +1,37 @@
 /* fx_table.c - the fixed-point kernel table behind facet_fx_kernel_at/find:
- * the same kernels, order and input names as the f32 table (kernels.def),
- * with each input's raw Q15 domain and the output format. */
+ * the kernels of src/kernels.def that have a fixed-point version, in its
+ * order, with each input's raw Q15 domain and the output format.
+ * Names generated here from src/kernels.def: one table row and its two
+ * array-argument wrappers per fixed-point kernel. */
 #include <string.h>
 #include "facet/fx.h"
+#include "kernel_list.h"
 
-#define U_ 0, FACET_FX_ONE                 /* [0, 1] */
-#define C_ FACET_FX_COS_MIN, FACET_FX_ONE  /* two-cosine kernels' N.L, N.V */
-#define A_ FACET_FX_ALPHA_MIN, FACET_FX_ONE
-#define L_ -FACET_FX_ONE, FACET_FX_ONE
+#define SAMPLE_(q) in[q]
+#define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type,                     \
+    static uint64_t fx_##name(const int32_t *in)                                           \
+    {                                                                                      \
+        return (uint64_t)(fx_type)facet_##name##_fx(FACET_EACH_INPUT(n, SAMPLE_)) & FX_MASK_##fx_type; \
+    }                                                                                      \
+    static void batch_##name(void *out, const int32_t *const *in, size_t count)            \
+    {                                                                                      \
+        facet_##name##_fx_batch((fx_type *)out, FACET_EACH_INPUT(n, SAMPLE_), count);      \
+    })
+/* a raw output widened: the container's bits (Q15 outputs are >= 0) */
+#define FX_MASK_int32_t 0xFFFFFFFFu
+#define FX_MASK_uint32_t 0xFFFFFFFFu
+#define FX_MASK_uint64_t 0xFFFFFFFFFFFFFFFFull
+#include "kernels.def"
+#undef FACET_KERNEL
 
-static uint64_t w_noh_from_dots(const int32_t *in) { return (uint32_t)facet_noh_from_dots_fx(in[0], in[1], in[2]); }
-static uint64_t w_loh_from_dots(const int32_t *in) { return (uint32_t)facet_loh_from_dots_fx(in[0]); }
-static uint64_t w_fresnel_schlick(const int32_t *in) { return (uint32_t)facet_fresnel_schlick_fx(in[0], in[1]); }
-static uint64_t w_ggx_d(const int32_t *in) { return facet_ggx_d_fx(in[0], in[1]); }
-static uint64_t w_smith_g1(const int32_t *in) { return (uint32_t)facet_smith_g1_fx(in[0], in[1]); }
-static uint64_t w_smith_g2(const int32_t *in) { return (uint32_t)facet_smith_g2_fx(in[0], in[1], in[2]); }
-static uint64_t w_smith_g2_uncorrelated(const int32_t *in) { return (uint32_t)facet_smith_g2_uncorrelated_fx(in[0], in[1], in[2]); }
-static uint64_t w_smith_vis(const int32_t *in) { return facet_smith_vis_fx(in[0], in[1], in[2]); }
-static uint64_t w_smith_g1_hammon(const int32_t *in) { return (uint32_t)facet_smith_g1_hammon_fx(in[0], in[1]); }
-static uint64_t w_smith_g2_hammon(const int32_t *in) { return (uint32_t)facet_smith_g2_hammon_fx(in[0], in[1], in[2]); }
-static uint64_t w_smith_vis_hammon(const int32_t *in) { return facet_smith_vis_hammon_fx(in[0], in[1], in[2]); }
-static uint64_t w_diffuse_hammon(const int32_t *in) { return facet_diffuse_hammon_fx(in[0], in[1], in[2], in[3], in[4]); }
-static uint64_t w_brdf_hammon(const int32_t *in) { return facet_brdf_hammon_fx(in[0], in[1], in[2], in[3], in[4], in[5]); }
-
-/* name, inputs, domains (lo/hi interleaved per input), frac, bits, format */
 static const facet_fx_kernel table[] = {
-    { "noh_from_dots", 3, { "nol", "nov", "lov" }, { FACET_FX_COS_MIN, FACET_FX_COS_MIN, -FACET_FX_ONE },
-      { FACET_FX_ONE, FACET_FX_ONE, FACET_FX_ONE }, 15, 32, "Q15", w_noh_from_dots, FACET_FX_ERR_NOH_FROM_DOTS },
-    { "loh_from_dots", 1, { "lov" }, { -FACET_FX_ONE }, { FACET_FX_ONE }, 15, 32, "Q15",
-      w_loh_from_dots, FACET_FX_ERR_LOH_FROM_DOTS },
-    { "fresnel_schlick", 2, { "f0", "cos" }, { 0, 0 }, { FACET_FX_ONE, FACET_FX_ONE }, 15, 32, "Q15",
-      w_fresnel_schlick, FACET_FX_ERR_FRESNEL_SCHLICK },
-    { "ggx_d", 2, { "noh", "alpha" }, { 0, FACET_FX_ALPHA_MIN }, { FACET_FX_ONE, FACET_FX_ONE }, 13, 32,
-      "UQ19.13", w_ggx_d, FACET_FX_ERR_GGX_D },
-    { "smith_g1", 2, { "nov", "alpha" }, { 0, FACET_FX_ALPHA_MIN }, { FACET_FX_ONE, FACET_FX_ONE }, 15, 32,
-      "Q15", w_smith_g1, FACET_FX_ERR_SMITH_G1 },
-    { "smith_g2", 3, { "nol", "nov", "alpha" }, { FACET_FX_COS_MIN, FACET_FX_COS_MIN, FACET_FX_ALPHA_MIN },
-      { FACET_FX_ONE, FACET_FX_ONE, FACET_FX_ONE }, 15, 32, "Q15", w_smith_g2, FACET_FX_ERR_SMITH_G2 },
-    { "smith_g2_uncorrelated", 3, { "nol", "nov", "alpha" },
-      { FACET_FX_COS_MIN, FACET_FX_COS_MIN, FACET_FX_ALPHA_MIN }, { FACET_FX_ONE, FACET_FX_ONE, FACET_FX_ONE },
-      15, 32, "Q15", w_smith_g2_uncorrelated, FACET_FX_ERR_SMITH_G2_UNCORRELATED },
-    { "smith_vis", 3, { "nol", "nov", "alpha" }, { FACET_FX_COS_MIN, FACET_FX_COS_MIN, FACET_FX_ALPHA_MIN },
-      { FACET_FX_ONE, FACET_FX_ONE, FACET_FX_ONE }, 16, 32, "UQ16.16", w_smith_vis, FACET_FX_ERR_SMITH_VIS },
-    { "smith_g1_hammon", 2, { "nov", "alpha" }, { 0, FACET_FX_ALPHA_MIN }, { FACET_FX_ONE, FACET_FX_ONE },
-      15, 32, "Q15", w_smith_g1_hammon, FACET_FX_ERR_SMITH_G1_HAMMON },
-    { "smith_g2_hammon", 3, { "nol", "nov", "alpha" }, { FACET_FX_COS_MIN, FACET_FX_COS_MIN, FACET_FX_ALPHA_MIN },
-      { FACET_FX_ONE, FACET_FX_ONE, FACET_FX_ONE }, 15, 32, "Q15", w_smith_g2_hammon, FACET_FX_ERR_SMITH_G2_HAMMON },
-    { "smith_vis_hammon", 3, { "nol", "nov", "alpha" }, { FACET_FX_COS_MIN, FACET_FX_COS_MIN, FACET_FX_ALPHA_MIN },
-      { FACET_FX_ONE, FACET_FX_ONE, FACET_FX_ONE }, 16, 32, "UQ16.16", w_smith_vis_hammon,
-      FACET_FX_ERR_SMITH_VIS_HAMMON },
-    { "diffuse_hammon", 5, { "nol", "nov", "lov", "alpha", "albedo" },
-      { FACET_FX_COS_MIN, FACET_FX_COS_MIN, -FACET_FX_ONE, FACET_FX_ALPHA_MIN, 0 },
-      { FACET_FX_ONE, FACET_FX_ONE, FACET_FX_ONE, FACET_FX_ONE, FACET_FX_ONE }, 24, 32, "UQ8.24",
-      w_diffuse_hammon, FACET_FX_ERR_DIFFUSE_HAMMON },
-    { "brdf_hammon", 6, { "nol", "nov", "lov", "alpha", "f0", "albedo" },
-      { FACET_FX_COS_MIN, FACET_FX_COS_MIN, -FACET_FX_ONE, FACET_FX_ALPHA_MIN, 0, 0 },
-      { FACET_FX_ONE, FACET_FX_ONE, FACET_FX_ONE, FACET_FX_ONE, FACET_FX_ONE, FACET_FX_ONE }, 24, 64, "UQ40.24",
-      w_brdf_hammon, FACET_FX_ERR_BRDF_HAMMON },
+#define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...) FACET_IF_FX(fx_type, \
+    { #name, n, { FACET_MAP_INPUTS(n, FACET_IN_NAME, __VA_ARGS__) },                              \
+      { FACET_MAP_INPUTS(n, FACET_IN_LO, __VA_ARGS__) },                                          \
+      { FACET_MAP_INPUTS(n, FACET_IN_HI, __VA_ARGS__) }, fx_frac, (int)(8 * sizeof(fx_type)),      \
+      fx_format, fx_max, fx_##name, batch_##name, FACET_FX_ERR_##NAME },)
+#include "kernels.def"
+#undef FACET_KERNEL
 };
 
 size_t facet_fx_kernel_count(void) { return sizeof table / sizeof table[0]; }

@@ -1,42 +1,54 @@
-/* port.h - what a port gives the dispatcher: a batch function per kernel.
- * Private to the library. */
+/* port.h - what a port gives the dispatcher (src/dispatch.c): a batch
+ * function per kernel and format.  Private to the library.
+ * Names generated here from src/kernels.def: the members of
+ * facet_f32_port and facet_fx_port. */
 #ifndef FACET_PORT_H
 #define FACET_PORT_H
 
 #include <stddef.h>
+#include <stdint.h>
+#include "kernel_list.h"
 
-typedef void (*facet_batch1)(float *, const float *, size_t);
-typedef void (*facet_batch2)(float *, const float *, const float *, size_t);
-typedef void (*facet_batch3)(float *, const float *, const float *, const float *, size_t);
-typedef void (*facet_batch5)(float *, const float *, const float *, const float *, const float *,
-                             const float *, size_t);
-typedef void (*facet_batch6)(float *, const float *, const float *, const float *, const float *,
-                             const float *, const float *, size_t);
+#define FACET_F32_PARAM_(q) const float *x##q
+#define FACET_FX_PARAM_(q) const int32_t *x##q
 
+/* f32: out[i] = facet_<name>_f32(x0[i], ...), any n, out may be an input */
 typedef struct facet_f32_port {
     const char *name;
     int lanes;
-#define K(name, NAME, n, ...) facet_batch##n name;
+#define FACET_KERNEL(name, NAME, n, fx_type, ...) \
+    void (*name)(float *out, FACET_EACH_INPUT(n, FACET_F32_PARAM_), size_t count);
 #include "kernels.def"
-#undef K
+#undef FACET_KERNEL
 } facet_f32_port;
 
-/* CPU features (dispatch.c); each exists only on its architecture. */
-#if defined(__x86_64__) || defined(__i386__)
-int facet_cpu_avx2_fma(void); /* AVX2 + FMA, and the OS saves YMM state */
-#if defined(__x86_64__)
-int facet_cpu_avx512f(void);  /* AVX-512F, and the OS saves ZMM and opmask state */
-#endif
-int facet_cpu_sse41(void);
-int facet_cpu_sse2(void);
-#elif defined(__aarch64__) || (defined(__arm__) && defined(__linux__))
-int facet_cpu_neon(void); /* armv7: NEON and VFPv4 in HWCAP */
-#endif
+/* fx: bit-identical to the scalar specification (src/fx_kernels.c).  A
+ * NULL member means the port has no code of its own for that kernel (none
+ * measured faster than the scalar loop): the dispatcher runs the scalar
+ * port's loop. */
+typedef struct facet_fx_port {
+    const char *name;
+    int lanes;
+#define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type, \
+    void (*name)(fx_type *out, FACET_EACH_INPUT(n, FACET_FX_PARAM_), size_t count);)
+#include "kernels.def"
+#undef FACET_KERNEL
+} facet_fx_port;
 
+/* f32 ports: src/f32_batch_scalar.c, ports/<isa>/f32_<isa>.c */
 extern const facet_f32_port facet_port_scalar_f32;
 extern const facet_f32_port facet_port_sse2_f32;
 extern const facet_f32_port facet_port_avx2_f32;
 extern const facet_f32_port facet_port_avx512_f32;
 extern const facet_f32_port facet_port_neon_f32;
+/* fx ports: src/fx_kernels.c (every kernel), ports/<isa>/fx_<isa>.c */
+extern const facet_fx_port facet_fx_port_scalar;
+extern const facet_fx_port facet_fx_port_avx2;
+extern const facet_fx_port facet_fx_port_neon;
+
+
+/* the fx port of the active port, never NULL: src/dispatch.c, or in a build
+ * without the dispatcher (firmware) src/fx_only/fx_active_scalar.c */
+const facet_fx_port *facet_fx_active_port(void);
 
 #endif

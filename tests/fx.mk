@@ -5,9 +5,10 @@
 #   $(BUILD)/fx/<target>/test_fx_hash[.elf]   the pinned-hash test per target
 #   $(BUILD)/fx/<cpu>/fx_kernels.o            Cortex-M objects for the size table
 #   $(BUILD)/fx/rv32/fx.elf                   freestanding RV32IMC link check
-FX_KSRC   := src/fx_core.c src/fx_kernels.c
+FX_KSRC   := src/fx_core.c src/fx_kernels.c src/fx_batch.c src/fx_only/fx_active_scalar.c
 FX_TSRC   := $(FX_KSRC) src/fx_table.c
-FX_HDRS   := include/facet/fx.h src/fx_core.h src/fx_port.h tests/harness.h tests/fx_hash.h
+FX_HDRS   := include/facet/fx.h $(wildcard src/fx_*.h) src/port.h src/kernel_list.h src/kernels.def \
+             tests/harness.h tests/fx_hash.h
 FX_CFLAGS := $(WARN) -Iinclude -O2
 FX_CM_CC  ?= arm-none-eabi-gcc
 FX_RV_CC  ?= riscv64-linux-gnu-gcc

@@ -1,5 +1,6 @@
 /* test_fx_ports.c - the fixed-point batch API on every port this CPU runs
- * (facet_set_port; the fx implementation follows the f32 port by name):
+ * (facet_set_port; each port runs its own fx code where it has some, the
+ * scalar loops elsewhere):
  * bit-exact equality with the scalar kernels (the specification) on large
  * random sets over the whole int32 range - in domain, near it, anywhere,
  * and edge values - every tail length 0 .. 3*16+1, unaligned pointers, out
@@ -16,7 +17,6 @@
 #include "facet/fx.h"
 #include "fx_test.h"
 #include "fx_hash.h"
-#include "../src/fx_port.h" /* facet_fx_dispatch_all_vector */
 #if defined(__x86_64__) || defined(__i386__)
 #include <x86intrin.h>
 #endif
@@ -26,21 +26,7 @@
 /* the public batch entry point of k; out holds out_bits/8-byte elements */
 static void batch(const facet_fx_kernel *k, void *out, int32_t *const *in, size_t n)
 {
-    const char *m = k->name;
-    if (!strcmp(m, "noh_from_dots")) facet_noh_from_dots_fx_batch(out, in[0], in[1], in[2], n);
-    else if (!strcmp(m, "loh_from_dots")) facet_loh_from_dots_fx_batch(out, in[0], n);
-    else if (!strcmp(m, "fresnel_schlick")) facet_fresnel_schlick_fx_batch(out, in[0], in[1], n);
-    else if (!strcmp(m, "ggx_d")) facet_ggx_d_fx_batch(out, in[0], in[1], n);
-    else if (!strcmp(m, "smith_g1")) facet_smith_g1_fx_batch(out, in[0], in[1], n);
-    else if (!strcmp(m, "smith_g2")) facet_smith_g2_fx_batch(out, in[0], in[1], in[2], n);
-    else if (!strcmp(m, "smith_g2_uncorrelated")) facet_smith_g2_uncorrelated_fx_batch(out, in[0], in[1], in[2], n);
-    else if (!strcmp(m, "smith_vis")) facet_smith_vis_fx_batch(out, in[0], in[1], in[2], n);
-    else if (!strcmp(m, "smith_g1_hammon")) facet_smith_g1_hammon_fx_batch(out, in[0], in[1], n);
-    else if (!strcmp(m, "smith_g2_hammon")) facet_smith_g2_hammon_fx_batch(out, in[0], in[1], in[2], n);
-    else if (!strcmp(m, "smith_vis_hammon")) facet_smith_vis_hammon_fx_batch(out, in[0], in[1], in[2], n);
-    else if (!strcmp(m, "diffuse_hammon")) facet_diffuse_hammon_fx_batch(out, in[0], in[1], in[2], in[3], in[4], n);
-    else if (!strcmp(m, "brdf_hammon")) facet_brdf_hammon_fx_batch(out, in[0], in[1], in[2], in[3], in[4], in[5], n);
-    else CHECK(0, "%s: no batch call in this test", m);
+    k->fx_batch(out, (const int32_t *const *)in, n);
 }
 
 static uint64_t get(const facet_fx_kernel *k, const void *out, size_t i)
@@ -269,12 +255,7 @@ int main(void)
             fxn = facet_fx_port_name();
             CHECK(!strcmp(fxn, pn) || !strcmp(fxn, "scalar") || (!strcmp(pn, "avx512") && !strcmp(fxn, "avx2")),
                   "%s: fx port %s", pn, fxn);
-            test_kernel_port(k, pn); /* as dispatched (vector code where measured faster) */
-            if (strcmp(fxn, "scalar")) { /* and the port's vector code for every kernel */
-                facet_fx_dispatch_all_vector(1);
-                test_kernel_port(k, pn);
-                facet_fx_dispatch_all_vector(0);
-            }
+            test_kernel_port(k, pn); /* as dispatched: the port's own code where it has some */
             if (timing) {
                 double t = time_batch(k);
                 if (!strcmp(fxn, "scalar") && !strcmp(pn, "scalar"))
@@ -296,14 +277,14 @@ int main(void)
         if (!strcmp(pn, "avx2") || !strcmp(pn, "avx512"))
             CHECK(!strcmp(facet_fx_port_name(), "avx2"), "%s: the fx kernels run on avx2", pn);
 #endif
-#if defined(__aarch64__) || (defined(__arm__) && defined(__linux__))
+#if defined(__aarch64__)
         if (!strcmp(pn, "neon"))
-            CHECK(!strcmp(facet_fx_port_name(), "neon"), "neon: the fx kernels run vectorised");
+            CHECK(!strcmp(facet_fx_port_name(), "neon"), "neon: the fx lanes code runs");
+#elif defined(__arm__) && defined(__linux__)
+        if (!strcmp(pn, "neon"))
+            CHECK(!strcmp(facet_fx_port_name(), "scalar"), "armv7 neon: the scalar fx loops run");
 #endif
         test_hash(pn);
-        facet_fx_dispatch_all_vector(1);
-        test_hash(pn);
-        facet_fx_dispatch_all_vector(0);
     }
     facet_set_port("auto");
     printf("fx_ports: %ld random outputs compared bit for bit (%lu per kernel and port)\n",

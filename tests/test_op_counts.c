@@ -11,6 +11,7 @@
 #include <string.h>
 #include "harness.h"
 #include "facet.h"
+#include "../src/kernel_list.h"
 
 static long n_ops, n_rcp, n_rsqrt;
 
@@ -36,11 +37,7 @@ static float cnt_sqr_err(float a, float p) { n_ops++; return (float)((double)a *
 #undef FACET_OP
 #undef FACET_K
 
-#define C1(k) count_##k(0.5f)
-#define C2(k) count_##k(0.5f, 0.5f)
-#define C3(k) count_##k(0.5f, 0.5f, 0.5f)
-#define C5(k) count_##k(0.5f, 0.5f, 0.5f, 0.5f, 0.5f)
-#define C6(k) count_##k(0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f)
+#define HALF_(q) 0.5f
 
 typedef struct { const char *name; long ops, rcp, rsqrt; } counted;
 
@@ -52,12 +49,12 @@ int main(void)
     long len;
     FILE *f;
     th_name = "op_counts";
-#define K(kn, NAME, ar, ...)                                           \
+#define FACET_KERNEL(kn, NAME, ar, ...)                                \
     n_ops = n_rcp = n_rsqrt = 0;                                       \
-    (void)C##ar(kn);                                                   \
+    (void)count_##kn(FACET_EACH_INPUT(ar, HALF_));                     \
     c[n].name = #kn; c[n].ops = n_ops; c[n].rcp = n_rcp; c[n].rsqrt = n_rsqrt; n++;
 #include "../src/kernels.def"
-#undef K
+#undef FACET_KERNEL
     f = fopen("include/facet.h", "rb");
     if (!f) {
         CHECK(0, "include/facet.h not found (run from the source tree's top)");

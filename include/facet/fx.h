@@ -171,7 +171,11 @@ typedef struct facet_fx_kernel {
     int out_frac;                           /* fraction bits of the output */
     int out_bits;                           /* 32 or 64 (container) */
     const char *out_format;                 /* "Q15", "UQ19.13", ... */
+    uint64_t out_max;                       /* saturation value (raw) */
     uint64_t (*fx)(const int32_t *in);      /* the kernel, raw output widened */
+    /* batch on the active port: out[i] = kernel(in[0][i], ...), out an
+     * array of the output container (out_bits) */
+    void (*fx_batch)(void *out, const int32_t *const *in, size_t n);
     double err_lsb;                         /* FACET_FX_ERR_<NAME>: max |error| in LSB */
 } facet_fx_kernel;
 

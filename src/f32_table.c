@@ -1,0 +1,44 @@
+/* f32_table.c - the kernel table behind facet_kernel_at/find.
+ * Names generated here from src/kernels.def: one table row and its three
+ * array-argument wrappers per kernel. */
+#include <string.h>
+#include "facet.h"
+#include "facet/oracle.h"
+#include "kernel_list.h"
+
+#define SAMPLE_(q) in[q]
+#define FACET_KERNEL(name, NAME, n, ...)                                                       \
+    static float f32_##name(const float *in) { return facet_##name##_f32(FACET_EACH_INPUT(n, SAMPLE_)); } \
+    static double oracle_##name(const double *in)                                              \
+    {                                                                                          \
+        return facet_oracle_##name(FACET_EACH_INPUT(n, SAMPLE_));                              \
+    }                                                                                          \
+    static void batch_##name(float *out, const float *const *in, size_t count)                 \
+    {                                                                                          \
+        facet_##name##_f32_batch(out, FACET_EACH_INPUT(n, SAMPLE_), count);                    \
+    }
+#include "kernels.def"
+#undef FACET_KERNEL
+
+static const facet_kernel table[] = {
+#define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...) \
+    { #name, n, { FACET_MAP_INPUTS(n, FACET_IN_NAME, __VA_ARGS__) }, f32_##name, oracle_##name, batch_##name, FACET_ERR_##NAME##_F32 },
+#include "kernels.def"
+#undef FACET_KERNEL
+};
+
+size_t facet_kernel_count(void) { return sizeof table / sizeof table[0]; }
+
+const facet_kernel *facet_kernel_at(size_t i)
+{
+    return i < facet_kernel_count() ? &table[i] : NULL;
+}
+
+const facet_kernel *facet_kernel_find(const char *name)
+{
+    size_t i;
+    for (i = 0; name && i < facet_kernel_count(); i++)
+        if (strcmp(table[i].name, name) == 0)
+            return &table[i];
+    return NULL;
+}

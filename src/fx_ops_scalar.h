@@ -1,0 +1,30 @@
+/* fx_ops_scalar.h - the lane op layer of src/fx_body.h on one lane: plain
+ * uint32_t / uint64_t C, the fixed-point specification.  Products go
+ * through fx_mul64 (one UMULL, or four 16x16 MULS on ARMv6-M). */
+#ifndef FACET_FX_OPS_SCALAR_H
+#define FACET_FX_OPS_SCALAR_H
+
+#include <stdint.h>
+#include "fx_core.h"
+
+typedef int32_t fxv_i32;
+typedef uint32_t fxv_u32;
+typedef uint64_t fxv_u64;
+
+static inline fxv_u32 fxv_k32(uint32_t c) { return c; }
+static inline fxv_u32 fxv_clamp(fxv_i32 x, int32_t lo, int32_t hi)
+{
+    return (uint32_t)(x < lo ? lo : x > hi ? hi : x);
+}
+static inline fxv_u32 fxv_add32(fxv_u32 a, fxv_u32 b) { return a + b; }
+static inline fxv_u32 fxv_sub32(fxv_u32 a, fxv_u32 b) { return a - b; }
+static inline fxv_u32 fxv_mul32(fxv_u32 a, fxv_u32 b) { return a * b; }
+static inline fxv_u64 fxv_mulw(fxv_u32 a, fxv_u32 b) { return fx_mul64(a, b); }
+static inline fxv_u64 fxv_add64(fxv_u64 a, fxv_u64 b) { return a + b; }
+static inline fxv_u64 fxv_shr64(fxv_u64 a, int k) { return a >> k; }
+static inline fxv_u64 fxv_and64(fxv_u64 a, uint64_t c) { return a & c; }
+static inline fxv_u32 fxv_lo(fxv_u64 a) { return (uint32_t)a; }
+static inline fxv_u32 fxv_hi(fxv_u64 a) { return (uint32_t)(a >> 32); }
+static inline fxv_u32 fxv_narrow(fxv_u64 a) { return (uint32_t)a; }
+
+#endif
