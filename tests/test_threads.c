@@ -1,14 +1,19 @@
 /* test_threads.c - the batch API's port choice is made once, thread-safely:
  * threads that all make their first batch call at the same moment (and
  * others that force ports meanwhile) get correct results and no data race
- * (tests/suites/35-tsan.sh runs this under ThreadSanitizer). */
+ * (tests/suites/35-tsan.sh runs this under ThreadSanitizer); and a
+ * facet_set_port() racing another thread's first batch call is never undone
+ * by it (ROUNDS fresh processes, each racing the two once). */
 #define _POSIX_C_SOURCE 200809L
 #include <pthread.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "harness.h"
 #include "sample.h"
+#include "facet/fx.h"
 
 #define N 4096
 #define THREADS 8
@@ -34,6 +39,72 @@ static void *worker(void *arg)
     return NULL;
 }
 
+/* ---- facet_set_port vs another thread's first use -------------------------
+ * In a fresh process (nothing chosen yet) thread A makes the first batch
+ * call, which computes the automatic choice, while thread B forces "scalar".
+ * Whatever the order, B's choice must stand: A may install its choice only
+ * over "not chosen".  B waits a round-dependent few iterations so that over
+ * the rounds its store lands before, inside and after A's pick. */
+#define ROUNDS 2000
+
+static pthread_barrier_t pair;
+static volatile unsigned spin_sink;
+static unsigned delay;
+
+static void *first_use(void *arg)
+{
+    float a = 0.5f, o;
+    (void)arg;
+    pthread_barrier_wait(&pair);
+    facet_lambert_f32_batch(&o, &a, 1);
+    return NULL;
+}
+
+static void *force_scalar(void *arg)
+{
+    unsigned i;
+    (void)arg;
+    pthread_barrier_wait(&pair);
+    for (i = 0; i < delay; i++)
+        spin_sink += i;
+    facet_set_port("scalar");
+    return NULL;
+}
+
+/* the child: 0 if "scalar" stood, 1 if it was lost, 2 on a setup failure */
+static int race_once(unsigned round)
+{
+    pthread_t a, b;
+    delay = round % 97;
+    if (pthread_barrier_init(&pair, NULL, 2) != 0)
+        return 2;
+    if (pthread_create(&a, NULL, first_use, NULL) || pthread_create(&b, NULL, force_scalar, NULL))
+        return 2;
+    pthread_join(a, NULL);
+    pthread_join(b, NULL);
+    return strcmp(facet_port_name(), "scalar") || strcmp(facet_fx_port_name(), "scalar") ? 1 : 0;
+}
+
+static void test_set_port_not_lost(void)
+{
+    unsigned r, lost = 0, failed = 0;
+    for (r = 0; r < ROUNDS; r++) {
+        int st = 0;
+        pid_t pid;
+        fflush(stdout);
+        pid = fork();
+        if (pid == 0)
+            _exit(race_once(r));
+        if (pid < 0 || waitpid(pid, &st, 0) != pid || !WIFEXITED(st) || WEXITSTATUS(st) == 2)
+            failed++;
+        else if (WEXITSTATUS(st) == 1)
+            lost++;
+    }
+    CHECK(failed == 0, "%u of %d race rounds could not run", failed, ROUNDS);
+    CHECK(lost == 0, "facet_set_port(\"scalar\") undone by a racing first use in %u of %d rounds",
+          lost, ROUNDS);
+}
+
 int main(void)
 {
     pthread_t t[THREADS];
@@ -41,6 +112,10 @@ int main(void)
     const facet_kernel *k = facet_kernel_find("brdf_hammon");
     int i, total = 0;
     th_name = "threads";
+    /* first, while this process has chosen nothing: its children start fresh */
+    CHECK(strcmp(smp_best_port(), "scalar") != 0 || getenv("FACET_PORT"),
+          "the automatic choice differs from scalar, so a lost facet_set_port shows");
+    test_set_port_not_lost();
     for (i = 0; i < N; i++) {
         float in[6] = { 0 };
         smp_inputs(&rng, k, in);

@@ -1,5 +1,6 @@
 # The thread test under ThreadSanitizer: the first-use port choice and
-# facet_set_port must not race (dispatch.c publishes the choice atomically).
+# facet_set_port must not race (dispatch.c installs the first choice by
+# compare-and-swap; test_threads also races the two in 2000 fresh processes).
 . tests/suite_lib.sh
 dir=build/tsan
 mkdir -p $dir
