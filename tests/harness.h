@@ -1,7 +1,7 @@
 /* harness.h - the tiny test harness every test binary uses.
  * A test binary prints one line per failed check, and ends with
  *   <name>: N passed, N failed, N skipped
- * which tests/run.sh sums into the suite's closing line. */
+ * which tests/check.sh sums into the closing line of make check. */
 #ifndef FACET_TEST_HARNESS_H
 #define FACET_TEST_HARNESS_H
 

@@ -1,4 +1,4 @@
-/* test_fx_sphere.c - the rendered check of issue 4: a lit sphere shaded
+/* test_fx_sphere.c - the rendered check of the fixed point: a lit sphere shaded
  * with brdf_hammon in fixed point and with the double oracle, at the same
  * (Q15) dot products, for alpha across the range and a few lights and
  * materials; radiance = brdf N.L E, encoded to 8-bit sRGB.  The two images

@@ -1,4 +1,4 @@
-# The fixed-point kernels on every target of issue 4, one summary line each:
+# The fixed-point kernels on every target they promise, one summary line each:
 #   fx-portable    host build with the ARMv6-M code paths (no UMULL, no CLZ)
 #   fx-aarch64     pinned hashes under qemu-aarch64 + integer-only compile
 #                  (-mgeneral-regs-only: a float register use is an error)

@@ -26,19 +26,36 @@
 #define RCP_ FACET_OP(rcp)
 #define RSQRT_ FACET_OP(rsqrt)
 
-/* 1/pi, 2/pi, 1.05/pi rounded to float. */
+/* 1/pi rounded to float. */
 #define FACET_INV_PI_ 0.318309886f
-#define FACET_2_INV_PI_ 0.636619772f
+
+/* the internal helpers under this port's names, aliased once */
+#define X_UNIT_ FACET_K(x_unit)
+#define X_COS_ FACET_K(x_cos)
+#define X_ALPHA_ FACET_K(x_alpha)
+#define X_LOV_ FACET_K(x_lov)
+#define X_ONE_MINUS_POW5_ FACET_K(x_one_minus_pow5)
+#define X_SMITH_W_ FACET_K(x_smith_w)
+#define X_SQRT_ FACET_K(x_sqrt)
+#define X_FRESNEL_Y_ FACET_K(x_fresnel_y)
+#define X_FRESNEL_ FACET_K(x_fresnel)
+#define X_G2_DEN_ FACET_K(x_g2_den)
+#define X_HAMMON_DEN_ FACET_K(x_hammon_den)
+#define X_DIFFUSE_SINGLE_ FACET_K(x_diffuse_single)
+#define X_DIFFUSE_PI_ FACET_K(x_diffuse_pi)
+#define X_BRDF_PARTS_ FACET_K(x_brdf_parts)
+#define X_BRDF_GEOMETRY_ FACET_K(x_brdf_geometry)
+#define X_BRDF_CHANNEL_ FACET_K(x_brdf_channel)
 
 /* Domain handling, shared by all kernels: NaN and -Inf go to the low end. */
-FACET_INLINE V_ FACET_K(x_unit)(V_ x) { return CLAMP_(x, C_(0.0f), C_(1.0f)); }
-FACET_INLINE V_ FACET_K(x_cos)(V_ x) { return CLAMP_(x, C_(FACET_COS_MIN), C_(1.0f)); }
-FACET_INLINE V_ FACET_K(x_alpha)(V_ x) { return CLAMP_(x, C_(FACET_ALPHA_MIN), C_(1.0f)); }
-FACET_INLINE V_ FACET_K(x_lov)(V_ x) { return CLAMP_(x, C_(-1.0f), C_(1.0f)); }
+FACET_INLINE V_ X_UNIT_(V_ x) { return CLAMP_(x, C_(0.0f), C_(1.0f)); }
+FACET_INLINE V_ X_COS_(V_ x) { return CLAMP_(x, C_(FACET_COS_MIN), C_(1.0f)); }
+FACET_INLINE V_ X_ALPHA_(V_ x) { return CLAMP_(x, C_(FACET_ALPHA_MIN), C_(1.0f)); }
+FACET_INLINE V_ X_LOV_(V_ x) { return CLAMP_(x, C_(-1.0f), C_(1.0f)); }
 
 /* 1 - (1 - x)^5 without cancellation at small x: with y = 1 - x it is
  * x (1 + y + y^2 + y^3 + y^4), a sum of positive terms. */
-FACET_INLINE V_ FACET_K(x_one_minus_pow5)(V_ x)
+FACET_INLINE V_ X_ONE_MINUS_POW5_(V_ x)
 {
     V_ y = SUB_(C_(1.0f), x);
     V_ p = ADD_(y, C_(1.0f));
@@ -50,13 +67,13 @@ FACET_INLINE V_ FACET_K(x_one_minus_pow5)(V_ x)
 
 /* alpha^2 (1 - n^2) + n^2 = alpha^2 + (1 - alpha^2) n^2, the radicand of the
  * exact Smith terms, with 1 - n^2 formed as (1-n)(1+n): all terms >= 0. */
-FACET_INLINE V_ FACET_K(x_smith_w)(V_ n, V_ a2)
+FACET_INLINE V_ X_SMITH_W_(V_ n, V_ a2)
 {
     V_ q = MUL_(SUB_(C_(1.0f), n), ADD_(C_(1.0f), n));
     return FMA_(a2, q, MUL_(n, n));
 }
 
-FACET_INLINE V_ FACET_K(x_sqrt)(V_ w) { return MUL_(w, RSQRT_(w)); }
+FACET_INLINE V_ X_SQRT_(V_ w) { return MUL_(w, RSQRT_(w)); }
 
 /* ---- identities ------------------------------------------------------ */
 
@@ -65,8 +82,8 @@ FACET_INLINE V_ FACET_K(x_sqrt)(V_ w) { return MUL_(w, RSQRT_(w)); }
  * and keeps 2t > 0 (N.L, N.V >= FACET_COS_MIN). */
 FACET_INLINE V_ FACET_K(noh_from_dots)(V_ nol, V_ nov, V_ lov)
 {
-    V_ s = ADD_(FACET_K(x_cos)(nol), FACET_K(x_cos)(nov));
-    V_ t = ADD_(C_(1.0f), FACET_K(x_lov)(lov));
+    V_ s = ADD_(X_COS_(nol), X_COS_(nov));
+    V_ t = ADD_(C_(1.0f), X_LOV_(lov));
     V_ t2 = MAX_(ADD_(t, t), MUL_(s, s));
     return MIN_(MUL_(s, RSQRT_(t2)), C_(1.0f));
 }
@@ -75,7 +92,7 @@ FACET_INLINE V_ FACET_K(noh_from_dots)(V_ nol, V_ nov, V_ lov)
  * 2^-100 only so that L.V = -1 gives 0 * finite = 0. */
 FACET_INLINE V_ FACET_K(loh_from_dots)(V_ lov)
 {
-    V_ t = ADD_(C_(1.0f), FACET_K(x_lov)(lov));
+    V_ t = ADD_(C_(1.0f), X_LOV_(lov));
     V_ t2 = MAX_(ADD_(t, t), C_(7.88860905e-31f));
     return MIN_(MUL_(t, RSQRT_(t2)), C_(1.0f));
 }
@@ -84,7 +101,7 @@ FACET_INLINE V_ FACET_K(loh_from_dots)(V_ lov)
 
 /* f0 + (1 - f0) y^5 with y given as the unevaluated sum yh + yl:
  * y^5 ~ yh^4 (yh + 5 yl), so the rounding of y is not amplified five times. */
-FACET_INLINE V_ FACET_K(x_fresnel_y)(V_ f0, V_ yh, V_ yl)
+FACET_INLINE V_ X_FRESNEL_Y_(V_ f0, V_ yh, V_ yl)
 {
     V_ y2 = MUL_(yh, yh);
     V_ y5 = MUL_(MUL_(y2, y2), FMA_(C_(5.0f), yl, yh));
@@ -92,16 +109,16 @@ FACET_INLINE V_ FACET_K(x_fresnel_y)(V_ f0, V_ yh, V_ yl)
 }
 
 /* y = 1 - c exactly as yh + yl (Fast2Sum: |1| >= |c|). */
-FACET_INLINE V_ FACET_K(x_fresnel)(V_ f0, V_ c)
+FACET_INLINE V_ X_FRESNEL_(V_ f0, V_ c)
 {
     V_ yh = SUB_(C_(1.0f), c);
     V_ yl = SUB_(SUB_(C_(1.0f), yh), c);
-    return FACET_K(x_fresnel_y)(f0, yh, yl);
+    return X_FRESNEL_Y_(f0, yh, yl);
 }
 
 FACET_INLINE V_ FACET_K(fresnel_schlick)(V_ f0, V_ c)
 {
-    return FACET_K(x_fresnel)(FACET_K(x_unit)(f0), FACET_K(x_unit)(c));
+    return X_FRESNEL_(X_UNIT_(f0), X_UNIT_(c));
 }
 
 /* ---- GGX D ------------------------------------------------------------ */
@@ -111,8 +128,8 @@ FACET_INLINE V_ FACET_K(fresnel_schlick)(V_ f0, V_ c)
  * Written D = (1/pi) (alpha/d)^2: alpha/d <= 1/alpha_min, no overflow. */
 FACET_INLINE V_ FACET_K(ggx_d)(V_ noh, V_ alpha)
 {
-    V_ n = FACET_K(x_unit)(noh);
-    V_ a = FACET_K(x_alpha)(alpha);
+    V_ n = X_UNIT_(noh);
+    V_ a = X_ALPHA_(alpha);
     V_ na = MUL_(n, a);
     V_ d = FMA_(SUB_(C_(1.0f), n), ADD_(C_(1.0f), n), MUL_(na, na));
     V_ k = MUL_(a, RCP_(d));
@@ -124,45 +141,45 @@ FACET_INLINE V_ FACET_K(ggx_d)(V_ noh, V_ alpha)
 /* G1 = 2n / (n + sqrt(alpha^2 + (1 - alpha^2) n^2)) */
 FACET_INLINE V_ FACET_K(smith_g1)(V_ nov, V_ alpha)
 {
-    V_ n = FACET_K(x_unit)(nov);
-    V_ a = FACET_K(x_alpha)(alpha);
-    V_ r = FACET_K(x_sqrt)(FACET_K(x_smith_w)(n, MUL_(a, a)));
+    V_ n = X_UNIT_(nov);
+    V_ a = X_ALPHA_(alpha);
+    V_ r = X_SQRT_(X_SMITH_W_(n, MUL_(a, a)));
     return MIN_(MUL_(ADD_(n, n), RCP_(ADD_(n, r))), C_(1.0f));
 }
 
 /* nv sqrt(w(nl)) + nl sqrt(w(nv)): the height-correlated denominator,
  * G2 = 2 nl nv / den, Vis = G2 / (4 nl nv) = 0.5 / den. */
-FACET_INLINE V_ FACET_K(x_g2_den)(V_ nl, V_ nv, V_ a)
+FACET_INLINE V_ X_G2_DEN_(V_ nl, V_ nv, V_ a)
 {
     V_ a2 = MUL_(a, a);
-    V_ rl = FACET_K(x_sqrt)(FACET_K(x_smith_w)(nl, a2));
-    V_ rv = FACET_K(x_sqrt)(FACET_K(x_smith_w)(nv, a2));
+    V_ rl = X_SQRT_(X_SMITH_W_(nl, a2));
+    V_ rv = X_SQRT_(X_SMITH_W_(nv, a2));
     return ADD_(MUL_(nv, rl), MUL_(nl, rv)); /* not fused: symmetric in nl, nv to the bit */
 }
 
 FACET_INLINE V_ FACET_K(smith_g2)(V_ nol, V_ nov, V_ alpha)
 {
-    V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
-    V_ den = FACET_K(x_g2_den)(nl, nv, FACET_K(x_alpha)(alpha));
+    V_ nl = X_COS_(nol), nv = X_COS_(nov);
+    V_ den = X_G2_DEN_(nl, nv, X_ALPHA_(alpha));
     V_ p = MUL_(nl, nv);
     return MIN_(MUL_(ADD_(p, p), RCP_(den)), C_(1.0f));
 }
 
 FACET_INLINE V_ FACET_K(smith_vis)(V_ nol, V_ nov, V_ alpha)
 {
-    V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
-    V_ den = FACET_K(x_g2_den)(nl, nv, FACET_K(x_alpha)(alpha));
+    V_ nl = X_COS_(nol), nv = X_COS_(nov);
+    V_ den = X_G2_DEN_(nl, nv, X_ALPHA_(alpha));
     return MUL_(C_(0.5f), RCP_(den));
 }
 
 /* G1(L) G1(V) = 4 nl nv / ((nl + sqrt w(nl)) (nv + sqrt w(nv))): one reciprocal. */
 FACET_INLINE V_ FACET_K(smith_g2_uncorrelated)(V_ nol, V_ nov, V_ alpha)
 {
-    V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
-    V_ a = FACET_K(x_alpha)(alpha);
+    V_ nl = X_COS_(nol), nv = X_COS_(nov);
+    V_ a = X_ALPHA_(alpha);
     V_ a2 = MUL_(a, a);
-    V_ dl = ADD_(nl, FACET_K(x_sqrt)(FACET_K(x_smith_w)(nl, a2)));
-    V_ dv = ADD_(nv, FACET_K(x_sqrt)(FACET_K(x_smith_w)(nv, a2)));
+    V_ dl = ADD_(nl, X_SQRT_(X_SMITH_W_(nl, a2)));
+    V_ dv = ADD_(nv, X_SQRT_(X_SMITH_W_(nv, a2)));
     V_ p = MUL_(nl, nv);
     return MIN_(MUL_(MUL_(C_(4.0f), p), RCP_(MUL_(dl, dv))), C_(1.0f));
 }
@@ -172,15 +189,15 @@ FACET_INLINE V_ FACET_K(smith_g2_uncorrelated)(V_ nol, V_ nov, V_ alpha)
 /* G1 ~ 2n / (n (2 - alpha) + alpha)  (= Schlick-GGX with k = alpha/2) */
 FACET_INLINE V_ FACET_K(smith_g1_hammon)(V_ nov, V_ alpha)
 {
-    V_ n = FACET_K(x_unit)(nov);
-    V_ a = FACET_K(x_alpha)(alpha);
+    V_ n = X_UNIT_(nov);
+    V_ a = X_ALPHA_(alpha);
     V_ den = FMA_(n, SUB_(C_(2.0f), a), a);
     return MIN_(MUL_(ADD_(n, n), RCP_(den)), C_(1.0f));
 }
 
 /* lerp(2 nl nv, nl + nv, alpha) written (1 - alpha) 2 nl nv + alpha (nl + nv):
  * both terms >= 0, so no cancellation; >= alpha_min * 2 FACET_COS_MIN. */
-FACET_INLINE V_ FACET_K(x_hammon_den)(V_ nl, V_ nv, V_ a)
+FACET_INLINE V_ X_HAMMON_DEN_(V_ nl, V_ nv, V_ a)
 {
     V_ p = MUL_(nl, nv);
     return FMA_(a, ADD_(nl, nv), MUL_(SUB_(C_(1.0f), a), ADD_(p, p)));
@@ -188,16 +205,16 @@ FACET_INLINE V_ FACET_K(x_hammon_den)(V_ nl, V_ nv, V_ a)
 
 FACET_INLINE V_ FACET_K(smith_g2_hammon)(V_ nol, V_ nov, V_ alpha)
 {
-    V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
-    V_ den = FACET_K(x_hammon_den)(nl, nv, FACET_K(x_alpha)(alpha));
+    V_ nl = X_COS_(nol), nv = X_COS_(nov);
+    V_ den = X_HAMMON_DEN_(nl, nv, X_ALPHA_(alpha));
     V_ p = MUL_(nl, nv);
     return MIN_(MUL_(ADD_(p, p), RCP_(den)), C_(1.0f));
 }
 
 FACET_INLINE V_ FACET_K(smith_vis_hammon)(V_ nol, V_ nov, V_ alpha)
 {
-    V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
-    V_ den = FACET_K(x_hammon_den)(nl, nv, FACET_K(x_alpha)(alpha));
+    V_ nl = X_COS_(nol), nv = X_COS_(nov);
+    V_ den = X_HAMMON_DEN_(nl, nv, X_ALPHA_(alpha));
     return MUL_(C_(0.5f), RCP_(den));
 }
 
@@ -210,31 +227,31 @@ FACET_INLINE V_ FACET_K(smith_vis_hammon)(V_ nol, V_ nov, V_ alpha)
  *   pi single = (1 - alpha) smooth + alpha rough,  pi multi = 0.1159 pi alpha
  *   pi diffuse = albedo (pi single + albedo pi multi)
  * The caller applies the 1/pi (brdf_hammon folds it with the specular). */
-FACET_INLINE V_ FACET_K(x_diffuse_single)(V_ nl, V_ nv, V_ t, V_ h, V_ a, V_ *multi)
+FACET_INLINE V_ X_DIFFUSE_SINGLE_(V_ nl, V_ nv, V_ t, V_ h, V_ a, V_ *multi)
 {
     V_ rough = MUL_(MUL_(t, FNMA_(C_(0.1f), t, C_(0.45f))), ADD_(C_(1.0f), h));
     /* 1 - alpha is exact for alpha >= 1/2; the product of the two powers is
      * formed first so that swapping N.L and N.V gives the same bits */
     V_ c = MUL_(C_(1.05f), SUB_(C_(1.0f), a));
-    V_ smooth = MUL_(c, MUL_(FACET_K(x_one_minus_pow5)(nl), FACET_K(x_one_minus_pow5)(nv)));
+    V_ smooth = MUL_(c, MUL_(X_ONE_MINUS_POW5_(nl), X_ONE_MINUS_POW5_(nv)));
     *multi = MUL_(C_(0.364110589f), a); /* 0.1159 pi */
     return FMA_(a, rough, smooth);
 }
 
-FACET_INLINE V_ FACET_K(x_diffuse_pi)(V_ nl, V_ nv, V_ t, V_ h, V_ a, V_ alb)
+FACET_INLINE V_ X_DIFFUSE_PI_(V_ nl, V_ nv, V_ t, V_ h, V_ a, V_ alb)
 {
-    V_ multi, single = FACET_K(x_diffuse_single)(nl, nv, t, h, a, &multi);
+    V_ multi, single = X_DIFFUSE_SINGLE_(nl, nv, t, h, a, &multi);
     return MUL_(alb, FMA_(alb, multi, single));
 }
 
 FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
 {
-    V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
+    V_ nl = X_COS_(nol), nv = X_COS_(nov);
     V_ s = ADD_(nl, nv);
-    V_ t = MAX_(ADD_(C_(1.0f), FACET_K(x_lov)(lov)), MUL_(C_(0.5f), MUL_(s, s)));
+    V_ t = MAX_(ADD_(C_(1.0f), X_LOV_(lov)), MUL_(C_(0.5f), MUL_(s, s)));
     V_ nh = MIN_(MUL_(s, RSQRT_(ADD_(t, t))), C_(1.0f));
-    V_ d = FACET_K(x_diffuse_pi)(nl, nv, t, MUL_(C_(0.5f), RCP_(nh)), FACET_K(x_alpha)(alpha),
-                                 FACET_K(x_unit)(albedo));
+    V_ d = X_DIFFUSE_PI_(nl, nv, t, MUL_(C_(0.5f), RCP_(nh)), X_ALPHA_(alpha),
+                                 X_UNIT_(albedo));
     return MUL_(d, C_(FACET_INV_PI_));
 }
 
@@ -259,14 +276,14 @@ FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ alb
  * brdf = (dv2 F + albedo (single + albedo multi)) / pi.  The RGB form shares
  * it across channels; per channel the same operations run in the same order,
  * so each channel equals brdf_hammon to the bit. */
-typedef struct FACET_K(x_brdf_parts) { V_ y5, dv2, single, multi; } FACET_K(x_brdf_parts);
+typedef struct X_BRDF_PARTS_ { V_ y5, dv2, single, multi; } X_BRDF_PARTS_;
 
-FACET_INLINE FACET_K(x_brdf_parts) FACET_K(x_brdf_geometry)(V_ nol, V_ nov, V_ lov, V_ alpha)
+FACET_INLINE X_BRDF_PARTS_ X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha)
 {
-    FACET_K(x_brdf_parts) g;
-    V_ nl = FACET_K(x_cos)(nol), nv = FACET_K(x_cos)(nov);
-    V_ lv = FACET_K(x_lov)(lov);
-    V_ a = FACET_K(x_alpha)(alpha);
+    X_BRDF_PARTS_ g;
+    V_ nl = X_COS_(nol), nv = X_COS_(nov);
+    V_ lv = X_LOV_(lov);
+    V_ a = X_ALPHA_(alpha);
     V_ big = MAX_(nl, nv), small = MIN_(nl, nv);
     V_ sh = ADD_(big, small);
     V_ sl = SUB_(small, SUB_(sh, big));
@@ -303,13 +320,13 @@ FACET_INLINE FACET_K(x_brdf_parts) FACET_K(x_brdf_geometry)(V_ nol, V_ nov, V_ l
     V_ h = MAX_(MUL_(lh, RCP_(sh)), C_(0.5f));
     g.y5 = MUL_(MUL_(y2, y2), y);
     g.dv2 = ADD_(dv_pi, dv_pi);
-    g.single = FACET_K(x_diffuse_single)(nl, nv, t, h, a, &g.multi);
+    g.single = X_DIFFUSE_SINGLE_(nl, nv, t, h, a, &g.multi);
     return g;
 }
 
-FACET_INLINE V_ FACET_K(x_brdf_channel)(const FACET_K(x_brdf_parts) *g, V_ f0, V_ albedo)
+FACET_INLINE V_ X_BRDF_CHANNEL_(const X_BRDF_PARTS_ *g, V_ f0, V_ albedo)
 {
-    V_ f0c = FACET_K(x_unit)(f0), alb = FACET_K(x_unit)(albedo);
+    V_ f0c = X_UNIT_(f0), alb = X_UNIT_(albedo);
     V_ f = FMA_(SUB_(C_(1.0f), f0c), g->y5, f0c);
     V_ dif = MUL_(alb, FMA_(alb, g->multi, g->single));
     return MUL_(FMA_(g->dv2, f, dif), C_(FACET_INV_PI_));
@@ -317,8 +334,8 @@ FACET_INLINE V_ FACET_K(x_brdf_channel)(const FACET_K(x_brdf_parts) *g, V_ f0, V
 
 FACET_INLINE V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_ albedo)
 {
-    FACET_K(x_brdf_parts) g = FACET_K(x_brdf_geometry)(nol, nov, lov, alpha);
-    return FACET_K(x_brdf_channel)(&g, f0, albedo);
+    X_BRDF_PARTS_ g = X_BRDF_GEOMETRY_(nol, nov, lov, alpha);
+    return X_BRDF_CHANNEL_(&g, f0, albedo);
 }
 
 /* brdf_hammon for three channels of f0 and albedo at once, the geometry
@@ -326,16 +343,16 @@ FACET_INLINE V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_
 FACET_INLINE void FACET_K(brdf_hammon_rgb)(V_ out[3], V_ nol, V_ nov, V_ lov, V_ alpha,
                                            const V_ f0[3], const V_ albedo[3])
 {
-    FACET_K(x_brdf_parts) g = FACET_K(x_brdf_geometry)(nol, nov, lov, alpha);
-    out[0] = FACET_K(x_brdf_channel)(&g, f0[0], albedo[0]);
-    out[1] = FACET_K(x_brdf_channel)(&g, f0[1], albedo[1]);
-    out[2] = FACET_K(x_brdf_channel)(&g, f0[2], albedo[2]);
+    X_BRDF_PARTS_ g = X_BRDF_GEOMETRY_(nol, nov, lov, alpha);
+    out[0] = X_BRDF_CHANNEL_(&g, f0[0], albedo[0]);
+    out[1] = X_BRDF_CHANNEL_(&g, f0[1], albedo[1]);
+    out[2] = X_BRDF_CHANNEL_(&g, f0[2], albedo[2]);
 }
 
 /* Lambert: albedo / pi, the baseline diffuse. */
 FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
 {
-    return MUL_(FACET_K(x_unit)(albedo), C_(FACET_INV_PI_));
+    return MUL_(X_UNIT_(albedo), C_(FACET_INV_PI_));
 }
 
 #undef V_
@@ -351,4 +368,19 @@ FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
 #undef RCP_
 #undef RSQRT_
 #undef FACET_INV_PI_
-#undef FACET_2_INV_PI_
+#undef X_UNIT_
+#undef X_COS_
+#undef X_ALPHA_
+#undef X_LOV_
+#undef X_ONE_MINUS_POW5_
+#undef X_SMITH_W_
+#undef X_SQRT_
+#undef X_FRESNEL_Y_
+#undef X_FRESNEL_
+#undef X_G2_DEN_
+#undef X_HAMMON_DEN_
+#undef X_DIFFUSE_SINGLE_
+#undef X_DIFFUSE_PI_
+#undef X_BRDF_PARTS_
+#undef X_BRDF_GEOMETRY_
+#undef X_BRDF_CHANNEL_
