@@ -46,10 +46,13 @@
  * with that instead (Cortex-M3/M4/M7/M33: two 32-bit UDIV digits; 64-bit
  * hosts: the native division) with the same bits (src/fx_core.h fx_div64).
  *
- * Per-kernel contracts (formula, intermediates, overflow argument, measured
- * error, cost) are next to each function in src/fx_kernels.c and in the
- * README's fixed-point section; the measured errors are the FACET_FX_ERR_*
- * bounds below, enforced by tests/test_fx_accuracy.c.
+ * Each kernel's contract (formula, output format and maximum, error, cost)
+ * is beside its declaration below; the error is the FACET_FX_ERR_* bound,
+ * enforced by tests/test_fx_accuracy.c.  The intermediates and the overflow
+ * argument of each step are beside its code (src/fx_kernels.c,
+ * src/fx_body.h).  Cost: operations of the scalar specification (mul =
+ * 32x32->32, mul64 = 32x32->64, division = one exact 64/32 quotient, sqrt
+ * = one exact integer root, fxf = one 32-bit-mantissa float step).
  */
 #ifndef FACET_FX_H
 #define FACET_FX_H
@@ -92,35 +95,80 @@ extern "C" {
 #define FACET_FX_ERR_DIFFUSE_HAMMON        1
 #define FACET_FX_ERR_BRDF_HAMMON           1
 
-/* ---- kernels (inputs Q15, in `facet list` order) ----------------------- */
+/* ---- kernels (inputs Q15, in `facet list` order) -----------------------
+ * Domains: the table after each name; every int32 outside clamps to it. */
+
+/* N.H = (N.L + N.V) / sqrt(2 (1 + L.V)), from the dots; nol, nov [cos floor,
+ * 1], lov [-1, 1].  Q15, max 1 (a triple at or past N.H = 1 gives 1).
+ * Error: 0 LSB (correctly rounded).  Cost: 1 sqrt, 1 division, ~8 mul64. */
 int32_t facet_noh_from_dots_fx(int32_t nol, int32_t nov, int32_t lov);
+/* L.H = sqrt((1 + L.V) / 2); lov [-1, 1].  Q15, max 1; L.V = -1 gives 0.
+ * Error: 0 LSB (correctly rounded).  Cost: 1 integer sqrt. */
 int32_t facet_loh_from_dots_fx(int32_t lov);
+/* Schlick: f0 + (1 - f0)(1 - cos)^5; f0, cos [0, 1].  Q15, max 1;
+ * F(f0, 1) = f0, F(f0, 0) = 1 exactly.  Error: 0 LSB (correctly rounded).
+ * Cost: 2 mul, 3 mul64 (written over lanes: AVX2 and aarch64 NEON run it
+ * vectorised in the batch). */
 int32_t facet_fresnel_schlick_fx(int32_t f0, int32_t cos_theta);
+/* GGX D = alpha^2 / (pi (1 - N.H^2 (1 - alpha^2))^2); noh [0, 1], alpha
+ * [2^-10, 1].  UQ19.13, max 2^20/pi = 333772.1 (N.H = 1, alpha = 2^-10).
+ * Error: FACET_FX_ERR_GGX_D LSB.  Cost: 1 division, 3 fxf, 2 mul64. */
 uint32_t facet_ggx_d_fx(int32_t noh, int32_t alpha);
+/* Smith G1 (GGX, exact) = 2 n / (n + sqrt(alpha^2 + (1 - alpha^2) n^2));
+ * nov [0, 1], alpha [2^-10, 1].  Q15, max 1; G1(0) = 0, G1(1) = 1.
+ * Error: FACET_FX_ERR_SMITH_G1 LSB.  Cost: 1 sqrt, 1 division, 1 fxf, 3 mul. */
 int32_t facet_smith_g1_fx(int32_t nov, int32_t alpha);
+/* Smith G2, height-correlated = 2 nl nv / (nv r(nl) + nl r(nv)),
+ * r(x) = sqrt(alpha^2 + (1 - alpha^2) x^2); nol, nov [2^-8, 1], alpha
+ * [2^-10, 1].  Q15, max 1.  Error: FACET_FX_ERR_SMITH_G2 LSB.
+ * Cost: 2 sqrt, 1 division, 3 fxf, ~8 mul. */
 int32_t facet_smith_g2_fx(int32_t nol, int32_t nov, int32_t alpha);
+/* G1(N.L) G1(N.V); domains as smith_g2.  Q15, max 1.
+ * Error: FACET_FX_ERR_SMITH_G2_UNCORRELATED LSB.  Cost: 2 sqrt, 1 division,
+ * 3 fxf, ~8 mul. */
 int32_t facet_smith_g2_uncorrelated_fx(int32_t nol, int32_t nov, int32_t alpha);
+/* Vis = G2 / (4 nl nv) = 0.5 / (nv r(nl) + nl r(nv)); domains as smith_g2.
+ * UQ16.16, max 15894.3 (nl = nv = 2^-8, alpha = 2^-10).
+ * Error: FACET_FX_ERR_SMITH_VIS LSB.  Cost: as smith_g2. */
 uint32_t facet_smith_vis_fx(int32_t nol, int32_t nov, int32_t alpha);
+/* Hammon's G1 ~ 2 n / (n (2 - alpha) + alpha); nov [0, 1], alpha
+ * [2^-10, 1].  Q15, max 1.  Error: FACET_FX_ERR_SMITH_G1_HAMMON LSB (both
+ * operands exact: correctly rounded).  Cost: 1 division, 2 mul. */
 int32_t facet_smith_g1_hammon_fx(int32_t nov, int32_t alpha);
+/* Hammon's G2 ~ 2 nl nv / m, m = (1 - alpha) 2 nl nv + alpha (nl + nv);
+ * domains as smith_g2.  Q15, max 1.  Error: FACET_FX_ERR_SMITH_G2_HAMMON LSB.
+ * Cost: 1 division, ~6 mul. */
 int32_t facet_smith_g2_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
+/* Hammon's Vis ~ 0.5 / m; domains as smith_g2.  UQ16.16, max 13117.
+ * Error: FACET_FX_ERR_SMITH_VIS_HAMMON LSB.  Cost: 1 division, ~6 mul. */
 uint32_t facet_smith_vis_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
+/* Hammon's GGX diffuse (facet.h's formula, 1 + L.V raised to
+ * (N.L + N.V)^2 / 2); nol, nov [2^-8, 1], lov [-1, 1], alpha [2^-10, 1],
+ * albedo [0, 1].  UQ8.24, max 20.65 (nl = nv = 2^-8, L.V = 1, alpha =
+ * albedo = 1).  Error: FACET_FX_ERR_DIFFUSE_HAMMON LSB.  Cost: 1 sqrt,
+ * 1 division, ~12 fxf, ~10 mul64. */
 uint32_t facet_diffuse_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                  int32_t albedo);
+/* The whole model: D Vis_hammon F(f0, L.H) + diffuse, from the dots (N.H
+ * never formed; the peak's cancellation exact); domains as diffuse_hammon,
+ * f0 [0, 1].  UQ40.24, max 4.38e9 (D 333772 x Vis 13117 at the grazing
+ * peak).  Error: FACET_FX_ERR_BRDF_HAMMON LSB.  Cost: 2 sqrt, 3 division,
+ * ~30 fxf. */
 uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                               int32_t f0, int32_t albedo);
 
 /* ---- batches: out[i] = kernel(in1[i], ...), i < n ----------------------
  * Bit-identical to the scalar kernel on every port, for every int32 input
  * (clamping and saturation included) and every n, alignment and tail.
- * Dispatched like the f32 batches: the fx implementation of the active f32
- * port (facet_port_name(), facet_set_port(), FACET_PORT), the scalar loop
- * where that port has none; facet_fx_port_name() names that implementation.
- * Vectorised code exists for every kernel on avx2 (x86) and neon (aarch64,
- * armv7), but a kernel is dispatched to it only where it was measured
- * faster than the scalar loop: on x86 only fresnel_schlick (the scalar loop
- * divides with the native 64-bit instruction, the 64-bit lanes cannot);
- * neon, unmeasured on hardware here, runs all of them.  sse2 and scalar run
- * the scalar loop.  out may be the very same array as an input (32-bit
+ * Dispatched with the f32 batches (facet_port_name(), facet_set_port(),
+ * FACET_PORT: one choice for both formats): the active port's own
+ * fixed-point code where it has some, the scalar loop elsewhere;
+ * facet_fx_port_name() names the port whose code that is.  Vector code
+ * exists only where it was measured faster than the scalar loop, which
+ * divides and takes roots with one hardware instruction where the core has
+ * one: fresnel_schlick on avx2 / avx512 (AVX2 lanes) and on aarch64 neon.
+ * Everything else, and everything on sse2, armv7 neon and scalar, runs the
+ * scalar loop.  out may be the very same array as an input (32-bit
  * outputs); no other overlap. */
 const char *facet_fx_port_name(void); /* "avx2", "neon" or "scalar" */
 void facet_noh_from_dots_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
@@ -149,7 +197,7 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
                                 const int32_t *lov, const int32_t *alpha, const int32_t *f0,
                                 const int32_t *albedo, size_t n);
 
-/* ---- the shared primitives (exposed for the tests and for ports) ------- */
+/* ---- the shared primitives (exposed for the tests) ---------------------- */
 /* floor((2^64 - 1) / d) - 2^32, d in [2^31, 2^32) */
 uint32_t facet_fx_rcp32(uint32_t d);
 /* ~ 2^47 / sqrt(x), x in [2^30, 2^32), relative error <= 2^-29 */
