@@ -224,6 +224,79 @@ void facet_brdf_hammon_f32_batch(float *out, const float *nol, const float *nov,
                                  const float *alpha, const float *f0, const float *albedo, size_t n);
 void facet_lambert_f32_batch(float *out, const float *albedo, size_t n);
 
+/* ---- the fast tier (f32_fast) ------------------------------------------
+ * facet_<kernel>_f32_fast, facet_<kernel>_f32_fast_batch and, in each port
+ * header, facet_<kernel>_f32_fast_<port>: the same formula, domain,
+ * out-of-domain behaviour (finite, >= 0 for every input), symmetry and
+ * operation count as the precise kernel above, the same formulation (the
+ * specular peak's cancellation is still formed exactly), and each port's
+ * cheaper reciprocal and rsqrt: scalar rsqrt with 2 Newton steps (not 3,
+ * the reciprocal is the division in both tiers); sse2 rcpps / rsqrtps and
+ * avx2 estimates with one Newton step (the precise tier: IEEE division /
+ * square root, and one third-order step); avx512 the 14-bit estimates
+ * unrefined (the precise tier: one Newton step); neon 2 steps (not 3).  Where an error is raised to the fifth
+ * power (brdf_hammon's 1 - L.H) both tiers refine fully.  fresnel_schlick
+ * and lambert have no reciprocal: both tiers are the same code.  Bounds:
+ * relative error vs the oracle, measured over the precise tier's sweep on
+ * every port, also with estimates at the architectural bound (worst:
+ * avx512, e.g. smith_g2_uncorrelated 2^-12.43, brdf_hammon 2^-13.00),
+ * enforced by the same tests; all <= 2^-12. */
+#define FACET_ERR_NOH_FROM_DOTS_F32_FAST          8.632e-05 /* 2^-13.5 */
+#define FACET_ERR_LOH_FROM_DOTS_F32_FAST          8.632e-05 /* 2^-13.5 */
+#define FACET_ERR_FRESNEL_SCHLICK_F32_FAST        4.769e-07 /* 2^-21 */
+#define FACET_ERR_GGX_D_F32_FAST                  1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_SMITH_G1_F32_FAST               1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_SMITH_G2_F32_FAST               1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_SMITH_G2_UNCORRELATED_F32_FAST  2.441e-04 /* 2^-12 */
+#define FACET_ERR_SMITH_VIS_F32_FAST              1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_SMITH_G1_HAMMON_F32_FAST        8.632e-05 /* 2^-13.5 */
+#define FACET_ERR_SMITH_G2_HAMMON_F32_FAST        8.632e-05 /* 2^-13.5 */
+#define FACET_ERR_SMITH_VIS_HAMMON_F32_FAST       8.632e-05 /* 2^-13.5 */
+#define FACET_ERR_DIFFUSE_HAMMON_F32_FAST         1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_BRDF_HAMMON_F32_FAST            1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_LAMBERT_F32_FAST                1.686e-07 /* 2^-22.5 */
+
+float facet_noh_from_dots_f32_fast(float nol, float nov, float lov);
+float facet_loh_from_dots_f32_fast(float lov);
+float facet_fresnel_schlick_f32_fast(float f0, float cos_theta);
+float facet_ggx_d_f32_fast(float noh, float alpha);
+float facet_smith_g1_f32_fast(float nov, float alpha);
+float facet_smith_g2_f32_fast(float nol, float nov, float alpha);
+float facet_smith_g2_uncorrelated_f32_fast(float nol, float nov, float alpha);
+float facet_smith_vis_f32_fast(float nol, float nov, float alpha);
+float facet_smith_g1_hammon_f32_fast(float nov, float alpha);
+float facet_smith_g2_hammon_f32_fast(float nol, float nov, float alpha);
+float facet_smith_vis_hammon_f32_fast(float nol, float nov, float alpha);
+float facet_diffuse_hammon_f32_fast(float nol, float nov, float lov, float alpha, float albedo);
+float facet_brdf_hammon_f32_fast(float nol, float nov, float lov, float alpha,
+                            float f0, float albedo);
+float facet_lambert_f32_fast(float albedo);
+void facet_brdf_hammon_rgb_f32_fast(float out[3], float nol, float nov, float lov,
+                               float alpha, const float f0[3], const float albedo[3]);
+void facet_noh_from_dots_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                   const float *lov, size_t n);
+void facet_loh_from_dots_f32_fast_batch(float *out, const float *lov, size_t n);
+void facet_fresnel_schlick_f32_fast_batch(float *out, const float *f0, const float *cos_theta, size_t n);
+void facet_ggx_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_smith_g1_f32_fast_batch(float *out, const float *nov, const float *alpha, size_t n);
+void facet_smith_g2_f32_fast_batch(float *out, const float *nol, const float *nov, const float *alpha,
+                              size_t n);
+void facet_smith_g2_uncorrelated_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                           const float *alpha, size_t n);
+void facet_smith_vis_f32_fast_batch(float *out, const float *nol, const float *nov, const float *alpha,
+                               size_t n);
+void facet_smith_g1_hammon_f32_fast_batch(float *out, const float *nov, const float *alpha, size_t n);
+void facet_smith_g2_hammon_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                     const float *alpha, size_t n);
+void facet_smith_vis_hammon_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                      const float *alpha, size_t n);
+void facet_diffuse_hammon_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                    const float *lov, const float *alpha, const float *albedo,
+                                    size_t n);
+void facet_brdf_hammon_f32_fast_batch(float *out, const float *nol, const float *nov, const float *lov,
+                                 const float *alpha, const float *f0, const float *albedo, size_t n);
+void facet_lambert_f32_fast_batch(float *out, const float *albedo, size_t n);
+
 /* Ports.  facet_set_port(name) forces one for all batch calls in the process:
  * "scalar", "sse2", "avx2", "avx512", "neon", or "auto" (the automatic choice).  Returns
  * 0 on success, 1 for a name not compiled into this build, 2 for a port this
@@ -254,6 +327,9 @@ typedef struct facet_kernel {
     /* batch on the active port: out[i] = kernel(in[0][i], in[1][i], ...) */
     void (*f32_batch)(float *out, const float *const *in, size_t n);
     double err_f32;                            /* FACET_ERR_<NAME>_F32 */
+    float (*f32_fast)(const float *in);        /* scalar f32_fast kernel */
+    void (*f32_fast_batch)(float *out, const float *const *in, size_t n);
+    double err_f32_fast;                       /* FACET_ERR_<NAME>_F32_FAST */
 } facet_kernel;
 
 size_t facet_kernel_count(void);

@@ -1,6 +1,7 @@
 /* batch_body.h - instantiates a port's batch functions and its port table
  * from the inline kernels.  Include after the port header with
  *   BATCH_PORT   port name token (scalar, sse2, ...)
+ *   BATCH_TIER   f32 or f32_fast (included once per tier)
  *   BATCH_W      lanes
  *   BATCH_V      vector type
  *   BATCH_LOAD(p) / BATCH_STORE(p, v)   unaligned load / store
@@ -12,8 +13,8 @@
 #define BATCH_CAT_STR(x) BATCH_STR_(x)
 #define BATCH_CAT_(a, b, c) a##b##c
 #define BATCH_CAT(a, b, c) BATCH_CAT_(a, b, c)
-#define BATCH_FN(k) BATCH_CAT(batch_, k, _)
-#define BATCH_KERNEL(k) BATCH_CAT(facet_, k, BATCH_CAT(_f32_, BATCH_PORT, ))
+#define BATCH_FN(k) BATCH_CAT(batch_, k, BATCH_CAT(_, BATCH_TIER, _))
+#define BATCH_KERNEL(k) BATCH_CAT(facet_, k, BATCH_CAT(_, BATCH_TIER, BATCH_CAT(_, BATCH_PORT, )))
 
 /* pad value: any value works (kernels clamp), 0.5 is inside every domain */
 #define BATCH_PAD 0.5f
@@ -45,7 +46,7 @@
 #include "kernels.def"
 #undef FACET_KERNEL
 
-const facet_f32_port BATCH_CAT(facet_port_, BATCH_PORT, _f32) = {
+const facet_f32_port BATCH_CAT(facet_port_, BATCH_PORT, BATCH_CAT(_, BATCH_TIER, )) = {
     BATCH_CAT_STR(BATCH_PORT), BATCH_W,
 #define FACET_KERNEL(name, NAME, n, ...) BATCH_FN(name),
 #include "kernels.def"

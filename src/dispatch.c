@@ -1,8 +1,8 @@
 /* dispatch.c - the one dispatcher: picks the port for the running CPU once,
  * for both formats, and routes every public facet_<kernel>_f32_batch and
  * facet_<kernel>_fx_batch to it.
- * Names generated here from src/kernels.def: the public f32 batch entry
- * points (the fx ones are in src/fx_batch.c and ask facet_fx_active_port()).
+ * Names generated here from src/kernels.def: the public f32 and f32_fast
+ * batch entry points (the fx ones are in src/fx_batch.c and ask facet_fx_active_port()).
  *
  * Ports compiled in follow the target, best first: x86-64 -> avx512, avx2,
  * sse2 (i386: avx2, sse2); aarch64 / armv7 Linux -> neon; everywhere ->
@@ -30,7 +30,7 @@
 #endif
 
 typedef struct port_entry {
-    const facet_f32_port *f32;
+    const facet_f32_port *f32, *f32_fast;
     const facet_fx_port *fx; /* NULL: the scalar fx loops for every kernel */
     int (*supported)(void);
 } port_entry;
@@ -45,19 +45,19 @@ static int avx512_and_avx2(void) { return facet_cpu_avx512f() && facet_cpu_avx2_
 static const port_entry ports[] = {
 #if FACET_X86
 #if defined(__x86_64__)
-    { &facet_port_avx512_f32, &facet_fx_port_avx2, avx512_and_avx2 },
+    { &facet_port_avx512_f32, &facet_port_avx512_f32_fast, &facet_fx_port_avx2, avx512_and_avx2 },
 #endif
-    { &facet_port_avx2_f32, &facet_fx_port_avx2, facet_cpu_avx2_fma },
-    { &facet_port_sse2_f32, NULL, facet_cpu_sse2 },
+    { &facet_port_avx2_f32, &facet_port_avx2_f32_fast, &facet_fx_port_avx2, facet_cpu_avx2_fma },
+    { &facet_port_sse2_f32, &facet_port_sse2_f32_fast, NULL, facet_cpu_sse2 },
 #endif
 #if FACET_ARM
 #if defined(__aarch64__)
-    { &facet_port_neon_f32, &facet_fx_port_neon, facet_cpu_neon },
+    { &facet_port_neon_f32, &facet_port_neon_f32_fast, &facet_fx_port_neon, facet_cpu_neon },
 #else
-    { &facet_port_neon_f32, NULL, facet_cpu_neon }, /* armv7: see ports/neon/fx_neon.c */
+    { &facet_port_neon_f32, &facet_port_neon_f32_fast, NULL, facet_cpu_neon }, /* armv7: see ports/neon/fx_neon.c */
 #endif
 #endif
-    { &facet_port_scalar_f32, NULL, always },
+    { &facet_port_scalar_f32, &facet_port_scalar_f32_fast, NULL, always },
 };
 #define N_PORTS (sizeof ports / sizeof ports[0])
 #define SCALAR_PORT (&ports[N_PORTS - 1])
@@ -146,6 +146,10 @@ int facet_port_supported(const char *name)
     void facet_##name##_f32_batch(float *out, FACET_EACH_INPUT(n, F32_PARAM_), size_t count) \
     {                                                                                \
         port()->f32->name(out, FACET_EACH_INPUT(n, ARG_), count);                    \
+    }                                                                                \
+    void facet_##name##_f32_fast_batch(float *out, FACET_EACH_INPUT(n, F32_PARAM_), size_t count) \
+    {                                                                                \
+        port()->f32_fast->name(out, FACET_EACH_INPUT(n, ARG_), count);               \
     }
 #include "kernels.def"
 #undef FACET_KERNEL

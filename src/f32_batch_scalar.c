@@ -6,4 +6,9 @@
 #define BATCH_W 1
 #define BATCH_LOAD(p) (*(p))
 #define BATCH_STORE(p, v) (*(p) = (v))
+#define BATCH_TIER f32
 #include "batch_body.h"
+#undef BATCH_TIER
+#define BATCH_TIER f32_fast
+#include "batch_body.h"
+#undef BATCH_TIER

@@ -1,39 +1,33 @@
-/* f32_scalar.c - the library's f32 entry points: the scalar port, out of line. */
+/* f32_scalar.c - the library's f32 entry points of both tiers: the scalar
+ * port, out of line.
+ * Names generated here from src/kernels.def: facet_<kernel>_f32 and
+ * facet_<kernel>_f32_fast. */
 #include "facet.h"
 #include "facet/scalar.h"
+#include "kernel_list.h"
 
-float facet_noh_from_dots_f32(float nol, float nov, float lov)
-{ return facet_noh_from_dots_f32_scalar(nol, nov, lov); }
-float facet_loh_from_dots_f32(float lov)
-{ return facet_loh_from_dots_f32_scalar(lov); }
-float facet_fresnel_schlick_f32(float f0, float cos_theta)
-{ return facet_fresnel_schlick_f32_scalar(f0, cos_theta); }
-float facet_ggx_d_f32(float noh, float alpha)
-{ return facet_ggx_d_f32_scalar(noh, alpha); }
-float facet_smith_g1_f32(float nov, float alpha)
-{ return facet_smith_g1_f32_scalar(nov, alpha); }
-float facet_smith_g2_f32(float nol, float nov, float alpha)
-{ return facet_smith_g2_f32_scalar(nol, nov, alpha); }
-float facet_smith_g2_uncorrelated_f32(float nol, float nov, float alpha)
-{ return facet_smith_g2_uncorrelated_f32_scalar(nol, nov, alpha); }
-float facet_smith_vis_f32(float nol, float nov, float alpha)
-{ return facet_smith_vis_f32_scalar(nol, nov, alpha); }
-float facet_smith_g1_hammon_f32(float nov, float alpha)
-{ return facet_smith_g1_hammon_f32_scalar(nov, alpha); }
-float facet_smith_g2_hammon_f32(float nol, float nov, float alpha)
-{ return facet_smith_g2_hammon_f32_scalar(nol, nov, alpha); }
-float facet_smith_vis_hammon_f32(float nol, float nov, float alpha)
-{ return facet_smith_vis_hammon_f32_scalar(nol, nov, alpha); }
-float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, float albedo)
-{ return facet_diffuse_hammon_f32_scalar(nol, nov, lov, alpha, albedo); }
-float facet_brdf_hammon_f32(float nol, float nov, float lov, float alpha, float f0,
-                            float albedo)
-{ return facet_brdf_hammon_f32_scalar(nol, nov, lov, alpha, f0, albedo); }
-float facet_lambert_f32(float albedo)
-{ return facet_lambert_f32_scalar(albedo); }
+#define PARAM_(q) float x##q
+#define ARG_(q) x##q
+#define FACET_KERNEL(name, NAME, n, ...)                                               \
+    float facet_##name##_f32(FACET_EACH_INPUT(n, PARAM_))                              \
+    {                                                                                  \
+        return facet_##name##_f32_scalar(FACET_EACH_INPUT(n, ARG_));                   \
+    }                                                                                  \
+    float facet_##name##_f32_fast(FACET_EACH_INPUT(n, PARAM_))                         \
+    {                                                                                  \
+        return facet_##name##_f32_fast_scalar(FACET_EACH_INPUT(n, ARG_));              \
+    }
+#include "kernels.def"
+#undef FACET_KERNEL
 
 void facet_brdf_hammon_rgb_f32(float out[3], float nol, float nov, float lov,
                                float alpha, const float f0[3], const float albedo[3])
 {
     facet_brdf_hammon_rgb_f32_scalar(out, nol, nov, lov, alpha, f0, albedo);
+}
+
+void facet_brdf_hammon_rgb_f32_fast(float out[3], float nol, float nov, float lov,
+                                    float alpha, const float f0[3], const float albedo[3])
+{
+    facet_brdf_hammon_rgb_f32_fast_scalar(out, nol, nov, lov, alpha, f0, albedo);
 }

@@ -1,5 +1,5 @@
 /* f32_table.c - the kernel table behind facet_kernel_at/find.
- * Names generated here from src/kernels.def: one table row and its three
+ * Names generated here from src/kernels.def: one table row and its five
  * array-argument wrappers per kernel. */
 #include <string.h>
 #include "facet.h"
@@ -16,13 +16,22 @@
     static void batch_##name(float *out, const float *const *in, size_t count)                 \
     {                                                                                          \
         facet_##name##_f32_batch(out, FACET_EACH_INPUT(n, SAMPLE_), count);                    \
+    }                                                                                          \
+    static float f32_fast_##name(const float *in)                                              \
+    {                                                                                          \
+        return facet_##name##_f32_fast(FACET_EACH_INPUT(n, SAMPLE_));                          \
+    }                                                                                          \
+    static void batch_fast_##name(float *out, const float *const *in, size_t count)            \
+    {                                                                                          \
+        facet_##name##_f32_fast_batch(out, FACET_EACH_INPUT(n, SAMPLE_), count);               \
     }
 #include "kernels.def"
 #undef FACET_KERNEL
 
 static const facet_kernel table[] = {
 #define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...) \
-    { #name, n, { FACET_MAP_INPUTS(n, FACET_IN_NAME, __VA_ARGS__) }, f32_##name, oracle_##name, batch_##name, FACET_ERR_##NAME##_F32 },
+    { #name, n, { FACET_MAP_INPUTS(n, FACET_IN_NAME, __VA_ARGS__) }, f32_##name, oracle_##name, batch_##name, FACET_ERR_##NAME##_F32, \
+      f32_fast_##name, batch_fast_##name, FACET_ERR_##NAME##_F32_FAST },
 #include "kernels.def"
 #undef FACET_KERNEL
 };

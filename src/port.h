@@ -35,12 +35,12 @@ typedef struct facet_fx_port {
 #undef FACET_KERNEL
 } facet_fx_port;
 
-/* f32 ports: src/f32_batch_scalar.c, ports/<isa>/f32_<isa>.c */
-extern const facet_f32_port facet_port_scalar_f32;
-extern const facet_f32_port facet_port_sse2_f32;
-extern const facet_f32_port facet_port_avx2_f32;
-extern const facet_f32_port facet_port_avx512_f32;
-extern const facet_f32_port facet_port_neon_f32;
+/* f32 ports, one table per tier: src/f32_batch_scalar.c, ports/<isa>/f32_<isa>.c */
+extern const facet_f32_port facet_port_scalar_f32, facet_port_scalar_f32_fast;
+extern const facet_f32_port facet_port_sse2_f32, facet_port_sse2_f32_fast;
+extern const facet_f32_port facet_port_avx2_f32, facet_port_avx2_f32_fast;
+extern const facet_f32_port facet_port_avx512_f32, facet_port_avx512_f32_fast;
+extern const facet_f32_port facet_port_neon_f32, facet_port_neon_f32_fast;
 /* fx ports: src/fx_kernels.c (every kernel), ports/<isa>/fx_<isa>.c */
 extern const facet_fx_port facet_fx_port_scalar;
 extern const facet_fx_port facet_fx_port_avx2;

@@ -21,8 +21,11 @@ int main(void)
     size_t ki;
     th_name = "f32_bad_input";
 
-    for (ki = 0; ki < facet_kernel_count(); ki++) {
-        const facet_kernel *k = facet_kernel_at(ki);
+    for (ki = 0; ki < 2 * facet_kernel_count(); ki++) {
+        /* every kernel in both tiers: f32, then f32_fast */
+        const facet_kernel *k = facet_kernel_at(ki % facet_kernel_count());
+        float (*f)(const float *) = ki < facet_kernel_count() ? k->f32 : k->f32_fast;
+        const char *tier = ki < facet_kernel_count() ? "" : " (f32_fast)";
         int pos, b, rep, nan_out = 0, neg_out = 0, mismatch = 0;
         for (rep = 0; rep < 50; rep++)
             for (pos = 0; pos < k->n_inputs; pos++)
@@ -34,8 +37,8 @@ int main(void)
                     in[pos] = v;
                     /* the documented substitute */
                     ref_in[pos] = (v != v || v < lo) ? lo : v > hi ? hi : v;
-                    got = k->f32(in);
-                    want = k->f32(ref_in);
+                    got = f(in);
+                    want = f(ref_in);
                     if (!(got == got) || got == INFINITY || got == -INFINITY)
                         nan_out++;
                     else if (got < 0.0f || same(got, -0.0f))
@@ -47,14 +50,15 @@ int main(void)
                         int j;
                         for (j = 0; j < k->n_inputs; j++)
                             in[j] = v;
-                        got = k->f32(in);
+                        got = f(in);
                         if (!(got == got) || got > FLT_MAX || got < 0.0f)
                             nan_out++;
                     }
                 }
-        CHECK(nan_out == 0, "%s: %d bad inputs gave NaN or Inf", k->name, nan_out);
-        CHECK(neg_out == 0, "%s: %d bad inputs gave a negative result", k->name, neg_out);
-        CHECK(mismatch == 0, "%s: %d bad inputs differ from the documented clamped value", k->name, mismatch);
+        CHECK(nan_out == 0, "%s%s: %d bad inputs gave NaN or Inf", k->name, tier, nan_out);
+        CHECK(neg_out == 0, "%s%s: %d bad inputs gave a negative result", k->name, tier, neg_out);
+        CHECK(mismatch == 0, "%s%s: %d bad inputs differ from the documented clamped value", k->name, tier,
+              mismatch);
     }
 
     /* named points of the contracts */

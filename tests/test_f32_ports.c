@@ -1,7 +1,8 @@
 /* test_f32_ports.c - the batch API on every port this CPU runs: lane
  * independence, every tail length, unaligned pointers, aliasing, the
  * bad-input contract, and port selection.  (Accuracy of every port against
- * the oracle is tests/test_f32_accuracy.c.) */
+ * the oracle is tests/test_f32_accuracy.c.)  Both tiers, f32 and f32_fast,
+ * through the same checks. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <float.h>
@@ -9,6 +10,8 @@
 #include "sample.h"
 
 #define MAXN 256
+
+static int fast_tier; /* 0: facet_kernel.f32_batch, 1: f32_fast_batch */
 
 static int same(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
 
@@ -25,7 +28,7 @@ static void run(const facet_kernel *k, float src[][MAXN], int first, int n, int 
         buf[i] += misalign;
     }
     o = malloc((n + misalign) * sizeof(float) + 1);
-    k->f32_batch(o + misalign, (const float *const *)buf, (size_t)n);
+    (fast_tier ? k->f32_fast_batch : k->f32_batch)(o + misalign, (const float *const *)buf, (size_t)n);
     memcpy(out, o + misalign, n * sizeof(float));
     free(o);
     for (i = 0; i < k->n_inputs; i++)
@@ -86,7 +89,7 @@ static void test_port(const char *port, int lanes)
                 a[i] = malloc(77 * sizeof(float));
                 memcpy(a[i], src[i], 77 * sizeof(float));
             }
-            k->f32_batch(a[which], (const float *const *)a, 77);
+            (fast_tier ? k->f32_fast_batch : k->f32_batch)(a[which], (const float *const *)a, 77);
             for (i = 0; i < 77; i++)
                 if (!same(a[which][i], ref[i]))
                     bad_alias++;
@@ -101,7 +104,7 @@ static void test_port(const char *port, int lanes)
                 swapped[i] = src[i];
             swapped[0] = src[1];
             swapped[1] = src[0];
-            k->f32_batch(out, (const float *const *)swapped, MAXN);
+            (fast_tier ? k->f32_fast_batch : k->f32_batch)(out, (const float *const *)swapped, MAXN);
             for (i = 0; i < MAXN; i++)
                 if (!same(out[i], ref[i]))
                     bad_sym++;
@@ -157,7 +160,11 @@ int main(void)
             continue;
         }
         CHECK(facet_set_port(pn) == 0 && !strcmp(facet_port_name(), pn), "%s: selectable", pn);
-        test_port(pn, lanes);
+        for (fast_tier = 0; fast_tier < 2; fast_tier++) {
+            char label[32];
+            snprintf(label, sizeof label, "%s%s", pn, fast_tier ? "/f32_fast" : "");
+            test_port(label, lanes);
+        }
     }
     CHECK(facet_port_at(facet_port_count(), NULL, NULL) == NULL, "facet_port_at past the end is NULL");
     facet_set_port("auto");

@@ -72,10 +72,30 @@ FACET_INLINE __m256 facet_avx2_rsqrt(__m256 x)
 }
 FACET_INLINE __m256 facet_avx2_sqr_err(__m256 a, __m256 p) { return _mm256_fmsub_ps(a, a, p); }
 
+/* The fast tier (f32_fast): the estimates and one Newton step each
+ * (r + r e; y + y e / 2), leaving about 1.5 e^2 < 2^-21 of an estimate at
+ * the architectural bound, plus the step's rounding. */
+FACET_INLINE __m256 facet_avx2_rcp_fast(__m256 x)
+{
+    __m256 r = facet_avx2_rcp_est_(x);
+    return _mm256_fmadd_ps(r, _mm256_fnmadd_ps(x, r, _mm256_set1_ps(1.0f)), r);
+}
+FACET_INLINE __m256 facet_avx2_rsqrt_fast(__m256 x)
+{
+    __m256 y = facet_avx2_rsqrt_est_(x);
+    __m256 e = _mm256_fnmadd_ps(_mm256_mul_ps(x, y), y, _mm256_set1_ps(1.0f));
+    return _mm256_fmadd_ps(_mm256_mul_ps(_mm256_set1_ps(0.5f), y), e, y);
+}
+
 #define FACET_V __m256
 #define FACET_OP(op) facet_avx2_##op
 #define FACET_K(k) facet_##k##_f32_avx2
 #include "facet/detail/f32_body.h"
+#undef FACET_K
+#define FACET_TIER_FAST 1
+#define FACET_K(k) facet_##k##_f32_fast_avx2
+#include "facet/detail/f32_body.h"
+#undef FACET_TIER_FAST
 #undef FACET_V
 #undef FACET_OP
 #undef FACET_K

@@ -64,10 +64,20 @@ FACET_INLINE __m512 facet_avx512_rsqrt(__m512 x)
 }
 FACET_INLINE __m512 facet_avx512_sqr_err(__m512 a, __m512 p) { return _mm512_fmsub_ps(a, a, p); }
 
+/* The fast tier (f32_fast): the 14-bit estimates as they are (relative
+ * error < 2^-14 each). */
+FACET_INLINE __m512 facet_avx512_rcp_fast(__m512 x) { return facet_avx512_rcp_est_(x); }
+FACET_INLINE __m512 facet_avx512_rsqrt_fast(__m512 x) { return facet_avx512_rsqrt_est_(x); }
+
 #define FACET_V __m512
 #define FACET_OP(op) facet_avx512_##op
 #define FACET_K(k) facet_##k##_f32_avx512
 #include "facet/detail/f32_body.h"
+#undef FACET_K
+#define FACET_TIER_FAST 1
+#define FACET_K(k) facet_##k##_f32_fast_avx512
+#include "facet/detail/f32_body.h"
+#undef FACET_TIER_FAST
 #undef FACET_V
 #undef FACET_OP
 #undef FACET_K

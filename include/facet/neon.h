@@ -62,10 +62,31 @@ FACET_INLINE float32x4_t facet_neon_sqr_err(float32x4_t a, float32x4_t p)
     return vfmsq_f32(vnegq_f32(p), a, vnegq_f32(a)); /* a*a - p, one rounding */
 }
 
+/* The fast tier (f32_fast): two steps instead of three (2^-8 -> 2^-16 ->
+ * 2^-32 before rounding; the second fused). */
+FACET_INLINE float32x4_t facet_neon_rcp_fast(float32x4_t x)
+{
+    float32x4_t r = vrecpeq_f32(x);
+    r = vmulq_f32(r, vrecpsq_f32(x, r));
+    return vfmaq_f32(r, r, vfmsq_f32(vdupq_n_f32(1.0f), x, r));
+}
+FACET_INLINE float32x4_t facet_neon_rsqrt_fast(float32x4_t x)
+{
+    float32x4_t y = vrsqrteq_f32(x), e;
+    y = vmulq_f32(y, vrsqrtsq_f32(vmulq_f32(x, y), y));
+    e = vfmsq_f32(vdupq_n_f32(1.0f), vmulq_f32(x, y), y);
+    return vfmaq_f32(y, vmulq_n_f32(y, 0.5f), e);
+}
+
 #define FACET_V float32x4_t
 #define FACET_OP(op) facet_neon_##op
 #define FACET_K(k) facet_##k##_f32_neon
 #include "facet/detail/f32_body.h"
+#undef FACET_K
+#define FACET_TIER_FAST 1
+#define FACET_K(k) facet_##k##_f32_fast_neon
+#include "facet/detail/f32_body.h"
+#undef FACET_TIER_FAST
 #undef FACET_V
 #undef FACET_OP
 #undef FACET_K

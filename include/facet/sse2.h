@@ -47,10 +47,30 @@ FACET_INLINE __m128 facet_sse2_sqr_err(__m128 a, __m128 p)
     return _mm_add_ps(t, _mm_mul_ps(lo, lo));
 }
 
+/* The fast tier (f32_fast): rcpps / rsqrtps (relative error <= 1.5 * 2^-12)
+ * and one Newton step each, leaving about 1.5 (1.5 * 2^-12)^2 < 2^-21 plus
+ * the step's rounding. */
+FACET_INLINE __m128 facet_sse2_rcp_fast(__m128 x)
+{
+    __m128 r = _mm_rcp_ps(x);
+    return _mm_mul_ps(r, _mm_sub_ps(_mm_set1_ps(2.0f), _mm_mul_ps(x, r)));
+}
+FACET_INLINE __m128 facet_sse2_rsqrt_fast(__m128 x)
+{
+    __m128 y = _mm_rsqrt_ps(x);
+    __m128 h = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.5f), x), _mm_mul_ps(y, y));
+    return _mm_mul_ps(y, _mm_sub_ps(_mm_set1_ps(1.5f), h));
+}
+
 #define FACET_V __m128
 #define FACET_OP(op) facet_sse2_##op
 #define FACET_K(k) facet_##k##_f32_sse2
 #include "facet/detail/f32_body.h"
+#undef FACET_K
+#define FACET_TIER_FAST 1
+#define FACET_K(k) facet_##k##_f32_fast_sse2
+#include "facet/detail/f32_body.h"
+#undef FACET_TIER_FAST
 #undef FACET_V
 #undef FACET_OP
 #undef FACET_K

@@ -42,6 +42,8 @@ static inline void fxv_store32_(void *p, fxv_u32 v)
 }
 #define fxv_store_int32_t fxv_store32_
 #define fxv_store_uint32_t fxv_store32_
-static inline void fxv_store_uint64_t(uint64_t *p, fxv_u64 v) { _mm256_storeu_si256((__m256i *)p, v); }
+/* macros, not functions: a port need not use every output type (clang
+ * warns about an unused static function) */
+#define fxv_store_uint64_t(p, v) _mm256_storeu_si256((__m256i *)(p), (v))
 
 #include "../../src/fx_vbatch.h"

@@ -6,4 +6,9 @@
 #define BATCH_W 16
 #define BATCH_LOAD(p) _mm512_loadu_ps(p)
 #define BATCH_STORE(p, v) _mm512_storeu_ps((p), (v))
+#define BATCH_TIER f32
 #include "../../src/batch_body.h"
+#undef BATCH_TIER
+#define BATCH_TIER f32_fast
+#include "../../src/batch_body.h"
+#undef BATCH_TIER

@@ -6,4 +6,9 @@
 #define BATCH_W 4
 #define BATCH_LOAD(p) vld1q_f32(p)
 #define BATCH_STORE(p, v) vst1q_f32((p), (v))
+#define BATCH_TIER f32
 #include "../../src/batch_body.h"
+#undef BATCH_TIER
+#define BATCH_TIER f32_fast
+#include "../../src/batch_body.h"
+#undef BATCH_TIER

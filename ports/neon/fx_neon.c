@@ -36,9 +36,11 @@ static inline fxv_u32 fxv_hi(fxv_u64 a) { return vshrq_n_u64(a, 32); }
 static inline fxv_u32 fxv_narrow(fxv_u64 a) { return a; }
 
 static inline fxv_i32 fxv_load(const int32_t *p) { return vld1_s32(p); }
-static inline void fxv_store_int32_t(int32_t *p, fxv_u32 v) { vst1_s32(p, vreinterpret_s32_u32(vmovn_u64(v))); }
-static inline void fxv_store_uint32_t(uint32_t *p, fxv_u32 v) { vst1_u32(p, vmovn_u64(v)); }
-static inline void fxv_store_uint64_t(uint64_t *p, fxv_u64 v) { vst1q_u64(p, v); }
+/* macros, not functions: a port need not use every output type (clang
+ * warns about an unused static function) */
+#define fxv_store_int32_t(p, v) vst1_s32((p), vreinterpret_s32_u32(vmovn_u64(v)))
+#define fxv_store_uint32_t(p, v) vst1_u32((p), vmovn_u64(v))
+#define fxv_store_uint64_t(p, v) vst1q_u64((p), (v))
 
 #include "../../src/fx_vbatch.h"
 #else

@@ -1,11 +1,14 @@
 /* facet/detail/f32_body.h - the one body of every f32 kernel.
  *
- * Deliberately without an include guard: each port header includes it once,
+ * Deliberately without an include guard: each port header includes it once
+ * per tier,
  * after defining
  *   FACET_V        the vector (or scalar) type,
  *   FACET_OP(op)   the name of the port's op `op` (set add sub mul fma fnma
  *                  min max sel_lt clamp rcp rsqrt sqr_err, see facet/scalar.h),
- *   FACET_K(k)     the name to give kernel `k` in this port.
+ *   FACET_K(k)     the name to give kernel `k` in this port and tier,
+ * and optionally FACET_TIER_FAST 1 for the fast tier (f32_fast): the port's
+ * rcp_fast / rsqrt_fast in place of rcp / rsqrt.
  * Contracts (formula, domain, measured error, cost) are in facet.h; the
  * comments here explain the numerics.
  */
@@ -23,8 +26,19 @@
 #define MIN_ FACET_OP(min)
 #define MAX_ FACET_OP(max)
 #define CLAMP_ FACET_OP(clamp)
+/* the tier: the precise one, or with FACET_TIER_FAST 1 the fast one (the
+ * same formulation, the port's cheaper rcp / rsqrt refinement) */
+#if defined(FACET_TIER_FAST) && FACET_TIER_FAST
+#define RCP_ FACET_OP(rcp_fast)
+#define RSQRT_ FACET_OP(rsqrt_fast)
+#else
 #define RCP_ FACET_OP(rcp)
 #define RSQRT_ FACET_OP(rsqrt)
+#endif
+/* where an error is raised to the fifth power (brdf_hammon's 1 - L.H), both
+ * tiers refine fully: 5 times an unrefined estimate would exceed 2^-12 */
+#define RCP_X5_ FACET_OP(rcp)
+#define RSQRT_X5_ FACET_OP(rsqrt)
 
 /* 1/pi rounded to float. */
 #define FACET_INV_PI_ 0.318309886f
@@ -300,7 +314,7 @@ FACET_INLINE X_BRDF_PARTS_ X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha)
     V_ e = FMA_(a2, p, FMA_(a2, s2lo, num));
     V_ p2 = MUL_(nl, nv);
     V_ m = FMA_(a, sh, MUL_(SUB_(C_(1.0f), a), ADD_(p2, p2))); /* Hammon's lerp */
-    V_ r = RSQRT_(ADD_(t, t));
+    V_ r = RSQRT_X5_(ADD_(t, t));
     V_ lh = MIN_(MUL_(t, r), C_(1.0f));
     /* w = 2 - t = min(1 - L.V, 2 - s^2/2), each side formed without
      * cancellation: 2 - s^2/2 = ((1 - nl) + (1 - nv)) (2 + s) / 2 */
@@ -309,7 +323,7 @@ FACET_INLINE X_BRDF_PARTS_ X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha)
                      ADD_(C_(2.0f), sh)));
     /* below L.H = 1/2, 1 - L.H itself is the better conditioned form */
     V_ y = FACET_OP(sel_lt)(lh, C_(0.5f), SUB_(C_(1.0f), lh),
-                            MUL_(MUL_(C_(0.5f), w), RCP_(ADD_(C_(1.0f), lh))));
+                            MUL_(MUL_(C_(0.5f), w), RCP_X5_(ADD_(C_(1.0f), lh))));
     V_ y2 = MUL_(y, y);
     /* D Vis = (4/pi)(alpha t / e)^2 (0.5 / m) = (2/pi) (alpha t)^2 / (e^2 m),
      * and 1 / (e^2 m) = m R^2 with R = 1 / (e m): one reciprocal */
@@ -367,6 +381,8 @@ FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
 #undef CLAMP_
 #undef RCP_
 #undef RSQRT_
+#undef RCP_X5_
+#undef RSQRT_X5_
 #undef FACET_INV_PI_
 #undef X_UNIT_
 #undef X_COS_
