@@ -1,5 +1,6 @@
-/* test_docs.c - the bound the README states for each f32 kernel is the bound
- * facet.h documents and the tests enforce (FACET_ERR_*), and every kernel
+/* test_docs.c - the bounds the README states for each f32 kernel, both
+ * tiers, are the bounds facet.h documents and the tests enforce
+ * (FACET_ERR_*_F32, FACET_ERR_*_F32_FAST), and every kernel
  * of the table has a README row.  Run from the source tree's top. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -41,6 +42,13 @@ int main(void)
             seen[i]++;
             CHECK(fabs(log2(k->err_f32) - e) < 0.01, "%s: README says 2^%g, facet.h enforces 2^%.2f",
                   k->name, e, log2(k->err_f32));
+            /* the next one is the f32_fast bound */
+            p = strstr(p + 1, "| 2^-");
+            CHECK(p != NULL, "README row of %s has no f32_fast bound cell", k->name);
+            if (p)
+                CHECK(fabs(log2(k->err_f32_fast) + atof(p + 5)) < 0.01,
+                      "%s: README says f32_fast 2^-%g, facet.h enforces 2^%.2f", k->name, atof(p + 5),
+                      log2(k->err_f32_fast));
         }
     }
     fclose(f);
