@@ -40,7 +40,7 @@ $(BUILD)/bench/%.o: bench/%.c $(BENCH_DEPS)
 	$(CC) $(BENCH_FLAGS) -c $< -o $@
 
 # the inline SIMD loops and shading paths: that ISA's flags on these objects
-# alone
+# alone; each asks facet_port_supported() before it runs
 BENCH_SIMD_OBJ := $(patsubst %,$(BUILD)/bench/harness/loops_%.o,sse2 avx2 neon) \
                   $(patsubst %,$(BUILD)/bench/raster/raster_%.o,sse2 avx2 neon)
 ifneq ($(BENCH_X86),)
