@@ -14,16 +14,17 @@ BENCH_NATIVE := $(shell $(CC) -march=native -E -x c /dev/null >/dev/null 2>&1 &&
 # -I. : what the bench takes from outside bench/, named by its folder in the
 # #include line: tests/sample.h (the bench judges error on the same samplers
 # as the tests), src/kernels.def and src/kernel_list.h (every loop is
-# generated from the library's kernel list).  -Ibench: a part's header from another part is
-# included as "harness/bench.h", "raster/raster.h", ...
+# generated from the library's kernel list), src/port.h (the port tables,
+# read by report/symbols.c).  -Ibench: a part's header from another part
+# is included as "harness/bench.h", "raster/raster.h", ...
 BENCH_FLAGS   = $(BASEFLAGS) -D_GNU_SOURCE -I. -Ibench
-BENCH_DEPS    = $(HEADERS) $(wildcard bench/*.h bench/*/*.h) tests/sample.h src/kernel_list.h
+BENCH_DEPS    = $(HEADERS) $(wildcard bench/*.h bench/*/*.h) tests/sample.h src/kernel_list.h src/port.h
 
 BENCH_HARNESS := cycles bench cli_bench loops_scalar loops_call loops_sse2 loops_avx2 loops_neon \
                  loops_batch loops_tables peers peers_textbook peers_shader peers_shader_fm fxhook
 BENCH_HARNESS_OBJ := $(BENCH_HARNESS:%=$(BUILD)/bench/harness/%.o)
 BENCH_RASTER_OBJ  := $(patsubst %,$(BUILD)/bench/raster/%.o,raster raster_avx2 raster_sse2 raster_neon)
-BENCH_REPORT_OBJ  := $(patsubst %,$(BUILD)/bench/report/%.o,report pictures png)
+BENCH_REPORT_OBJ  := $(patsubst %,$(BUILD)/bench/report/%.o,report symbols pictures png)
 BENCH_OBJ := $(BUILD)/bench/facet_bench.o $(BENCH_HARNESS_OBJ) $(BENCH_REPORT_OBJ) $(BENCH_RASTER_OBJ)
 
 TEST_BIN    += $(BUILD)/tests/test_bench

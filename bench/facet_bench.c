@@ -2,6 +2,8 @@
  *   facet-bench bench [KERNEL] [options]  cycles and error of every kernel x
  *                                         format x port x path, and the peers
  *   facet-bench report OUTDIR [--quick]   the benchmark part of `make report`
+ *   facet-bench batch-symbols             where each port's batch functions are
+ *                                         in this binary (for report/report.sh)
  * Not installed, and not the library's `facet` command: it links the peers,
  * built with -march=native, so it runs on the machine that built it. */
 #include <stdio.h>
@@ -15,6 +17,8 @@ static void usage(FILE *f)
                "verbs:\n"
                "  bench [KERNEL]       cycles per sample of every kernel, port and format\n"
                "  report OUTDIR        the benchmark part of `make report` (bench.md, index.html)\n"
+               "  batch-symbols        each port's batch function per kernel, as an offset from\n"
+               "                       facet_port_supported in this binary\n"
                "Run 'facet-bench <verb> --help' for a verb's options.\n");
 }
 
@@ -24,6 +28,7 @@ static const struct {
 } verbs[] = {
     { "bench", facet_cmd_bench },
     { "report", facet_bench_report },
+    { "batch-symbols", facet_bench_batch_symbols },
 };
 
 int main(int argc, char **argv)

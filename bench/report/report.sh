@@ -14,10 +14,12 @@ MAKE=${MAKE:-make}
 $MAKE -s BUILD="$build" bench-report || exit 1
 lanes_of() { case $1 in avx512) echo 16 ;; avx2) echo 8 ;; sse2|neon) echo 4 ;; *) echo 1 ;; esac; }
 bin=$build/facet-bench
-obj_of() { if [ "$1" = scalar ]; then echo "$build/src/f32_batch_scalar.o"; else echo "$build/ports/$1/f32_$1.o"; fi; }
-kernels=$("$build/facet" list | cut -d' ' -f1)
 
 # ---- x86: llvm-mca on each batch loop, code size ---------------------------
+# Where each port's batch function is: `facet-bench batch-symbols` reads the
+# library's port tables and prints each function's offset from the public
+# facet_port_supported; nm gives that symbol's address and, at the sum, the
+# function's size.  No private symbol name is used here.
 : > "$out/mca.tsv"
 : > "$out/size.tsv"
 echo "# port kernel cpu cycles_per_sample (llvm-mca, modelled)" >> "$out/mca.tsv"
@@ -26,22 +28,26 @@ case $(${CC:-cc} -dumpmachine) in
 x86_64*|i?86*) x86=1 ;;
 *) x86=0 ;;
 esac
-for port in scalar sse2 avx2 avx512 neon; do
-    obj=$(obj_of $port)
-    [ -f "$obj" ] || continue
-    lanes=$(lanes_of $port)
-    for k in $kernels; do
-        sz=$(nm -S --defined-only "$obj" 2>/dev/null | awk -v s="batch_${k}_" '$4 == s { print $2 }')
-        [ -n "$sz" ] && echo "f32 $port $k $(printf '%d' "0x$sz")" >> "$out/size.tsv"
-        if [ $x86 = 1 ] && command -v llvm-mca >/dev/null 2>&1; then
-            sh bench/report/mca.sh objdump "$obj" "batch_${k}_" x86_64 znver3 skylake |
-                while read -r cpu cyc; do
-                    echo "$port $k $cpu $(awk -v c="$cyc" -v l="$lanes" 'BEGIN { printf "%.3f", c / l }')"
-                done >> "$out/mca.tsv"
-        fi
-    done
-    echo "report: llvm-mca + sizes: $port done"
-done
+syms=$(nm -S --defined-only "$bin")
+anchor=$(printf '%s\n' "$syms" | awk '$NF == "facet_port_supported" { print $1; exit }')
+[ -n "$anchor" ] || { echo "report: no facet_port_supported in $bin"; exit 1; }
+"$bin" batch-symbols > "$out/batch-symbols.txt" || exit 1
+last=
+while read -r port k off; do
+    [ "$port" != "$last" ] && [ -n "$last" ] && echo "report: llvm-mca + sizes: $last done"
+    last=$port
+    addr=$(printf "%0${#anchor}x" $((0x$anchor + off)))
+    sz=$(printf '%s\n' "$syms" | awk -v a="$addr" '$1 == a && NF == 4 && $3 ~ /^[tT]$/ { print $2; exit }')
+    [ -n "$sz" ] || { echo "report: no function at 0x$addr ($port $k) in $bin"; continue; }
+    echo "f32 $port $k $(printf '%d' "0x$sz")" >> "$out/size.tsv"
+    if [ $x86 = 1 ] && command -v llvm-mca >/dev/null 2>&1; then
+        sh bench/report/mca.sh objdump "$bin" "0x$addr+0x$sz" x86_64 znver3 skylake |
+            while read -r cpu cyc; do
+                echo "$port $k $cpu $(awk -v c="$cyc" -v l="$(lanes_of $port)" 'BEGIN { printf "%.3f", c / l }')"
+            done >> "$out/mca.tsv"
+    fi
+done < "$out/batch-symbols.txt"
+[ -n "$last" ] && echo "report: llvm-mca + sizes: $last done"
 
 # ---- Cortex-M: fixed point and soft-float f32, traced under qemu -----------
 # (bench/cortexm/cortexm.sh: executed-instruction counts, llvm-mca on the executed

@@ -1,9 +1,11 @@
 # The bench machinery (bench/, its own binary build/facet-bench):
 # `facet-bench bench` runs and prints well-formed JSON with the expected
-# fields and rejects bad selections; and the library's `facet` command
-# carries none of it (no bench or peer object, so no -march=native code).
-# The PNG encoder and rasterizer tests are build/tests/test_bench, run by
-# the compiler suites.  Timing figures are not judged.
+# fields and rejects bad selections; `facet-bench batch-symbols` locates
+# every port's batch functions (what bench/report/report.sh sizes); and the
+# library's `facet` command carries none of it (no bench or peer object,
+# so no -march=native code).  The PNG encoder and rasterizer tests are
+# build/tests/test_bench, run by the compiler suites.  Timing figures are
+# not judged.
 . tests/suite_lib.sh
 pass=0 fail=0
 ok() { pass=$((pass + 1)); }
@@ -24,6 +26,21 @@ shared=$(comm -12 build/bench-suite.bench.syms build/bench-suite.facet.syms | tr
 n=$(nm build/facet | grep -ciE 'peer|bench'); [ "$n" -eq 0 ] && ok || bad "nm build/facet: $n peer/bench symbols"
 build/facet bench >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "facet still has a bench verb"
 build/facet --help | grep -q bench && bad "facet --help mentions bench" || ok
+# batch-symbols: one line per compiled-in port and kernel, each at a function
+nports=$(build/facet eval --help | sed -n 's/^ports compiled in://p' | sed 's/ (not on this CPU)//g' | wc -w)
+nk=$(build/facet list | wc -l)
+build/facet-bench batch-symbols > build/bench-suite.batch-symbols; rc=$?
+[ $rc -eq 0 ] && [ "$(wc -l < build/bench-suite.batch-symbols)" -eq $((nports * nk)) ] && ok ||
+    bad "batch-symbols: exit $rc, $(wc -l < build/bench-suite.batch-symbols) lines, want $nports ports x $nk kernels"
+syms=$(nm -S --defined-only build/facet-bench)
+anchor=$(printf '%s\n' "$syms" | awk '$NF == "facet_port_supported" { print $1; exit }')
+missing=0
+while read -r port k off; do
+    addr=$(printf "%0${#anchor}x" $((0x$anchor + off)))
+    printf '%s\n' "$syms" | awk -v a="$addr" '$1 == a && NF == 4 && $3 ~ /^[tT]$/ { f = 1 } END { exit !f }' ||
+        missing=$((missing + 1))
+done < build/bench-suite.batch-symbols
+[ -n "$anchor" ] && [ $missing -eq 0 ] && ok || bad "batch-symbols: $missing offsets are not functions"
 out=$(build/facet-bench bench ggx_d --json --quick 2>/dev/null); rc=$?
 [ $rc -eq 0 ] && ok || bad "facet-bench bench ggx_d --json exited $rc"
 j=$(printf '%s' "$out" | tr -d '\n')
