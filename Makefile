@@ -2,8 +2,8 @@
 #   make            build/libfacet.a, build/libfacet.so, build/facet
 #   make check      every test (gcc, clang, sanitizers, cross ports); closing
 #                   line "N passed, N failed, N skipped"
-#   make report     accuracy sweep (+ bench) -> build/report/
-#   make install PREFIX=/usr/local
+#   make report     accuracy sweep (+ bench, build/facet-bench) -> build/report/
+#   make install PREFIX=/usr/local   (headers, libraries, pkg-config, bin/facet)
 #   make fx-sources  the C files a firmware build compiles for the fixed-point
 #                   kernels (no f32 code, no dispatcher, no oracle, no libm)
 # Variables: CC, BUILD (output dir), CFLAGS (optimisation/debug/sanitizers).
@@ -72,8 +72,9 @@ fx-sources:
 report: all
 	@tests/report.sh $(BUILD)
 
-install: lib
-	install -d $(DESTDIR)$(PREFIX)/include/facet/detail $(DESTDIR)$(PREFIX)/lib/pkgconfig
+install: lib $(BUILD)/facet
+	install -d $(DESTDIR)$(PREFIX)/include/facet/detail $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
+	install -m 755 $(BUILD)/facet $(DESTDIR)$(PREFIX)/bin/
 	install -m 644 include/facet.h $(DESTDIR)$(PREFIX)/include/
 	install -m 644 include/facet/*.h $(DESTDIR)$(PREFIX)/include/facet/
 	install -m 644 include/facet/detail/*.h $(DESTDIR)$(PREFIX)/include/facet/detail/

@@ -25,7 +25,6 @@ static void usage_main(FILE *f)
             "  eval KERNEL          evaluate KERNEL on samples read from stdin\n"
             "                       (--format f32|fx, --port P)\n"
             "  vectors KERNEL       golden input/output vectors of a fixed-point kernel\n"
-            "  bench [KERNEL]       cycles per sample of every kernel, port and format\n"
             "Run '%s <verb> --help' for a verb's options.\n",
             prog, prog);
 }
@@ -199,12 +198,10 @@ typedef struct {
     int (*run)(int argc, char **argv); /* argv[0] is the verb */
 } verb;
 
-int facet_cmd_bench(int argc, char **argv); /* bench/cli_bench.c */
 static const verb verbs[] = {
     { "list", cmd_list },
     { "eval", cmd_eval },
     { "vectors", facet_cli_vectors }, /* src/cli/fx.c */
-    { "bench", facet_cmd_bench },
 };
 
 int main(int argc, char **argv)

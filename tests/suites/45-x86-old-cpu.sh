@@ -1,7 +1,8 @@
 # The x86 build on an older CPU model under qemu-x86_64 (Nehalem: SSE4.2,
 # no AVX): the dispatcher must pick sse2, refuse avx2/avx512 with a clear
 # error, and nothing outside the AVX objects may execute an AVX instruction
-# (qemu would stop the test with SIGILL).  Skipped off x86 or without qemu.
+# (qemu would stop the test with SIGILL); the same for the bench's SIMD
+# loops and rasterizer paths.  Skipped off x86 or without qemu.
 . tests/suite_lib.sh
 case "$(${CC:-cc} -dumpmachine)" in
 x86_64*) ;;
@@ -26,7 +27,7 @@ echo "0.5 0.5" | $q build/facet eval ggx_d --port avx2 > /dev/null 2> build/old-
 [ $? -eq 2 ] && grep -q "cannot run it" build/old-cpu.err && ok || bad "--port avx2: $(cat build/old-cpu.err)"
 out=$(echo "0.6 0.7 0.5 0.1 0.04 0.5" | $q build/facet eval brdf_hammon) && [ -n "$out" ] && ok || bad "eval on auto"
 # the test binaries: every check passes; the AVX ports are reported unsupported
-for t in test_f32_ports test_f32_accuracy test_fx_ports test_f32_bad_input; do
+for t in test_f32_ports test_f32_accuracy test_fx_ports test_f32_bad_input test_bench; do
     res=$(FACET_TEST_QUICK=1 $q build/tests/$t 2>&1)
     rc=$?
     summary=$(printf '%s\n' "$res" | tail -n 1)
@@ -35,4 +36,10 @@ for t in test_f32_ports test_f32_accuracy test_fx_ports test_f32_bad_input; do
 done
 res=$(FACET_TEST_QUICK=1 $q build/tests/test_f32_ports 2>&1)
 printf '%s' "$res" | grep -q "port avx2: compiled in, but this CPU cannot run it" && ok || bad "avx2 not reported unsupported"
+# the bench's SIMD loops ask facet_port_supported(): no avx2 row, no SIGILL
+# (the peers are left out: they are built with -march=native)
+out=$($q build/facet-bench bench lambert --quick --no-peers --format f32 2>&1); rc=$?
+if [ $rc -eq 0 ] && printf '%s\n' "$out" | grep -qE '^lambert +f32 +sse2 +inline' &&
+    ! printf '%s\n' "$out" | grep -qE '^lambert +f32 +avx'; then ok; else
+    printf '%s\n' "$out" | tail -n 5; bad "facet-bench bench under Nehalem (exit $rc)"; fi
 echo "old-cpu: $pass passed, $fail failed, 0 skipped"

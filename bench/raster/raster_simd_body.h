@@ -1,5 +1,5 @@
 /* raster_simd_body.h - the SIMD-inline shading path of the rasterizer,
- * W pixels per kernel call.  Included by raster_avx2.c / raster_sse2.c with
+ * W pixels per kernel call.  Included by raster_{avx2,sse2,neon}.c with
  * V, W, LD, ST, SET1, ADD, SUB, MUL, DIV, SQRT, MAX, BRDF_RGB, SHADE_FN defined.
  * Same lighting as rs_shade_scalar (raster.c), vectorised across pixels. */
 SHADE_FN(rs_gbuf *g)

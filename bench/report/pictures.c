@@ -7,7 +7,7 @@
 #include "facet/scalar.h"
 #include "facet/oracle.h"
 #include "facet/fx.h"
-#include "bench.h"
+#include "harness/bench.h"
 #include "pictures.h"
 
 #define PI_ 3.14159265358979323846

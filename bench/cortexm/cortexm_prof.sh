@@ -1,8 +1,8 @@
 #!/bin/sh
-# bench/cortexm_prof.sh [BUILD_DIR] [KERNEL...] - where the fixed-point
+# bench/cortexm/cortexm_prof.sh [BUILD_DIR] [KERNEL...] - where the fixed-point
 # kernels spend their executed instructions on Cortex-M0 and M4 (run as
-# `bench/cortexm.sh --profile ...`).  Same build and qemu trace as
-# bench/cortexm.sh (-O2, the 4 inputs of bench/cortexm_main.c), plus -g:
+# `bench/cortexm/cortexm.sh --profile ...`).  Same build and qemu trace as
+# bench/cortexm/cortexm.sh (-O2, the 4 inputs of bench/cortexm/cortexm_main.c), plus -g:
 # every executed address of a kernel call is mapped through the DWARF
 # inline chain (addr2line -i) and counted twice, per call (mean of the 4):
 #   op    the outermost fx primitive the instruction belongs to: an fxf_*
@@ -32,13 +32,13 @@ for cpu in cortex-m0 cortex-m4; do
     mkdir -p "$b.d"
     # shellcheck disable=SC2086
     arm-none-eabi-gcc -mcpu=$cpu $cflags $link -DBENCH_FX src/fx_core.c src/fx_kernels.c \
-        bench/cortexm_main.c -o "$b.elf" || exit 1
+        bench/cortexm/cortexm_main.c -o "$b.elf" || exit 1
     arm-none-eabi-objdump -d "$b.elf" > "$b.dis"
     arm-none-eabi-nm "$b.elf" | awk '$2 ~ /^[Tt]$/ && $3 ~ /^facet_.*_fx$/ { print $1, $3 }' |
         sed -e 's/ facet_\(.*\)_fx$/ \1/' > "$b.sym"
     timeout 120 qemu-system-arm -M $mach -nographic -semihosting-config enable=on,target=native \
         -kernel "$b.elf" -singlestep -d exec,nochain -D "$b.trace" >/dev/null 2>&1 || exit 1
-    awk -v dir="$b.d" -v pcs=1 -f bench/cortexm_trace.awk "$b.dis" "$b.sym" "$b.trace" > "$b.calls"
+    awk -v dir="$b.d" -v pcs=1 -f bench/cortexm/cortexm_trace.awk "$b.dis" "$b.sym" "$b.trace" > "$b.calls"
     rm -f "$b.trace"
     for k in $kernels; do
         [ -f "$b.d/$k.pc" ] || { echo "cortexm-prof: no calls of $k"; continue; }

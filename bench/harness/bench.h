@@ -1,4 +1,4 @@
-/* bench.h - the benchmark engine behind `facet bench` and the report:
+/* bench.h - the benchmark engine behind `facet-bench bench` and the report:
  * every kernel x format x port x way of calling it (plus the peers), each
  * with its error against the double oracle and its cost in clock units. */
 #ifndef FACET_BENCH_H

@@ -1,5 +1,5 @@
 # cortexm_mca.awk - an executed-instruction listing (objdump syntax, from
-# bench/cortexm_trace.awk) as llvm-mca input: .w/.n width suffixes dropped
+# bench/cortexm/cortexm_trace.awk) as llvm-mca input: .w/.n width suffixes dropped
 # (LLVM's assembler picks the encoding), every branch target replaced by
 # one local label, BL/BLX turned into B (llvm-mca charges a call 100
 # cycles; the callee's instructions follow in the trace anyway).

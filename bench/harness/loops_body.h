@@ -5,7 +5,7 @@
  * then include this file once. */
 #include "facet.h"
 #include "loops.h"
-#include "../src/kernel_list.h"
+#include "src/kernel_list.h"
 
 #define LP_CAT_(a, b) a##b
 #define LP_CAT(a, b) LP_CAT_(a, b)
@@ -36,7 +36,7 @@
             y = LP_K(name)(FACET_EACH_INPUT(n, LP_FED_));                       \
         LP_STORE(out, y);                                                       \
     }
-#include "../src/kernels.def"
+#include "src/kernels.def"
 #undef FACET_KERNEL
 
 static void lp_thr_identity(float *out, const float *const *in, size_t n_)
@@ -57,7 +57,7 @@ static void lp_chain_identity(float *out, const float *const *in, size_t n_)
 
 static const bench_loop LP_CAT(lp_k_, LP_NAME)[] = {
 #define FACET_KERNEL(name, NAME, n, ...) { LP_CAT(thr_, name), LP_CAT(chain_, name) },
-#include "../src/kernels.def"
+#include "src/kernels.def"
 #undef FACET_KERNEL
     { lp_thr_identity, lp_chain_identity },
 };

@@ -1,5 +1,6 @@
 /* raster_avx2.c - the rasterizer's AVX2-inline shading path: 8 pixels per
- * facet_brdf_hammon_f32_avx2 call.  Built with -mavx2 -mfma on x86. */
+ * facet_brdf_hammon_f32_avx2 call.  Built with -mavx2 -mfma on x86; runs
+ * only where facet_port_supported("avx2") (AVX2 + FMA, OS saves YMM). */
 #include "facet.h"
 #include "raster.h"
 #if defined(__AVX2__) && defined(__FMA__) && defined(__has_include)
@@ -13,10 +14,7 @@
 static int shade(rs_gbuf *g);
 int rs_shade_avx2(rs_gbuf *g)
 {
-    __builtin_cpu_init();
-    if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma"))
-        return 0;
-    return shade(g);
+    return facet_port_supported("avx2") ? shade(g) : 0;
 }
 #define V __m256
 #define W 8

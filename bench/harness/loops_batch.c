@@ -3,7 +3,7 @@
  * (the latency of a port is its inline kernel's, see loops_<port>.c). */
 #include "facet.h"
 #include "loops.h"
-#include "../src/kernel_list.h"
+#include "src/kernel_list.h"
 
 static int always(void) { return 1; }
 
@@ -14,12 +14,12 @@ static int always(void) { return 1; }
     {                                                                          \
         facet_##name##_f32_batch(out, FACET_EACH_INPUT(n_in, COL_), n);        \
     }
-#include "../src/kernels.def"
+#include "src/kernels.def"
 #undef FACET_KERNEL
 
 static const bench_loop k_[] = {
 #define FACET_KERNEL(name, NAME, n, ...) { batch_##name, 0 },
-#include "../src/kernels.def"
+#include "src/kernels.def"
 #undef FACET_KERNEL
     { 0, 0 },
 };

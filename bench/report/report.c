@@ -1,7 +1,7 @@
-/* report.c - build/facet-report OUTDIR [--quick]: the benchmark part of
+/* report.c - `facet-bench report OUTDIR [--quick]`: the benchmark part of
  * `make report`.  Runs every benchmark (bench.c), the model-error sweep of
  * every approximation, the pictures and the rasterizer, reads the modelled
- * cycles and code sizes that bench/report.sh left in OUTDIR (mca.tsv,
+ * cycles and code sizes that bench/report/report.sh left in OUTDIR (mca.tsv,
  * size.tsv, arm.tsv), and writes OUTDIR/bench.md, OUTDIR/index.html (self-
  * contained: inline SVG, PNGs as data URIs) and the PNG files. */
 #ifndef _GNU_SOURCE
@@ -15,11 +15,12 @@
 #include <time.h>
 #include "facet.h"
 #include "facet/oracle.h"
-#include "bench.h"
-#include "cycles.h"
+#include "harness/bench.h"
+#include "harness/cycles.h"
 #include "pictures.h"
 #include "png.h"
-#include "raster.h"
+#include "raster/raster.h"
+#include "facet_bench.h"
 
 static const char *outdir;
 static FILE *md, *html;
@@ -192,7 +193,7 @@ static const row *find_row(const char *kernel, const char *format, const char *p
 
 static double est(double ticks) { return ticks / tpc; }
 
-/* ---- modelled cycles and sizes from bench/report.sh ------------------------ */
+/* ---- modelled cycles and sizes from report.sh --------------------------- */
 
 typedef struct tsv { char a[32], b[32], c[32]; double v; char src[64]; } tsv;
 static tsv *mca, *sizes, *arm;
@@ -480,7 +481,7 @@ static void section_kernels(void)
         }
     }
     tend();
-    para("Peers (bench/peers.h): <b>textbook</b> (-O2): H = normalize(L+V), powf, D in tan form, Smith "
+    para("Peers (bench/harness/peers.h): <b>textbook</b> (-O2): H = normalize(L+V), powf, D in tan form, Smith "
          "via Lambda with sqrtf, plain divisions. <b>shader</b> (-O3 -march=native -fno-math-errno "
          "-ffp-contract=fast, auto-vectorized): a2 form of D, exact correlated Vis with two sqrtf, pow5 by "
          "multiplication, Hammon diffuse. <b>shader_fm</b>: the same source with -ffast-math. Single-term "
@@ -735,11 +736,11 @@ static void section_arm(void)
     size_t ki;
     h2("Cortex-M: fixed point vs soft-float f32 (qemu traces; measured counts, modelled cycles)");
     if (!n_arm) {
-        para("No Cortex-M figures in this build (arm.tsv empty: bench/cortexm.sh needs arm-none-eabi-gcc "
+        para("No Cortex-M figures in this build (arm.tsv empty: bench/cortexm/cortexm.sh needs arm-none-eabi-gcc "
              "with newlib and qemu-system-arm; llvm-mca for the modelled cycles).");
         return;
     }
-    para("bench/cortexm.sh builds bench/cortexm_main.c with arm-none-eabi-gcc -O2 -mthumb -mcpu=CORE "
+    para("bench/cortexm/cortexm.sh builds bench/cortexm/cortexm_main.c with arm-none-eabi-gcc -O2 -mthumb -mcpu=CORE "
          "(fixed point: src/fx_core.c, src/fx_kernels.c; f32: facet/scalar.h with -mfloat-abi=soft, so "
          "every float operation is a libgcc call), runs it under qemu-system-arm -singlestep -d exec "
          "(one log line per executed instruction) and cuts each kernel call out of the trace, from the "
@@ -974,7 +975,7 @@ static void write_index(void)
     fclose(out);
 }
 
-int main(int argc, char **argv)
+int facet_bench_report(int argc, char **argv)
 {
     bench_opts o;
     char path[1024];
@@ -987,7 +988,7 @@ int main(int argc, char **argv)
             outdir = argv[i];
     }
     if (!outdir) {
-        fprintf(stderr, "usage: facet-report OUTDIR [--quick]\n");
+        fprintf(stderr, "usage: facet-bench report OUTDIR [--quick]\n");
         return 2;
     }
     cyc_init();
@@ -1000,7 +1001,7 @@ int main(int argc, char **argv)
     snprintf(path, sizeof path, "%s/bench.html", outdir);
     html = fopen(path, "w");
     if (!md || !html) {
-        fprintf(stderr, "facet-report: cannot write to %s\n", outdir);
+        fprintf(stderr, "facet-bench report: cannot write to %s\n", outdir);
         return 1;
     }
     bench_defaults(&o);

@@ -1,5 +1,5 @@
 # cortexm_trace.awk - cuts the calls of the traced functions out of a qemu
-# instruction trace (bench/cortexm.sh).  Reads three files in order:
+# instruction trace (bench/cortexm/cortexm.sh).  Reads three files in order:
 #   1. `objdump -d` of the ELF: address -> size and instruction text
 #   2. "ADDR NAME" lines: the entry point of every function to trace
 #   3. the qemu log of `-singlestep -d exec,nochain`: one line per executed
@@ -11,7 +11,7 @@
 # returns that changed the flow) and appends the executed
 # instruction texts of every call to DIR/NAME.s (for llvm-mca).
 # With -v pcs=1 the executed addresses (hex, one a line) also go to
-# DIR/NAME.pc (bench/cortexm_prof.sh's per-function profile).
+# DIR/NAME.pc (bench/cortexm/cortexm_prof.sh's per-function profile).
 # M0CYCLES: the Cortex-M0 TRM timings (zero wait states, single-cycle
 # multiplier): 1 per instruction, loads/stores 2, LDM/STM/PUSH/POP 1+N,
 # POP with PC 3+N, branches 3 when taken (1 when not), BL 4, BX/BLX 3,

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "facet/oracle.h"
-#include "../tests/sample.h"
+#include "tests/sample.h" /* the samplers the tests judge error on */
 #include "bench.h"
 #include "loops.h"
 #include "peers.h"

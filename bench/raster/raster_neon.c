@@ -3,25 +3,11 @@
  * VFPv4 - this object alone gets -mfpu=neon-vfpv4).  Divisions and square
  * roots use the port's own refined rcp/rsqrt (armv7 NEON has no vector
  * divide or square root). */
-#include <string.h>
 #include "facet.h"
 #include "raster.h"
 
 #if defined(__ARM_NEON)
 #include "facet/neon.h"
-
-/* the CPU runs the neon port (the library checked HWCAP) */
-static int neon_here(void)
-{
-    size_t i;
-    for (i = 0; i < facet_port_count(); i++) {
-        int sup;
-        const char *n = facet_port_at(i, &sup, NULL);
-        if (!strcmp(n, "neon"))
-            return sup;
-    }
-    return 0;
-}
 
 static float32x4_t div_(float32x4_t a, float32x4_t b) { return vmulq_f32(a, facet_neon_rcp(b)); }
 static float32x4_t sqrt_(float32x4_t x) { return vmulq_f32(x, facet_neon_rsqrt(x)); }
@@ -29,7 +15,7 @@ static float32x4_t sqrt_(float32x4_t x) { return vmulq_f32(x, facet_neon_rsqrt(x
 static int shade(rs_gbuf *g);
 int rs_shade_neon(rs_gbuf *g)
 {
-    return neon_here() ? shade(g) : 0;
+    return facet_port_supported("neon") ? shade(g) : 0; /* armv7: HWCAP */
 }
 #define V float32x4_t
 #define W 4

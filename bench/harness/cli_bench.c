@@ -1,4 +1,4 @@
-/* cli_bench.c - `facet bench`: cycles and error of every kernel x format x
+/* cli_bench.c - `facet-bench bench`: cycles and error of every kernel x format x
  * port x path (and the peers), as a table or JSON.  See usage below. */
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE
@@ -8,13 +8,13 @@
 #include <string.h>
 #include "bench.h"
 
-int facet_cmd_bench(int argc, char **argv);
+#include "facet_bench.h"
 
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: facet bench [KERNEL] [--port P] [--format f32|fx] [--json]\n"
-            "                   [--samples N] [--err-samples N] [--epochs E] [--quick] [--no-peers]\n"
+            "usage: facet-bench bench [KERNEL] [--port P] [--format f32|fx] [--json]\n"
+            "                         [--samples N] [--err-samples N] [--epochs E] [--quick] [--no-peers]\n"
             "Times every kernel (or KERNEL) on every port this CPU runs, through the batch\n"
             "API, the inline kernels and the library call, next to the peers (textbook,\n"
             "shader, shader_fm), and measures each one's error against the double oracle.\n"
@@ -135,12 +135,12 @@ int facet_cmd_bench(int argc, char **argv)
             char *end;
             long v = strtol(argv[++i], &end, 10);
             if (*end || v <= 0 || v > (1L << 26)) {
-                fprintf(stderr, "facet bench: bad value '%s' for %s\n", argv[i], a);
+                fprintf(stderr, "facet-bench bench: bad value '%s' for %s\n", argv[i], a);
                 return 2;
             }
             if (!strcmp(a, "--samples")) {
                 if (v % 8) {
-                    fprintf(stderr, "facet bench: --samples must be a multiple of 8\n");
+                    fprintf(stderr, "facet-bench bench: --samples must be a multiple of 8\n");
                     return 2;
                 }
                 o.n_time = (size_t)v;
@@ -150,22 +150,22 @@ int facet_cmd_bench(int argc, char **argv)
                 o.epochs = (int)v;
             }
         } else if (a[0] == '-' && a[1]) {
-            fprintf(stderr, "facet bench: unknown or incomplete option '%s'\n", a);
+            fprintf(stderr, "facet-bench bench: unknown or incomplete option '%s'\n", a);
             usage(stderr);
             return 2;
         } else if (!o.kernel) {
             if (!facet_kernel_find(a)) {
-                fprintf(stderr, "facet bench: unknown kernel '%s' (see 'facet list')\n", a);
+                fprintf(stderr, "facet-bench bench: unknown kernel '%s' (see 'facet list')\n", a);
                 return 2;
             }
             o.kernel = a;
         } else {
-            fprintf(stderr, "facet bench: unexpected argument '%s'\n", a);
+            fprintf(stderr, "facet-bench bench: unexpected argument '%s'\n", a);
             return 2;
         }
     }
     if (o.format && strcmp(o.format, "f32") && strcmp(o.format, "fx")) {
-        fprintf(stderr, "facet bench: unknown format '%s' (known: f32, fx)\n", o.format);
+        fprintf(stderr, "facet-bench bench: unknown format '%s' (known: f32, fx)\n", o.format);
         return 2;
     }
     if (o.port) {
@@ -176,7 +176,7 @@ int facet_cmd_bench(int argc, char **argv)
             if (!strcmp(facet_port_at(p, NULL, NULL), o.port))
                 known = 1;
         if (!known) {
-            fprintf(stderr, "facet bench: unknown port '%s'\n", o.port);
+            fprintf(stderr, "facet-bench bench: unknown port '%s'\n", o.port);
             return 2;
         }
     }
@@ -206,7 +206,7 @@ int facet_cmd_bench(int argc, char **argv)
     }
     n = bench_run(&o, sink, &c);
     if (n < 0) {
-        fprintf(stderr, "facet bench: unknown port or format in the selection\n");
+        fprintf(stderr, "facet-bench bench: unknown port or format in the selection\n");
         return 2;
     }
     if (c.json)

@@ -1,5 +1,7 @@
 /* loops_neon.c - benchmark loops over the inline NEON kernels (facet/neon.h),
- * 4 samples per call, on aarch64 / ARM with NEON. */
+ * 4 samples per call, on aarch64 / ARM with NEON (armv7: this object alone is
+ * built with -mfpu=neon-vfpv4, bench/bench.mk).  Run only where the library
+ * says this CPU runs its neon port (armv7: NEON and VFPv4 in HWCAP). */
 #include "facet.h"
 #include "loops.h"
 #if (defined(__ARM_NEON) || defined(__aarch64__)) && defined(__has_include)
@@ -11,7 +13,7 @@
 #ifdef HAVE_NEON_H
 #include "facet/neon.h"
 
-static int avail(void) { return 1; }
+static int avail(void) { return facet_port_supported("neon"); }
 
 #define LP_V float32x4_t
 #define LP_W 4

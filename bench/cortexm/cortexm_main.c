@@ -1,4 +1,4 @@
-/* cortexm_main.c - the Cortex-M harness behind bench/cortexm.sh: calls every
+/* cortexm_main.c - the Cortex-M harness behind bench/cortexm/cortexm.sh: calls every
  * kernel on a few representative inputs, once each, under qemu-system-arm
  * with an instruction trace (-d exec with one instruction per block), so the
  * script can cut out each call's executed instructions: from the kernel's

@@ -2,7 +2,7 @@
 #include <math.h>
 #include <string.h>
 #include "fxhook.h"
-#include "../src/kernel_list.h"
+#include "src/kernel_list.h"
 
 static volatile int32_t opaque_zero; /* always 0; the compiler cannot know */
 
@@ -33,7 +33,7 @@ static volatile int32_t opaque_zero; /* always 0; the compiler cannot know */
             y = facet_##name##_fx(FACET_EACH_INPUT(n, CHAINED_));                                  \
         *(T *)out = y;                                                                             \
     })
-#include "../src/kernels.def"
+#include "src/kernels.def"
 #undef FACET_KERNEL
 
 void bench_fx_identity_chain(void *out, const int32_t *const *in, size_t n_)
@@ -47,7 +47,7 @@ void bench_fx_identity_chain(void *out, const int32_t *const *in, size_t n_)
 
 static bench_fx table[] = {
 #define FACET_KERNEL(name, NAME, n, T, ...) FACET_IF_FX(T, { #name, NULL, batch_##name, call_##name, chain_##name },)
-#include "../src/kernels.def"
+#include "src/kernels.def"
 #undef FACET_KERNEL
 };
 

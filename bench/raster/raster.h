@@ -53,9 +53,11 @@ void rs_free(rs_gbuf *g);
 void rs_shade_scalar(rs_gbuf *g);
 void rs_shade_batch(rs_gbuf *g);
 void rs_shade_oracle(rs_gbuf *g);
-int rs_shade_avx2(rs_gbuf *g);    /* 0: not available on this CPU/build */
+/* the SIMD paths: 0 where the port is not compiled in or not on this CPU
+ * (facet_port_supported), else 1 */
+int rs_shade_avx2(rs_gbuf *g);
 int rs_shade_sse2(rs_gbuf *g);
-int rs_shade_neon(rs_gbuf *g); /* raster_neon.c: 4 px per call, 0 where NEON is not here */
+int rs_shade_neon(rs_gbuf *g);
 int rs_shade_fx(rs_gbuf *g);      /* facet/fx.h (always 1) */
 
 /* Tone map (exposure, clamp) and sRGB-encode g->out into rgb (w*h*3). */

@@ -1,10 +1,10 @@
 #!/bin/sh
-# bench/cortexm.sh BUILD_DIR OUT_TSV - Cortex-M figures for the report, from
+# bench/cortexm/cortexm.sh BUILD_DIR OUT_TSV - Cortex-M figures for the report, from
 # executed-instruction traces.  For each build (fixed point: src/fx_*.c;
-# f32: facet/scalar.h with soft float) and core, bench/cortexm_main.c is
+# f32: facet/scalar.h with soft float) and core, bench/cortexm/cortexm_main.c is
 # linked with tests/cortexm/ (startup, mps2.ld) and run under
 # qemu-system-arm -singlestep -d exec,nochain (one log line per executed
-# instruction).  bench/cortexm_trace.awk cuts each kernel call out of the
+# instruction).  bench/cortexm/cortexm_trace.awk cuts each kernel call out of the
 # trace (entry to return, callees and libgcc helpers included, argument
 # set-up and the call instruction not) for 4 representative inputs.
 # Written to OUT_TSV ("what kernel cpu value source"):
@@ -29,12 +29,12 @@
 # mainline code run on the mps2-an386 Cortex-M4 model; our startup does
 # not fit the AN505 secure memory map).  Needs arm-none-eabi-gcc with
 # newlib, qemu-system-arm, and llvm-mca for the -mca lines.
-# `bench/cortexm.sh --profile [BUILD_DIR] [KERNEL...]`: the per-function
-# profile of the fixed-point kernels instead (bench/cortexm_prof.sh).
+# `bench/cortexm/cortexm.sh --profile [BUILD_DIR] [KERNEL...]`: the per-function
+# profile of the fixed-point kernels instead (bench/cortexm/cortexm_prof.sh).
 set -u
 if [ "${1:-}" = --profile ]; then
     shift
-    exec sh bench/cortexm_prof.sh "$@"
+    exec sh bench/cortexm/cortexm_prof.sh "$@"
 fi
 build=${1:-build}
 tsv=${2:-$build/report/arm.tsv}
@@ -67,7 +67,7 @@ for fmt in fx f32soft; do
             pat='^bench_f32_'
         fi
         # shellcheck disable=SC2086
-        if ! arm-none-eabi-gcc -mcpu=$cpu $cflags $link $src bench/cortexm_main.c -o "$b.elf" 2>"$b.log"; then
+        if ! arm-none-eabi-gcc -mcpu=$cpu $cflags $link $src bench/cortexm/cortexm_main.c -o "$b.elf" 2>"$b.log"; then
             echo "cortexm: $fmt $cpu: build failed (see $b.log)"
             continue
         fi
@@ -79,7 +79,7 @@ for fmt in fx f32soft; do
             echo "cortexm: $fmt $cpu: qemu run failed"
             continue
         fi
-        awk -v dir="$b.d" -f bench/cortexm_trace.awk "$b.dis" "$b.sym" "$b.trace" > "$b.calls"
+        awk -v dir="$b.d" -f bench/cortexm/cortexm_trace.awk "$b.dis" "$b.sym" "$b.trace" > "$b.calls"
         rm -f "$b.trace"
         short=${cpu#cortex-}
         for k in $(cut -d' ' -f1 "$b.calls" | sort -u); do
@@ -90,7 +90,7 @@ for fmt in fx f32soft; do
                 echo "$fmt-taken $k $cpu $taken taken-branches-per-call-from-the-trace"
                 [ $cpu = cortex-m0 ] && echo "$fmt-m0cyc $k $cpu $m0 m0-trm-timings-on-executed-trace-modelled"
                 if have llvm-mca && [ $cpu != cortex-m0 ]; then
-                    awk -v noit=$([ $cpu = cortex-m7 ] && echo 1 || echo 0) -f bench/cortexm_mca.awk "$b.d/$k.s" > "$b.d/$k.mca.s"
+                    awk -v noit=$([ $cpu = cortex-m7 ] && echo 1 || echo 0) -f bench/cortexm/cortexm_mca.awk "$b.d/$k.s" > "$b.d/$k.mca.s"
                     c=$(llvm-mca -mtriple=$triple -mcpu=$cpu -iterations=10 "$b.d/$k.mca.s" 2>"$b.d/$k.mca.err" |
                         awk -v n="$ncalls" '/^Total Cycles:/ { printf "%.1f", $3 / (10 * n) }')
                     [ -n "$c" ] && echo "$fmt-mca $k $cpu $c llvm-mca-on-executed-trace-modelled"
