@@ -837,7 +837,7 @@ static void section_targets(void)
         cells[3] = "this machine is not a Zen 3 (see clock)";
         trow(cells);
     }
-    for (ki = 0; ki < facet_kernel_count(); ki++) { /* issue 3: every AVX2 kernel >= 5x its scalar port */
+    for (ki = 0; ki < facet_kernel_count(); ki++) { /* target: every AVX2 kernel >= 5x its scalar port */
         const char *kn = facet_kernel_at(ki)->name;
         const row *x = find_row(kn, "f32", "avx2", "batch"), *sc = find_row(kn, "f32", "scalar", "batch");
         if (!x || !sc)
