@@ -200,7 +200,7 @@ static int want_port(const bench_opts *o, const char *port)
 static void progress(const bench_opts *o, const bench_row *r)
 {
     if (o->progress)
-        fprintf(stderr, "bench: %-22s %-3s %-9s %-6s %10.3g %s/sample\n", r->kernel, r->format,
+        fprintf(stderr, "bench: %-22s %-8s %-9s %-6s %10.3g %s/sample\n", r->kernel, r->format,
                 r->port, r->path, r->thr.median, cyc_unit());
 }
 
@@ -468,11 +468,12 @@ int bench_run(const bench_opts *o, bench_sink sink, void *ctx)
     size_t ki, nk = facet_kernel_count();
     int count = 0;
     size_t ti;
+    int tier;
     const char *saved_port;
 
     if (o->kernel && !facet_kernel_find(o->kernel))
         return -1;
-    if (o->format && strcmp(o->format, "f32") && strcmp(o->format, "fx"))
+    if (o->format && strcmp(o->format, "f32") && strcmp(o->format, "f32_fast") && strcmp(o->format, "fx"))
         return -1;
     if (o->port) {
         int known = !strcmp(o->port, "textbook") || !strcmp(o->port, "shader") ||
@@ -495,8 +496,13 @@ int bench_run(const bench_opts *o, bench_sink sink, void *ctx)
             continue;
         kdata_make(&d, k, (o->n_err + 7) / 8 * 8, o->seed);
 
-        if (!o->format || !strcmp(o->format, "f32")) {
-            /* batch on every port this CPU runs */
+        for (tier = 0; tier < 2; tier++) {
+            /* both f32 tiers: the batch on every port this CPU runs, then the
+             * inline and call loops */
+            const char *tn = tier ? "f32_fast" : "f32";
+            const bench_loops *batch = tier ? &bench_loops_batch_fast : &bench_loops_batch;
+            if (o->format && strcmp(o->format, tn))
+                continue;
             for (p = 0; p < facet_port_count(); p++) {
                 int sup = 0, lanes = 1;
                 const char *pn = facet_port_at(p, &sup, &lanes);
@@ -504,33 +510,39 @@ int bench_run(const bench_opts *o, bench_sink sink, void *ctx)
                 const bench_loops *il = NULL;
                 if (!sup || !want_port(o, pn) || facet_set_port(pn) != 0)
                     continue;
-                row_init(&row, &d, "f32", pn, "batch", lanes);
-                eval_all(bench_loops_batch.k[ki].thr, &d, d.out, d.n);
+                row_init(&row, &d, tn, pn, "batch", lanes);
+                if (tier)
+                    row.bound = k->err_f32_fast;
+                eval_all(batch->k[ki].thr, &d, d.out, d.n);
                 err_of(&row.err, &d, d.out, d.want);
-                row_time(&row, bench_loops_batch.k[ki].thr, &d, o);
+                row_time(&row, batch->k[ki].thr, &d, o);
                 /* latency: the port's inline kernel in a dependent chain */
                 for (ti = 0; bench_loop_tables[ti]; ti++)
                     if (!strcmp(bench_loop_tables[ti]->path, "inline") &&
-                        !strcmp(bench_loop_tables[ti]->port, pn) && bench_loop_tables[ti]->available())
+                        !strcmp(bench_loop_tables[ti]->port, pn) && !strcmp(bench_loop_tables[ti]->tier, tn) &&
+                        bench_loop_tables[ti]->available())
                         il = bench_loop_tables[ti];
                 if (il)
                     row_latency(&row, il->k[ki].chain, il->k[nk].chain, il->lanes, &d, o);
                 finish(&row, o, sink, ctx, &count);
             }
             facet_set_port(saved_port ? saved_port : "auto");
-            /* inline and call loops */
             for (ti = 0; bench_loop_tables[ti]; ti++) {
                 const bench_loops *t = bench_loop_tables[ti];
                 bench_row row;
-                if (!t->available() || !want_port(o, t->port) || !t->k[ki].thr)
+                if (strcmp(t->tier, tn) || !t->available() || !want_port(o, t->port) || !t->k[ki].thr)
                     continue;
-                row_init(&row, &d, "f32", t->port, t->path, t->lanes);
+                row_init(&row, &d, tn, t->port, t->path, t->lanes);
+                if (tier)
+                    row.bound = k->err_f32_fast;
                 eval_all(t->k[ki].thr, &d, d.out, o->n_time);
                 err_of(&row.err, &d, d.out, d.want);
                 row_time(&row, t->k[ki].thr, &d, o);
                 row_latency(&row, t->k[ki].chain, t->k[nk].chain, t->lanes, &d, o);
                 finish(&row, o, sink, ctx, &count);
             }
+        }
+        if (!o->format || !strcmp(o->format, "f32")) {
             /* peers */
             if (o->peers) {
                 static const peer_set *const sets[] = { &peer_textbook, &peer_shader, &peer_shader_fm };

@@ -13,7 +13,7 @@
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: facet-bench bench [KERNEL] [--port P] [--format f32|fx] [--json]\n"
+            "usage: facet-bench bench [KERNEL] [--port P] [--format f32|f32_fast|fx] [--json]\n"
             "                         [--samples N] [--err-samples N] [--epochs E] [--quick] [--no-peers]\n"
             "Times every kernel (or KERNEL) on every port this CPU runs, through the batch\n"
             "API, the inline kernels and the library call, next to the peers (textbook,\n"
@@ -25,7 +25,7 @@ static void usage(FILE *f)
             "the time-stamp counter in ticks (labelled so; est. cycles use a measured\n"
             "ticks-per-cycle ratio).\n"
             "  --port P         scalar, sse2, avx2, avx512, neon, textbook, shader, shader_fm\n"
-            "  --format F       f32 or fx\n"
+            "  --format F       f32, f32_fast or fx\n"
             "  --json           one JSON document on stdout\n"
             "  --samples N      samples per timed pass (default 1024, multiple of 8)\n"
             "  --err-samples N  samples for the error (default 65536)\n"
@@ -96,7 +96,7 @@ static void sink(const bench_row *r, void *vctx)
             snprintf(e1, sizeof e1, "%9.3g", r->err.max_rel);
             snprintf(e2, sizeof e2, "%9.3g", r->err.mean_rel);
         }
-        printf("%-22s %-3s %-9s %-6s %9s %9s %s %8.3f %8.3f %5.1f%%%s %8.3f %s\n", r->kernel,
+        printf("%-22s %-8s %-9s %-6s %9s %9s %s %8.3f %8.3f %5.1f%%%s %8.3f %s\n", r->kernel,
                r->format, r->port, r->path, e1, e2,
                r->bound > 0 ? (r->within ? "ok " : "BAD") : "-  ", r->thr.min, r->thr.median,
                100 * r->thr.spread, r->thr.noisy ? "!" : " ", r->thr.median / c->tpc, lat);
@@ -164,8 +164,8 @@ int facet_cmd_bench(int argc, char **argv)
             return 2;
         }
     }
-    if (o.format && strcmp(o.format, "f32") && strcmp(o.format, "fx")) {
-        fprintf(stderr, "facet-bench bench: unknown format '%s' (known: f32, fx)\n", o.format);
+    if (o.format && strcmp(o.format, "f32") && strcmp(o.format, "f32_fast") && strcmp(o.format, "fx")) {
+        fprintf(stderr, "facet-bench bench: unknown format '%s' (known: f32, f32_fast, fx)\n", o.format);
         return 2;
     }
     if (o.port) {
@@ -200,7 +200,7 @@ int facet_cmd_bench(int argc, char **argv)
                    c.tpc);
         if (!o.format || !strcmp(o.format, "fx"))
             printf("# fx rows: errors in LSB of the output format (L), vs round(oracle 2^frac) at the Q15 inputs\n");
-        printf("%-22s %-3s %-9s %-6s %9s %9s %s %8s %8s %6s %8s %s\n", "kernel", "fmt", "port",
+        printf("%-22s %-8s %-9s %-6s %9s %9s %s %8s %8s %6s %8s %s\n", "kernel", "fmt", "port",
                "path", "max_err", "mean_err", "bnd", "thr_min", "thr_med", "spread", "est.cyc",
                "latency/call");
     }

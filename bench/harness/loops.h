@@ -26,6 +26,7 @@ typedef struct bench_loops {
     int lanes;
     int (*available)(void);
     const bench_loop *k; /* facet_kernel_count() + 1 entries */
+    const char *tier;   /* "f32" or "f32_fast" */
 } bench_loops;
 
 /* every loop table compiled for this target; NULL-terminated */
@@ -35,5 +36,9 @@ extern const bench_loops *const bench_loop_tables[];
 extern const bench_loops bench_loops_scalar_inline, bench_loops_scalar_call,
     bench_loops_sse2_inline, bench_loops_avx2_inline, bench_loops_neon_inline,
     bench_loops_batch;
+/* the same for the fast tier (facet_<kernel>_f32_fast...) */
+extern const bench_loops bench_loops_scalar_inline_fast, bench_loops_scalar_call_fast,
+    bench_loops_sse2_inline_fast, bench_loops_avx2_inline_fast, bench_loops_neon_inline_fast,
+    bench_loops_batch_fast;
 
 #endif

@@ -1,8 +1,8 @@
 /* loops_body.h - instantiates a loops table (see loops.h).  Define
  *   LP_V, LP_W, LP_LOAD(p), LP_STORE(p, v), LP_FEED(x, y) (x + y*0),
  *   LP_ZERO, LP_K(name) (the kernel function), LP_NAME (table token),
- *   LP_PATH, LP_PORT (strings), LP_AVAIL (an int(void) function)
- * then include this file once. */
+ *   LP_PATH, LP_PORT, LP_TIER (strings), LP_AVAIL (an int(void) function)
+ * then include this file; once per tier, with another LP_NAME and LP_K. */
 #include "facet.h"
 #include "loops.h"
 #include "src/kernel_list.h"
@@ -22,13 +22,13 @@
 
 /* Names generated here from src/kernels.def: two loops per kernel. */
 #define FACET_KERNEL(name, NAME, n, ...)                                        \
-    static void LP_CAT(thr_, name)(float *out, const float *const *in, size_t n_) \
+    static void LP_CAT(LP_NAME, LP_CAT(_thr_, name))(float *out, const float *const *in, size_t n_) \
     {                                                                           \
         size_t i;                                                               \
         for (i = 0; i < n_; i += LP_W)                                          \
             LP_STORE(out + i, LP_K(name)(FACET_EACH_INPUT(n, LP_PLAIN_)));      \
     }                                                                           \
-    static void LP_CAT(chain_, name)(float *out, const float *const *in, size_t n_) \
+    static void LP_CAT(LP_NAME, LP_CAT(_chain_, name))(float *out, const float *const *in, size_t n_) \
     {                                                                           \
         size_t i;                                                               \
         LP_V y = LP_ZERO;                                                       \
@@ -39,14 +39,14 @@
 #include "src/kernels.def"
 #undef FACET_KERNEL
 
-static void lp_thr_identity(float *out, const float *const *in, size_t n_)
+static void LP_CAT(LP_NAME, _thr_identity)(float *out, const float *const *in, size_t n_)
 {
     size_t i;
     for (i = 0; i < n_; i += LP_W)
         LP_STORE(out + i, LP_LOAD(in[0] + i));
 }
 
-static void lp_chain_identity(float *out, const float *const *in, size_t n_)
+static void LP_CAT(LP_NAME, _chain_identity)(float *out, const float *const *in, size_t n_)
 {
     size_t i;
     LP_V y = LP_ZERO;
@@ -56,12 +56,12 @@ static void lp_chain_identity(float *out, const float *const *in, size_t n_)
 }
 
 static const bench_loop LP_CAT(lp_k_, LP_NAME)[] = {
-#define FACET_KERNEL(name, NAME, n, ...) { LP_CAT(thr_, name), LP_CAT(chain_, name) },
+#define FACET_KERNEL(name, NAME, n, ...) { LP_CAT(LP_NAME, LP_CAT(_thr_, name)), LP_CAT(LP_NAME, LP_CAT(_chain_, name)) },
 #include "src/kernels.def"
 #undef FACET_KERNEL
-    { lp_thr_identity, lp_chain_identity },
+    { LP_CAT(LP_NAME, _thr_identity), LP_CAT(LP_NAME, _chain_identity) },
 };
 
 const bench_loops LP_CAT(bench_loops_, LP_NAME) = {
-    LP_PATH, LP_PORT, LP_W, LP_AVAIL, LP_CAT(lp_k_, LP_NAME),
+    LP_PATH, LP_PORT, LP_W, LP_AVAIL, LP_CAT(lp_k_, LP_NAME), LP_TIER,
 };

@@ -25,9 +25,18 @@ static int avail(void) { return facet_port_supported("sse2"); }
 #define LP_PATH "inline"
 #define LP_PORT "sse2"
 #define LP_AVAIL avail
+#define LP_TIER "f32"
+#include "loops_body.h"
+#undef LP_K
+#undef LP_NAME
+#undef LP_TIER
+#define LP_K(name) facet_##name##_f32_fast_sse2
+#define LP_NAME sse2_inline_fast
+#define LP_TIER "f32_fast"
 #include "loops_body.h"
 #else
 static int never(void) { return 0; }
 static const bench_loop none[1];
-const bench_loops bench_loops_sse2_inline = { "inline", "sse2", 4, never, none };
+const bench_loops bench_loops_sse2_inline = { "inline", "sse2", 4, never, none, "f32" };
+const bench_loops bench_loops_sse2_inline_fast = { "inline", "sse2", 4, never, none, "f32_fast" };
 #endif

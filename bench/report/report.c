@@ -155,7 +155,7 @@ static void picture(const pic *p, const char *name)
 
 typedef struct row {
     bench_row r;
-    char kernel[32], format[8], port[16], path[16];
+    char kernel[32], format[16], port[16], path[16];
 } row;
 
 static row *rows;
@@ -195,11 +195,13 @@ static double est(double ticks) { return ticks / tpc; }
 
 /* ---- modelled cycles and sizes from report.sh --------------------------- */
 
-typedef struct tsv { char a[32], b[32], c[32]; double v; char src[64]; } tsv;
+/* a row of a .tsv: three names and a value (and a source), or with a
+ * leading format column (mca.tsv) four names */
+typedef struct tsv { char f[32], a[32], b[32], c[32]; double v; char src[64]; } tsv;
 static tsv *mca, *sizes, *arm;
 static int n_mca, n_sizes, n_arm;
 
-static tsv *read_tsv(const char *name, int *n)
+static tsv *read_tsv(const char *name, int *n, int with_format)
 {
     char path[1024], line[512];
     FILE *f;
@@ -215,7 +217,8 @@ static tsv *read_tsv(const char *name, int *n)
         memset(&x, 0, sizeof x);
         if (line[0] == '#')
             continue;
-        if (sscanf(line, "%31s %31s %31s %lf %63s", x.a, x.b, x.c, &x.v, x.src) < 4)
+        if (with_format ? sscanf(line, "%31s %31s %31s %31s %lf", x.f, x.a, x.b, x.c, &x.v) < 5
+                        : sscanf(line, "%31s %31s %31s %lf %63s", x.a, x.b, x.c, &x.v, x.src) < 4)
             continue;
         if (*n == cap) {
             cap = cap ? 2 * cap : 64;
@@ -227,12 +230,14 @@ static tsv *read_tsv(const char *name, int *n)
     return t;
 }
 
-/* mca.tsv: port kernel cpu cycles_per_sample */
-static double mca_of(const char *port, const char *kernel, const char *cpu)
+/* mca.tsv: format port kernel cpu cycles_per_sample.  Only the f32 tiers'
+ * batch loops are modelled: a fixed-point row has none (-1). */
+static double mca_of(const char *format, const char *port, const char *kernel, const char *cpu)
 {
     int i;
     for (i = 0; i < n_mca; i++)
-        if (!strcmp(mca[i].a, port) && !strcmp(mca[i].b, kernel) && !strcmp(mca[i].c, cpu))
+        if (!strcmp(mca[i].f, format) && !strcmp(mca[i].a, port) && !strcmp(mca[i].b, kernel) &&
+            !strcmp(mca[i].c, cpu))
             return mca[i].v;
     return -1;
 }
@@ -464,8 +469,8 @@ static void section_kernels(void)
                 fmt(c[10], sizeof c[10], "%.1f%s", est(x->r.lat.median), x->r.lat.noisy ? " !" : "");
             else
                 strcpy(c[10], "-");
-            m1 = mca_of(x->port, x->kernel, "znver3");
-            m2 = mca_of(x->port, x->kernel, "skylake");
+            m1 = mca_of(x->format, x->port, x->kernel, "znver3");
+            m2 = mca_of(x->format, x->port, x->kernel, "skylake");
             if (!strcmp(x->path, "batch") && m1 > 0)
                 fmt(c[11], sizeof c[11], "%.2f / %.2f", m1, m2);
             else
@@ -827,12 +832,12 @@ static void section_targets(void)
     for (ki = 0; ki < facet_kernel_count(); ki++) {
         const char *kn = facet_kernel_at(ki)->name;
         const row *x = find_row(kn, "f32", "avx2", "batch");
-        double m = mca_of("avx2", kn, "znver3");
+        double m = mca_of("f32", "avx2", kn, "znver3");
         if (!x || m <= 0)
             continue;
         cells[0] = fmt(b[2], sizeof b[2], "AVX2 %s within 1.25x of llvm-mca znver3", kn);
         cells[1] = fmt(b[3], sizeof b[3], "%.2f est. cycles vs %.2f modelled (%.2fx); skylake model %.2f",
-                       est(x->r.thr.median), m, est(x->r.thr.median) / m, mca_of("avx2", kn, "skylake"));
+                       est(x->r.thr.median), m, est(x->r.thr.median) / m, mca_of("f32", "avx2", kn, "skylake"));
         cells[2] = est(x->r.thr.median) <= 1.25 * m ? "yes" : "**no**";
         cells[3] = "this machine is not a Zen 3 (see clock)";
         trow(cells);
@@ -993,9 +998,9 @@ int facet_bench_report(int argc, char **argv)
     }
     cyc_init();
     tpc = cyc_ticks_per_cycle();
-    mca = read_tsv("mca.tsv", &n_mca);
-    sizes = read_tsv("size.tsv", &n_sizes);
-    arm = read_tsv("arm.tsv", &n_arm);
+    mca = read_tsv("mca.tsv", &n_mca, 1);
+    sizes = read_tsv("size.tsv", &n_sizes, 0);
+    arm = read_tsv("arm.tsv", &n_arm, 0);
     snprintf(path, sizeof path, "%s/bench.md", outdir);
     md = fopen(path, "w");
     snprintf(path, sizeof path, "%s/bench.html", outdir);

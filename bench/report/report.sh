@@ -22,7 +22,7 @@ bin=$build/facet-bench
 # function's size.  No private symbol name is used here.
 : > "$out/mca.tsv"
 : > "$out/size.tsv"
-echo "# port kernel cpu cycles_per_sample (llvm-mca, modelled)" >> "$out/mca.tsv"
+echo "# format port kernel cpu cycles_per_sample (llvm-mca, modelled)" >> "$out/mca.tsv"
 echo "# format port kernel bytes" >> "$out/size.tsv"
 case $(${CC:-cc} -dumpmachine) in
 x86_64*|i?86*) x86=1 ;;
@@ -33,17 +33,17 @@ anchor=$(printf '%s\n' "$syms" | awk '$NF == "facet_port_supported" { print $1; 
 [ -n "$anchor" ] || { echo "report: no facet_port_supported in $bin"; exit 1; }
 "$bin" batch-symbols > "$out/batch-symbols.txt" || exit 1
 last=
-while read -r port k off; do
-    [ "$port" != "$last" ] && [ -n "$last" ] && echo "report: llvm-mca + sizes: $last done"
-    last=$port
+while read -r fmt port k off; do
+    [ "$fmt $port" != "$last" ] && [ -n "$last" ] && echo "report: llvm-mca + sizes: $last done"
+    last="$fmt $port"
     addr=$(printf "%0${#anchor}x" $((0x$anchor + off)))
     sz=$(printf '%s\n' "$syms" | awk -v a="$addr" '$1 == a && NF == 4 && $3 ~ /^[tT]$/ { print $2; exit }')
     [ -n "$sz" ] || { echo "report: no function at 0x$addr ($port $k) in $bin"; continue; }
-    echo "f32 $port $k $(printf '%d' "0x$sz")" >> "$out/size.tsv"
+    echo "$fmt $port $k $(printf '%d' "0x$sz")" >> "$out/size.tsv"
     if [ $x86 = 1 ] && command -v llvm-mca >/dev/null 2>&1; then
         sh bench/report/mca.sh objdump "$bin" "0x$addr+0x$sz" x86_64 znver3 skylake |
             while read -r cpu cyc; do
-                echo "$port $k $cpu $(awk -v c="$cyc" -v l="$(lanes_of $port)" 'BEGIN { printf "%.3f", c / l }')"
+                echo "$fmt $port $k $cpu $(awk -v c="$cyc" -v l="$(lanes_of $port)" 'BEGIN { printf "%.3f", c / l }')"
             done >> "$out/mca.tsv"
     fi
 done < "$out/batch-symbols.txt"
