@@ -26,16 +26,16 @@ shared=$(comm -12 build/bench-suite.bench.syms build/bench-suite.facet.syms | tr
 n=$(nm build/facet | grep -ciE 'peer|bench'); [ "$n" -eq 0 ] && ok || bad "nm build/facet: $n peer/bench symbols"
 build/facet bench >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "facet still has a bench verb"
 build/facet --help | grep -q bench && bad "facet --help mentions bench" || ok
-# batch-symbols: one line per compiled-in port and kernel, each at a function
+# batch-symbols: one line per f32 tier, compiled-in port and kernel, each at a function
 nports=$(build/facet eval --help | sed -n 's/^ports compiled in://p' | sed 's/ (not on this CPU)//g' | wc -w)
 nk=$(build/facet list | wc -l)
 build/facet-bench batch-symbols > build/bench-suite.batch-symbols; rc=$?
-[ $rc -eq 0 ] && [ "$(wc -l < build/bench-suite.batch-symbols)" -eq $((nports * nk)) ] && ok ||
-    bad "batch-symbols: exit $rc, $(wc -l < build/bench-suite.batch-symbols) lines, want $nports ports x $nk kernels"
+[ $rc -eq 0 ] && [ "$(wc -l < build/bench-suite.batch-symbols)" -eq $((2 * nports * nk)) ] && ok ||
+    bad "batch-symbols: exit $rc, $(wc -l < build/bench-suite.batch-symbols) lines, want 2 tiers x $nports ports x $nk kernels"
 syms=$(nm -S --defined-only build/facet-bench)
 anchor=$(printf '%s\n' "$syms" | awk '$NF == "facet_port_supported" { print $1; exit }')
 missing=0
-while read -r port k off; do
+while read -r fmt port k off; do
     addr=$(printf "%0${#anchor}x" $((0x$anchor + off)))
     printf '%s\n' "$syms" | awk -v a="$addr" '$1 == a && NF == 4 && $3 ~ /^[tT]$/ { f = 1 } END { exit !f }' ||
         missing=$((missing + 1))
