@@ -5,8 +5,10 @@
 # command links none of it.  Adds the bench test to TEST_BIN and
 # facet-bench to EXTRA_TESTS (every compiler suite builds it).
 # Per-object flags: the peers are built the way their users would build
-# them (see bench/harness/peers.h): -march=native on peers_shader*.o, and
-# -ffast-math on peers_shader_fm.o only.
+# them (see bench/harness/peers.h), for the vector width of the facet port
+# they are compared with: -march=x86-64-v3 (AVX2) / -march=x86-64-v4
+# (AVX-512) on x86, -march=native elsewhere; -ffast-math on the *_fm
+# objects only.
 
 BENCH_TARGET := $(shell $(CC) -dumpmachine)
 BENCH_X86    := $(filter x86_64% i686% i586% i386%,$(BENCH_TARGET))
@@ -20,8 +22,13 @@ BENCH_NATIVE := $(shell $(CC) -march=native -E -x c /dev/null >/dev/null 2>&1 &&
 BENCH_FLAGS   = $(BASEFLAGS) -D_GNU_SOURCE -I. -Ibench
 BENCH_DEPS    = $(HEADERS) $(wildcard bench/*.h bench/*/*.h) tests/sample.h src/kernel_list.h src/port.h
 
+ifneq ($(BENCH_X86),)
+BENCH_SHADER_PEERS := peers_shader_avx2 peers_shader_avx2_fm peers_shader_avx512 peers_shader_avx512_fm
+else
+BENCH_SHADER_PEERS := peers_shader peers_shader_fm
+endif
 BENCH_HARNESS := cycles bench cli_bench loops_scalar loops_call loops_sse2 loops_avx2 loops_neon \
-                 loops_batch loops_tables peers peers_textbook peers_shader peers_shader_fm fxhook
+                 loops_batch loops_tables peers peers_textbook fxhook $(BENCH_SHADER_PEERS)
 BENCH_HARNESS_OBJ := $(BENCH_HARNESS:%=$(BUILD)/bench/harness/%.o)
 BENCH_RASTER_OBJ  := $(patsubst %,$(BUILD)/bench/raster/%.o,raster raster_avx2 raster_sse2 raster_neon)
 BENCH_REPORT_OBJ  := $(patsubst %,$(BUILD)/bench/report/%.o,report symbols pictures png)
@@ -61,15 +68,20 @@ $(BUILD)/bench/harness/peers_textbook.o: bench/harness/peers_textbook.c bench/ha
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) -O2 -ffp-contract=off -c $< -o $@
 
-# shader-style: -O3 -march=native, errno-free sqrt and fused multiply-add so
-# the compiler vectorizes it; and the same source with -ffast-math
-BENCH_SHADER = $(WARN) -Iinclude $(CFLAGS) -O3 $(BENCH_NATIVE) -fno-math-errno -ffp-contract=fast
-$(BUILD)/bench/harness/peers_shader.o: bench/harness/peers_shader.c bench/harness/peers.h $(HEADERS)
+# shader-style: -O3, errno-free sqrt and fused multiply-add so the compiler
+# vectorizes it, at the width of the facet port it is compared with; and the
+# same source with -ffast-math
+BENCH_SHADER = $(WARN) -Iinclude $(CFLAGS) -O3 -fno-math-errno -ffp-contract=fast
+BENCH_SHADER_SRC = bench/harness/peers_shader.c bench/harness/peers.h $(HEADERS)
+$(BUILD)/bench/harness/peers_shader_avx2.o $(BUILD)/bench/harness/peers_shader_avx2_fm.o: \
+    BENCH_PEER = -march=x86-64-v3 -DPEER_WIDTH=avx2 -DPEER_MARCH='"-march=x86-64-v3"'
+$(BUILD)/bench/harness/peers_shader_avx512.o $(BUILD)/bench/harness/peers_shader_avx512_fm.o: \
+    BENCH_PEER = -march=x86-64-v4 -DPEER_WIDTH=avx512 -DPEER_MARCH='"-march=x86-64-v4"'
+$(BUILD)/bench/harness/peers_shader.o $(BUILD)/bench/harness/peers_shader_fm.o: BENCH_PEER = $(BENCH_NATIVE)
+$(BUILD)/bench/harness/%_fm.o: BENCH_FM = -ffast-math -DPEER_FASTMATH
+$(BENCH_SHADER_PEERS:%=$(BUILD)/bench/harness/%.o): $(BENCH_SHADER_SRC)
 	@mkdir -p $(dir $@)
-	$(CC) $(BENCH_SHADER) -c $< -o $@
-$(BUILD)/bench/harness/peers_shader_fm.o: bench/harness/peers_shader.c bench/harness/peers.h $(HEADERS)
-	@mkdir -p $(dir $@)
-	$(CC) $(BENCH_SHADER) -ffast-math -DPEER_FASTMATH -c $< -o $@
+	$(CC) $(BENCH_SHADER) $(BENCH_PEER) $(BENCH_FM) -c $< -o $@
 
 # the PNG encoder and the rasterizer (every shading path against the oracle)
 $(BUILD)/tests/test_bench: bench/test_bench.c $(BUILD)/bench/report/png.o $(BENCH_RASTER_OBJ) \

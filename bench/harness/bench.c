@@ -200,7 +200,7 @@ static int want_port(const bench_opts *o, const char *port)
 static void progress(const bench_opts *o, const bench_row *r)
 {
     if (o->progress)
-        fprintf(stderr, "bench: %-22s %-8s %-9s %-6s %10.3g %s/sample\n", r->kernel, r->format,
+        fprintf(stderr, "bench: %-22s %-8s %-16s %-6s %10.3g %s/sample\n", r->kernel, r->format,
                 r->port, r->path, r->thr.median, cyc_unit());
 }
 
@@ -271,7 +271,6 @@ static void finish(bench_row *r, const bench_opts *o, bench_sink sink, void *ctx
 static void run_brdf_peers(const kdata *d, const bench_opts *o, bench_sink sink, void *ctx,
                            int *count)
 {
-    static const peer_set *const sets[] = { &peer_textbook, &peer_shader, &peer_shader_fm };
     size_t n = d->n, i;
     float *v[9];
     double *want = malloc(n * sizeof(double));
@@ -304,18 +303,19 @@ static void run_brdf_peers(const kdata *d, const bench_opts *o, bench_sink sink,
     pin.lx = v[0]; pin.ly = v[1]; pin.lz = v[2];
     pin.vx = v[3]; pin.vy = v[4]; pin.vz = v[5];
     pin.alpha = v[6]; pin.f0 = v[7]; pin.albedo = v[8];
-    for (s = 0; s < sizeof sets / sizeof sets[0]; s++) {
+    for (i = 0; peer_sets[i]; i++) {
+        const peer_set *ps = peer_sets[i];
         bench_row row;
         work w;
-        if (!want_port(o, sets[s]->name))
+        if (!peer_available(ps) || !want_port(o, ps->name))
             continue;
-        row_init(&row, d, "f32", sets[s]->name, "peer", 1);
+        row_init(&row, d, "f32", ps->name, "peer", 1);
         row.note = "D * exact correlated Vis * F + Hammon diffuse, from vectors L, V";
         row.bound = 0;
-        sets[s]->brdf(d->out, &pin, n);
+        ps->brdf(d->out, &pin, n);
         err_of(&row.err, d, d->out, want);
         memset(&w, 0, sizeof w);
-        w.pb = sets[s]->brdf;
+        w.pb = ps->brdf;
         w.pin = &pin;
         w.out = d->out;
         w.n = o->n_time < n ? o->n_time : n;
@@ -476,8 +476,10 @@ int bench_run(const bench_opts *o, bench_sink sink, void *ctx)
     if (o->format && strcmp(o->format, "f32") && strcmp(o->format, "f32_fast") && strcmp(o->format, "fx"))
         return -1;
     if (o->port) {
-        int known = !strcmp(o->port, "textbook") || !strcmp(o->port, "shader") ||
-                    !strcmp(o->port, "shader_fm");
+        int known = 0;
+        for (ti = 0; peer_sets[ti]; ti++)
+            if (!strcmp(o->port, peer_sets[ti]->name))
+                known = 1;
         size_t p;
         for (p = 0; p < facet_port_count(); p++)
             if (!strcmp(facet_port_at(p, NULL, NULL), o->port))
@@ -545,12 +547,12 @@ int bench_run(const bench_opts *o, bench_sink sink, void *ctx)
         if (!o->format || !strcmp(o->format, "f32")) {
             /* peers */
             if (o->peers) {
-                static const peer_set *const sets[] = { &peer_textbook, &peer_shader, &peer_shader_fm };
+                const peer_set *const *sets = peer_sets;
                 size_t s;
-                for (s = 0; s < sizeof sets / sizeof sets[0]; s++) {
+                for (s = 0; sets[s]; s++) {
                     peer_term_fn fn = peer_term(sets[s], k->name);
                     bench_row row;
-                    if (!fn || !want_port(o, sets[s]->name))
+                    if (!fn || !peer_available(sets[s]) || !want_port(o, sets[s]->name))
                         continue;
                     row_init(&row, &d, "f32", sets[s]->name, "peer", 1);
                     row.bound = 0;

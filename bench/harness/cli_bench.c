@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "bench.h"
+#include "peers.h"
 
 #include "facet_bench.h"
 
@@ -16,15 +17,16 @@ static void usage(FILE *f)
             "usage: facet-bench bench [KERNEL] [--port P] [--format f32|f32_fast|fx] [--json]\n"
             "                         [--samples N] [--err-samples N] [--epochs E] [--quick] [--no-peers]\n"
             "Times every kernel (or KERNEL) on every port this CPU runs, through the batch\n"
-            "API, the inline kernels and the library call, next to the peers (textbook,\n"
-            "shader, shader_fm), and measures each one's error against the double oracle.\n"
+            "API, the inline kernels and the library call, next to the peers (textbook;\n"
+            "shader and shader_fm built for each port's vector width: shader_avx2,\n"
+            "shader_avx512 on x86), and measures each one's error against the double oracle.\n"
             "Throughput: cycles per sample over an L1-resident SoA set (difference of R and\n"
             "2R passes); latency: cycles per call in a dependent chain.  >= 11 epochs after\n"
             "warm-up, pinned to one CPU; min, median, spread; '!' marks spread > 5%%.\n"
             "The clock is perf's core-cycle counter when the kernel allows it, otherwise\n"
             "the time-stamp counter in ticks (labelled so; est. cycles use a measured\n"
             "ticks-per-cycle ratio).\n"
-            "  --port P         scalar, sse2, avx2, avx512, neon, textbook, shader, shader_fm\n"
+            "  --port P         a facet port (scalar, sse2, avx2, avx512, neon) or a peer\n"
             "  --format F       f32, f32_fast or fx\n"
             "  --json           one JSON document on stdout\n"
             "  --samples N      samples per timed pass (default 1024, multiple of 8)\n"
@@ -96,7 +98,7 @@ static void sink(const bench_row *r, void *vctx)
             snprintf(e1, sizeof e1, "%9.3g", r->err.max_rel);
             snprintf(e2, sizeof e2, "%9.3g", r->err.mean_rel);
         }
-        printf("%-22s %-8s %-9s %-6s %9s %9s %s %8.3f %8.3f %5.1f%%%s %8.3f %s\n", r->kernel,
+        printf("%-22s %-8s %-16s %-6s %9s %9s %s %8.3f %8.3f %5.1f%%%s %8.3f %s\n", r->kernel,
                r->format, r->port, r->path, e1, e2,
                r->bound > 0 ? (r->within ? "ok " : "BAD") : "-  ", r->thr.min, r->thr.median,
                100 * r->thr.spread, r->thr.noisy ? "!" : " ", r->thr.median / c->tpc, lat);
@@ -169,8 +171,11 @@ int facet_cmd_bench(int argc, char **argv)
         return 2;
     }
     if (o.port) {
-        int known = !strcmp(o.port, "textbook") || !strcmp(o.port, "shader") ||
-                    !strcmp(o.port, "shader_fm");
+        int known = 0;
+        size_t q;
+        for (q = 0; peer_sets[q]; q++)
+            if (!strcmp(o.port, peer_sets[q]->name))
+                known = 1;
         size_t p;
         for (p = 0; p < facet_port_count(); p++)
             if (!strcmp(facet_port_at(p, NULL, NULL), o.port))
@@ -200,7 +205,7 @@ int facet_cmd_bench(int argc, char **argv)
                    c.tpc);
         if (!o.format || !strcmp(o.format, "fx"))
             printf("# fx rows: errors in LSB of the output format (L), vs round(oracle 2^frac) at the Q15 inputs\n");
-        printf("%-22s %-8s %-9s %-6s %9s %9s %s %8s %8s %6s %8s %s\n", "kernel", "fmt", "port",
+        printf("%-22s %-8s %-16s %-6s %9s %9s %s %8s %8s %6s %8s %s\n", "kernel", "fmt", "port",
                "path", "max_err", "mean_err", "bnd", "thr_min", "thr_med", "spread", "est.cyc",
                "latency/call");
     }

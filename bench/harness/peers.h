@@ -7,12 +7,15 @@
  *              Smith G2 height-correlated through Lambda with sqrtf, plain
  *              divisions.  The whole BRDF is D G2 F / (4 N.L N.V) + Hammon
  *              diffuse.
- *   shader     (peers_shader.c, -O3 -march=native -fno-math-errno
- *              -ffp-contract=fast; the compiler auto-vectorizes it): the
- *              engine-shader sequences.  H by 1/sqrtf, D in the a2 form,
- *              exact correlated Vis with two sqrtf, pow5 by multiplication,
- *              Hammon diffuse.
- *   shader_fm  the same source built with -ffast-math as well.
+ *   shader     (peers_shader.c, -O3 -fno-math-errno -ffp-contract=fast;
+ *              the compiler auto-vectorizes it): the engine-shader
+ *              sequences.  H by 1/sqrtf, D in the a2 form, exact correlated
+ *              Vis with two sqrtf, pow5 by multiplication, Hammon diffuse.
+ *              Built for the vector width of the facet port it is compared
+ *              with: on x86 shader_avx2 (-march=x86-64-v3) and
+ *              shader_avx512 (-march=x86-64-v4), each run only where that
+ *              facet port runs; elsewhere shader (-march=native).
+ *   *_fm       the same source and width with -ffast-math as well.
  *
  * The full-BRDF peers take vectors L and V in tangent space (N = +z, so
  * N.L = L.z, N.V = V.z cost nothing) plus alpha, f0, albedo, the way a
@@ -38,15 +41,21 @@ typedef void (*peer_term_fn)(float *out, const float *const *in, size_t n);
 typedef void (*peer_brdf_fn)(float *out, const peer_brdf_in *in, size_t n);
 
 typedef struct peer_set {
-    const char *name;       /* "textbook", "shader", "shader_fm" */
+    const char *name;       /* "textbook", "shader_avx2", "shader_avx2_fm", ... */
     const char *build;      /* compiler flags, for the report */
+    const char *width;      /* the facet port of the same vector width (run
+                             * only where facet_port_supported() says so), or
+                             * NULL: the build machine's own */
     peer_brdf_fn brdf;      /* D Vis_exact F + diffuse_hammon, from vectors */
     /* single terms, same inputs as the facet kernel of the same name */
     peer_term_fn fresnel_schlick, ggx_d, smith_g1, smith_g2, smith_vis,
         smith_g1_hammon, smith_vis_hammon;
 } peer_set;
 
-extern const peer_set peer_textbook, peer_shader, peer_shader_fm;
+/* every peer built for this target, NULL-terminated (peers.c) */
+extern const peer_set *const peer_sets[];
+/* 1 if this CPU runs p (its width's facet port is supported) */
+int peer_available(const peer_set *p);
 
 /* Returns the peer's function for facet kernel `name`, or NULL. */
 peer_term_fn peer_term(const peer_set *p, const char *name);

@@ -1,21 +1,34 @@
 /* peers_shader.c - the "shader-style" peer: the operation sequences common
  * in engine shaders, written as SoA loops the compiler can auto-vectorize.
- * Built twice (bench/bench.mk): -O3 -march=native -fno-math-errno
- * -ffp-contract=fast as peer_shader, and with -ffast-math added as
- * peer_shader_fm (PEER_FASTMATH defined).  See peers.h. */
+ * Built once per vector width and math mode (bench/bench.mk): -O3
+ * -fno-math-errno -ffp-contract=fast, PEER_WIDTH avx2 (-march=x86-64-v3) or
+ * avx512 (-march=x86-64-v4) on x86, native elsewhere, and with -ffast-math
+ * added (PEER_FASTMATH defined).  See peers.h. */
 #include <math.h>
 #include "facet/common.h"
 #include "peers.h"
 
-#ifdef PEER_FASTMATH
-#define SET_ peer_shader_fm
-#define NAME_ "shader_fm"
-#define BUILD_ "-O3 -march=native -fno-math-errno -ffp-contract=fast -ffast-math"
+#define PEER_CAT_(a, b) a##b
+#define PEER_CAT(a, b) PEER_CAT_(a, b)
+#define PEER_STR_(x) #x
+#define PEER_STR(x) PEER_STR_(x)
+#ifdef PEER_WIDTH /* x86: the facet port of the same width */
+#define BASE_ PEER_CAT(peer_shader_, PEER_WIDTH)
+#define WIDTH_ PEER_STR(PEER_WIDTH)
+#define MARCH_ PEER_MARCH
 #else
-#define SET_ peer_shader
-#define NAME_ "shader"
-#define BUILD_ "-O3 -march=native -fno-math-errno -ffp-contract=fast"
+#define BASE_ peer_shader
+#define WIDTH_ NULL
+#define MARCH_ "-march=native"
 #endif
+#ifdef PEER_FASTMATH
+#define SET_ PEER_CAT(BASE_, _fm)
+#define BUILD_ "-O3 " MARCH_ " -fno-math-errno -ffp-contract=fast -ffast-math"
+#else
+#define SET_ BASE_
+#define BUILD_ "-O3 " MARCH_ " -fno-math-errno -ffp-contract=fast"
+#endif
+#define NAME_ PEER_STR(SET_)
 
 #define INV_PI_F 0.318309886f
 
@@ -133,6 +146,6 @@ static void sh_vish_b(float *restrict out, const float *const *in, size_t n)
 }
 
 const peer_set SET_ = {
-    NAME_, BUILD_,
+    NAME_ + 5 /* without "peer_" */, BUILD_, WIDTH_,
     sh_brdf, sh_fresnel_b, sh_ggx_d_b, sh_g1_b, sh_g2_b, sh_vis_b, sh_g1h_b, sh_vish_b,
 };

@@ -120,6 +120,6 @@ static void tb_vish_b(float *out, const float *const *in, size_t n)
 }
 
 const peer_set peer_textbook = {
-    "textbook", "-O2 (gcc/clang default fp: no contraction, math-errno)",
+    "textbook", "-O2 (gcc/clang default fp: no contraction, math-errno)", NULL,
     tb_brdf, tb_fresnel_b, tb_ggx_d_b, tb_g1_b, tb_g2_b, tb_vis_b, tb_g1h_b, tb_vish_b,
 };
