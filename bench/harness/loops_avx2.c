@@ -21,19 +21,11 @@ static int avail(void) { return facet_port_supported("avx2"); }
 #define LP_STORE(p, v) _mm256_storeu_ps((p), (v))
 #define LP_FEED(x, y) _mm256_add_ps((x), _mm256_mul_ps((y), _mm256_setzero_ps()))
 #define LP_ZERO _mm256_setzero_ps()
-#define LP_K(name) facet_##name##_f32_avx2
+#define LP_K(name, tier) facet_##name##_##tier##_avx2
 #define LP_NAME avx2_inline
 #define LP_PATH "inline"
 #define LP_PORT "avx2"
 #define LP_AVAIL avail
-#define LP_TIER "f32"
-#include "loops_body.h"
-#undef LP_K
-#undef LP_NAME
-#undef LP_TIER
-#define LP_K(name) facet_##name##_f32_fast_avx2
-#define LP_NAME avx2_inline_fast
-#define LP_TIER "f32_fast"
 #include "loops_body.h"
 #else
 static int never(void) { return 0; }

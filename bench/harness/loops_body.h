@@ -1,67 +1,22 @@
-/* loops_body.h - instantiates a loops table (see loops.h).  Define
+/* loops_body.h - instantiates a port's loops tables, one per f32 tier (see
+ * loops.h).  Define
  *   LP_V, LP_W, LP_LOAD(p), LP_STORE(p, v), LP_FEED(x, y) (x + y*0),
- *   LP_ZERO, LP_K(name) (the kernel function), LP_NAME (table token),
- *   LP_PATH, LP_PORT, LP_TIER (strings), LP_AVAIL (an int(void) function)
- * then include this file; once per tier, with another LP_NAME and LP_K. */
-#include "facet.h"
-#include "loops.h"
-#include "src/kernel_list.h"
-
-#define LP_CAT_(a, b) a##b
-#define LP_CAT(a, b) LP_CAT_(a, b)
-
-/* input q at sample i, plain, or (the chain) the first one fed by y */
-#define LP_PLAIN_(q) LP_LOAD(in[q] + i)
-#define LP_FED_(q) LP_CAT(LP_FED_AT_, q)
-#define LP_FED_AT_0 LP_FEED(LP_LOAD(in[0] + i), y)
-#define LP_FED_AT_1 LP_PLAIN_(1)
-#define LP_FED_AT_2 LP_PLAIN_(2)
-#define LP_FED_AT_3 LP_PLAIN_(3)
-#define LP_FED_AT_4 LP_PLAIN_(4)
-#define LP_FED_AT_5 LP_PLAIN_(5)
-
-/* Names generated here from src/kernels.def: two loops per kernel. */
-#define FACET_KERNEL(name, NAME, n, ...)                                        \
-    static void LP_CAT(LP_NAME, LP_CAT(_thr_, name))(float *out, const float *const *in, size_t n_) \
-    {                                                                           \
-        size_t i;                                                               \
-        for (i = 0; i < n_; i += LP_W)                                          \
-            LP_STORE(out + i, LP_K(name)(FACET_EACH_INPUT(n, LP_PLAIN_)));      \
-    }                                                                           \
-    static void LP_CAT(LP_NAME, LP_CAT(_chain_, name))(float *out, const float *const *in, size_t n_) \
-    {                                                                           \
-        size_t i;                                                               \
-        LP_V y = LP_ZERO;                                                       \
-        for (i = 0; i < n_; i += LP_W)                                          \
-            y = LP_K(name)(FACET_EACH_INPUT(n, LP_FED_));                       \
-        LP_STORE(out, y);                                                       \
-    }
-#include "src/kernels.def"
-#undef FACET_KERNEL
-
-static void LP_CAT(LP_NAME, _thr_identity)(float *out, const float *const *in, size_t n_)
-{
-    size_t i;
-    for (i = 0; i < n_; i += LP_W)
-        LP_STORE(out + i, LP_LOAD(in[0] + i));
-}
-
-static void LP_CAT(LP_NAME, _chain_identity)(float *out, const float *const *in, size_t n_)
-{
-    size_t i;
-    LP_V y = LP_ZERO;
-    for (i = 0; i < n_; i += LP_W)
-        y = LP_FEED(LP_LOAD(in[0] + i), y);
-    LP_STORE(out, y);
-}
-
-static const bench_loop LP_CAT(lp_k_, LP_NAME)[] = {
-#define FACET_KERNEL(name, NAME, n, ...) { LP_CAT(LP_NAME, LP_CAT(_thr_, name)), LP_CAT(LP_NAME, LP_CAT(_chain_, name)) },
-#include "src/kernels.def"
-#undef FACET_KERNEL
-    { LP_CAT(LP_NAME, _thr_identity), LP_CAT(LP_NAME, _chain_identity) },
-};
-
-const bench_loops LP_CAT(bench_loops_, LP_NAME) = {
-    LP_PATH, LP_PORT, LP_W, LP_AVAIL, LP_CAT(lp_k_, LP_NAME), LP_TIER,
-};
+ *   LP_ZERO, LP_K(name, tier) (the kernel function of a tier: f32 or
+ *   f32_fast), LP_NAME (table token: bench_loops_<LP_NAME>, and
+ *   bench_loops_<LP_NAME>_fast for the fast tier), LP_PATH, LP_PORT
+ *   (strings), LP_AVAIL (an int(void) function)
+ * then include this file once. */
+#define LP_TIER "f32"
+#define LP_KT(name) LP_K(name, f32)
+#define LP_TNAME LP_NAME
+#include "loops_tier.h"
+#undef LP_TIER
+#undef LP_KT
+#undef LP_TNAME
+#define LP_TIER "f32_fast"
+#define LP_KT(name) LP_K(name, f32_fast)
+#define LP_TNAME LP_CAT(LP_NAME, _fast)
+#include "loops_tier.h"
+#undef LP_TIER
+#undef LP_KT
+#undef LP_TNAME

@@ -21,19 +21,11 @@ static int avail(void) { return facet_port_supported("neon"); }
 #define LP_STORE(p, v) vst1q_f32((p), (v))
 #define LP_FEED(x, y) vaddq_f32((x), vmulq_f32((y), vdupq_n_f32(0.0f)))
 #define LP_ZERO vdupq_n_f32(0.0f)
-#define LP_K(name) facet_##name##_f32_neon
+#define LP_K(name, tier) facet_##name##_##tier##_neon
 #define LP_NAME neon_inline
 #define LP_PATH "inline"
 #define LP_PORT "neon"
 #define LP_AVAIL avail
-#define LP_TIER "f32"
-#include "loops_body.h"
-#undef LP_K
-#undef LP_NAME
-#undef LP_TIER
-#define LP_K(name) facet_##name##_f32_fast_neon
-#define LP_NAME neon_inline_fast
-#define LP_TIER "f32_fast"
 #include "loops_body.h"
 #else
 static int never(void) { return 0; }

@@ -11,17 +11,9 @@ static int always(void) { return 1; }
 #define LP_STORE(p, v) (*(p) = (v))
 #define LP_FEED(x, y) ((x) + (y) * 0.0f)
 #define LP_ZERO 0.0f
-#define LP_K(name) facet_##name##_f32_scalar
+#define LP_K(name, tier) facet_##name##_##tier##_scalar
 #define LP_NAME scalar_inline
 #define LP_PATH "inline"
 #define LP_PORT "scalar"
 #define LP_AVAIL always
-#define LP_TIER "f32"
-#include "loops_body.h"
-#undef LP_K
-#undef LP_NAME
-#undef LP_TIER
-#define LP_K(name) facet_##name##_f32_fast_scalar
-#define LP_NAME scalar_inline_fast
-#define LP_TIER "f32_fast"
 #include "loops_body.h"

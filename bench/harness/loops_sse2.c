@@ -20,19 +20,11 @@ static int avail(void) { return facet_port_supported("sse2"); }
 #define LP_STORE(p, v) _mm_storeu_ps((p), (v))
 #define LP_FEED(x, y) _mm_add_ps((x), _mm_mul_ps((y), _mm_setzero_ps()))
 #define LP_ZERO _mm_setzero_ps()
-#define LP_K(name) facet_##name##_f32_sse2
+#define LP_K(name, tier) facet_##name##_##tier##_sse2
 #define LP_NAME sse2_inline
 #define LP_PATH "inline"
 #define LP_PORT "sse2"
 #define LP_AVAIL avail
-#define LP_TIER "f32"
-#include "loops_body.h"
-#undef LP_K
-#undef LP_NAME
-#undef LP_TIER
-#define LP_K(name) facet_##name##_f32_fast_sse2
-#define LP_NAME sse2_inline_fast
-#define LP_TIER "f32_fast"
 #include "loops_body.h"
 #else
 static int never(void) { return 0; }
