@@ -37,7 +37,7 @@ EXTRA_TESTS :=
 all: lib $(BUILD)/facet
 lib: $(BUILD)/libfacet.a $(BUILD)/libfacet.so
 
-$(BUILD)/src/%.o: src/%.c $(HEADERS) $(wildcard src/*.h)
+$(BUILD)/src/%.o: src/%.c $(HEADERS) $(wildcard src/*.h src/cli/*.h)
 	@mkdir -p $(dir $@)
 	$(CC) $(BASEFLAGS) $(PICFLAGS) -c $< -o $@
 
