@@ -3,6 +3,8 @@
 #   make check      every test (gcc, clang, sanitizers, cross ports); closing
 #                   line "N passed, N failed, N skipped"
 #   make report     accuracy sweep (+ bench) -> build/report/
+#   make fuzz       libFuzzer targets, FUZZ_SECONDS (300) each (tests/fuzz.mk;
+#                   the one recursive make: an instrumented libfacet)
 #   make install PREFIX=/usr/local
 # Variables: CC, BUILD (output dir), CFLAGS (optimisation/debug/sanitizers).
 
