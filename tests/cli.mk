@@ -3,4 +3,4 @@
 # (included by the Makefile; this explicit rule overrides the generic one).
 $(BUILD)/tests/test_cli_parse: tests/test_cli_parse.c src/cli/parse.c src/cli/cli.h tests/harness.h
 	@mkdir -p $(dir $@)
-	$(CC) $(BASEFLAGS) -D_DEFAULT_SOURCE -Isrc/cli -o $@ tests/test_cli_parse.c src/cli/parse.c
+	$(CC) $(BASEFLAGS) -D_DEFAULT_SOURCE -Isrc/cli -o $@ tests/test_cli_parse.c src/cli/parse.c -lm
