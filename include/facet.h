@@ -234,7 +234,7 @@ void facet_lambert_f32_batch(float *out, const float *albedo, size_t n);
  * variable FACET_PORT names the initial choice the same way; an unknown or
  * unsupported name there is not an error for the library: it falls back to
  * auto, and facet_port_name() tells which port runs.  (The facet command is
- * stricter: its eval refuses such a FACET_PORT with exit status 2, and
+ * stricter: its f32 eval refuses such a FACET_PORT with exit status 2, and
  * `facet ports` says which case applies.)
  * facet_port_at(i, &supported, &lanes) lists the ports compiled in, best
  * first (NULL past the end). */

@@ -62,7 +62,7 @@ static void usage_ports(FILE *f)
                "picks here.  With FACET_PORT set, a last line says what the library does\n"
                "with it: a port this CPU runs is the library's initial port; any other\n"
                "value is ignored by the library (it starts on auto; facet_port_name()\n"
-               "tells), whereas 'facet eval' refuses it (exit status 2).\n%s",
+               "tells), whereas 'facet eval' (f32) refuses it (exit status 2).\n%s",
             prog, facet_cli_exit_help);
 }
 
@@ -159,7 +159,7 @@ static int cmd_ports(int argc, char **argv)
             printf("FACET_PORT=%s: the library starts on %s\n", env, env);
         else
             printf("FACET_PORT=%s: %s; the library ignores it (starts on auto), "
-                   "'%s eval' refuses it\n", env, known ? "this CPU cannot run it" : "not a port compiled in",
+                   "'%s eval' (f32) refuses it\n", env, known ? "this CPU cannot run it" : "not a port compiled in",
                    prog);
     }
     return facet_cli_finish("ports");
