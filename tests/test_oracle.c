@@ -994,6 +994,15 @@ static void check_antipodal(void)
     long n_rand = quick ? 2000 : 20000, j;
     agg adf, abr, at;
     smp_rng rng;
+    /* the issue's example, against a 40-digit evaluation of facet.h's
+     * formula (mpmath: t = (N.L + N.V)^2 / 2, facing = t/2, N.H = 1/sqrt2);
+     * needs no long double, so it runs on every target */
+    {
+        double got = facet_oracle_diffuse_hammon(0x1p-20, 0x1p-20 + 0x1p-35, -1.0, 1.0, 1e-12);
+        double want = 5.067384864291308123600496955406599075155e-25;
+        CHECK(rel_err(got, want) <= TOL10, "diffuse_hammon(2^-20, 2^-20 + 2^-35, -1, 1, 1e-12) = %.17g, 40 digits "
+              "give %.17g: rel %.3g", got, want, rel_err(got, want));
+    }
     if (!have_long_double("L.V near -1 vs long double"))
         return;
     agg_init(&adf, "diffuse_hammon near L.V = -1 at tiny cosines vs long double, rel", TOL10);
