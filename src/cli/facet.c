@@ -165,10 +165,10 @@ static int cmd_ports(int argc, char **argv)
     return facet_cli_finish("ports");
 }
 
-static void kernel_names(const char **names, size_t *n)
+static void kernel_names(const char **names, size_t cap, size_t *n)
 {
     size_t i;
-    *n = facet_kernel_count();
+    *n = facet_kernel_count() < cap ? facet_kernel_count() : cap;
     for (i = 0; i < *n; i++)
         names[i] = facet_kernel_at(i)->name;
 }
@@ -179,7 +179,7 @@ void facet_cli_unknown_kernel(const char *verb, const char *what, const char *na
     const char *names[64];
     size_t n;
     const char *hint;
-    kernel_names(names, &n);
+    kernel_names(names, sizeof names / sizeof names[0], &n);
     hint = facet_cli_suggest(name, names, n);
     fprintf(stderr, "%s %s: unknown %s '%s'", prog, verb, what, name);
     if (hint)
