@@ -3,6 +3,8 @@
 #   make check      every test (gcc, clang, sanitizers, cross ports); closing
 #                   line "N passed, N failed, N skipped"
 #   make report     accuracy sweep (+ bench, build/facet-bench) -> build/report/
+#   make fuzz       libFuzzer targets, FUZZ_SECONDS (300) each (tests/fuzz.mk;
+#                   the one recursive make: an instrumented libfacet)
 #   make install PREFIX=/usr/local   (headers, libraries, pkg-config, bin/facet)
 #   make fx-sources  the C files a firmware build compiles for the fixed-point
 #                   kernels (no f32 code, no dispatcher, no oracle, no libm)
@@ -43,7 +45,7 @@ EXTRA_TESTS :=
 all: lib $(BUILD)/facet
 lib: $(BUILD)/libfacet.a $(BUILD)/libfacet.so
 
-$(BUILD)/src/%.o: src/%.c $(HEADERS) $(wildcard src/*.h)
+$(BUILD)/src/%.o: src/%.c $(HEADERS) $(wildcard src/*.h src/cli/*.h)
 	@mkdir -p $(dir $@)
 	$(CC) $(BASEFLAGS) $(PICFLAGS) -c $< -o $@
 

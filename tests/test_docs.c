@@ -9,6 +9,66 @@
 #include "harness.h"
 #include "facet.h"
 
+/* 1 if the file has every one of the phrases (white space runs count as
+ * one blank, so line breaks do not matter; in a .h, so does the " * " that
+ * starts a comment line) */
+static int has_phrases(const char *path, const char *const *phrases, int n, const char **missing)
+{
+    static char text[1 << 20];
+    size_t len = 0;
+    int c, blank = 0, i, bol = 0, is_c = strstr(path, ".h") != NULL;
+    FILE *f = fopen(path, "r");
+    *missing = path;
+    if (!f)
+        return 0;
+    while ((c = getc(f)) != EOF && len + 1 < sizeof text) {
+        if (c == '\n')
+            bol = is_c; /* a C comment's " * " at the start of a line is blank */
+        else if (!(bol && c == '*') && c != ' ' && c != '\t')
+            bol = 0;
+        if (c == ' ' || c == '\n' || c == '\t' || (bol && c == '*')) {
+            blank = 1;
+            continue;
+        }
+        if (blank && len)
+            text[len++] = ' ';
+        blank = 0;
+        text[len++] = (char)c;
+    }
+    text[len] = '\0';
+    fclose(f);
+    for (i = 0; i < n; i++)
+        if (!strstr(text, phrases[i])) {
+            *missing = phrases[i];
+            return 0;
+        }
+    return 1;
+}
+
+/* contracts stated in prose that the code relies on */
+static void doc_contracts(void)
+{
+    static const char *const facet_h[] = {
+        "out may be exactly the same array as any input", "no other overlap",
+        "an unknown or unsupported name there is not an error for the library",
+    };
+    static const char *const readme[] = {
+        "Exit status, the same for every verb: **0** success; **1** I/O error",
+        "**2** usage error or malformed input",
+        "lines whose first non-blank character is `#`, are skipped",
+        "white space (space, tab, CR, VT, FF)",
+        "a NUL byte anywhere in a line is an error",
+        "`floor(x * 32768 + 1/2)` (nearest, ties up)",
+        "Fixed point saturates any finite value",
+        "A malformed line stops the run, the same way in every format",
+    };
+    const char *m = "";
+    int ok = has_phrases("include/facet.h", facet_h, 3, &m);
+    CHECK(ok, "include/facet.h does not say: %s", m);
+    ok = has_phrases("README.md", readme, 8, &m);
+    CHECK(ok, "README.md does not say: %s", m);
+}
+
 int main(void)
 {
     FILE *f = fopen("README.md", "r");
@@ -52,6 +112,7 @@ int main(void)
         }
     }
     fclose(f);
+    doc_contracts();
     for (i = 0; i < facet_kernel_count(); i++)
         CHECK(seen[i] == 1, "%s has %d rows in the README kernel table (want 1)", facet_kernel_at(i)->name, seen[i]);
     return th_done();

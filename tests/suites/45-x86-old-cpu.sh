@@ -23,6 +23,9 @@ if ! $MAKE -s -j"$JOBS" tests > build/old-cpu.build.log 2>&1; then
 fi
 ports=$($q build/facet eval --help | sed -n 's/^ports compiled in: //p')
 [ "$ports" = "avx512 (not on this CPU) avx2 (not on this CPU) sse2 scalar" ] && ok || bad "ports: $ports"
+# facet ports: the AVX ports listed as not running here, auto on sse2
+[ "$($q build/facet ports | awk '/ auto$/ { print $1 }')" = sse2 ] && ok || bad "ports: auto is not sse2: $($q build/facet ports)"
+[ "$($q build/facet ports | grep -c 'not on this CPU')" = 2 ] && ok || bad "ports: avx512/avx2 not marked: $($q build/facet ports)"
 echo "0.5 0.5" | $q build/facet eval ggx_d --port avx2 > /dev/null 2> build/old-cpu.err
 [ $? -eq 2 ] && grep -q "cannot run it" build/old-cpu.err && ok || bad "--port avx2: $(cat build/old-cpu.err)"
 out=$(echo "0.6 0.7 0.5 0.1 0.04 0.5" | $q build/facet eval brdf_hammon) && [ -n "$out" ] && ok || bad "eval on auto"
