@@ -29,11 +29,15 @@ static void usage(FILE *f)
             "  --port P         a facet port (scalar, sse2, avx2, avx512, neon) or a peer\n"
             "  --format F       f32, f32_fast or fx\n"
             "  --json           one JSON document on stdout\n"
-            "  --samples N      samples per timed pass (default 1024, multiple of 8)\n"
-            "  --err-samples N  samples for the error (default 65536)\n"
-            "  --epochs E       timed epochs (default and minimum 11)\n"
+            "  --samples N      samples per timed pass (default 1024, multiple of 8,\n"
+            "                   at most 65536)\n"
+            "  --err-samples N  samples for the error (default 65536, at most 4194304)\n"
+            "  --epochs E       timed epochs (default and minimum 11, at most 1001)\n"
             "  --quick          tiny run (for tests): few samples, short passes\n"
-            "  --no-peers       facet only\n");
+            "  --no-peers       facet only\n"
+            "Exit status: 0 success; 1 stdout could not be written; 2 usage error (an\n"
+            "unknown kernel, port or format, a port this CPU cannot run, a value out of\n"
+            "range).\n");
 }
 
 typedef struct sink_ctx {
@@ -41,24 +45,25 @@ typedef struct sink_ctx {
     double tpc;
 } sink_ctx;
 
-/* JSON has no inf/nan: those print as null */
-static const char *jnum(double x)
+/* "KEY": NUMBER, printed at once (no shared buffer: a printf of several
+ * formatted numbers cannot mix them up); JSON has no inf/nan: null */
+static void jnum(const char *key, double x, const char *after)
 {
-    static char buf[4][32];
-    static int k;
-    k = (k + 1) & 3;
     if (x != x || x - x != 0)
-        return "null";
-    snprintf(buf[k], sizeof buf[k], "%.6g", x);
-    return buf[k];
+        printf("\"%s\": null%s", key, after);
+    else
+        printf("\"%s\": %.6g%s", key, x, after);
 }
 
 static void json_stat(const char *name, const cyc_stat *s, double tpc)
 {
-    printf("\"%s\": {\"min\": %s, \"median\": %s, \"max\": %s, \"spread\": %s, "
-           "\"noisy\": %s, \"epochs\": %d, \"est_cycles_median\": %s}",
-           name, jnum(s->min), jnum(s->median), jnum(s->max), jnum(s->spread),
-           s->noisy ? "true" : "false", s->epochs, jnum(s->median / tpc));
+    printf("\"%s\": {", name);
+    jnum("min", s->min, ", ");
+    jnum("median", s->median, ", ");
+    jnum("max", s->max, ", ");
+    jnum("spread", s->spread, ", ");
+    printf("\"noisy\": %s, \"epochs\": %d, ", s->noisy ? "true" : "false", s->epochs);
+    jnum("est_cycles_median", s->median / tpc, "}");
 }
 
 static void sink(const bench_row *r, void *vctx)
@@ -67,16 +72,18 @@ static void sink(const bench_row *r, void *vctx)
     int j;
     if (c->json) {
         printf("%s\n    {\"kernel\": \"%s\", \"format\": \"%s\", \"port\": \"%s\", \"path\": \"%s\", "
-               "\"lanes\": %d,\n     \"max_err\": %s, \"mean_err\": %s, \"argmax\": [",
-               c->first ? "" : ",", r->kernel, r->format, r->port, r->path, r->lanes,
-               jnum(r->err.max_rel), jnum(r->err.mean_rel));
+               "\"lanes\": %d,\n     ",
+               c->first ? "" : ",", r->kernel, r->format, r->port, r->path, r->lanes);
+        jnum("max_err", r->err.max_rel, ", ");
+        jnum("mean_err", r->err.mean_rel, ", \"argmax\": [");
         for (j = 0; j < r->n_inputs; j++)
             printf("%s%.9g", j ? ", " : "", r->err.arg[j]);
         printf("], \"bound\": %.6g, \"within_bound\": %s,\n     ", r->bound,
                r->within ? "true" : "false");
-        if (r->err.has_lsb)
-            printf("\"max_err_lsb\": %s, \"mean_err_lsb\": %s, \"bound_unit\": \"lsb\",\n     ",
-                   jnum(r->err.max_lsb), jnum(r->err.mean_lsb));
+        if (r->err.has_lsb) {
+            jnum("max_err_lsb", r->err.max_lsb, ", ");
+            jnum("mean_err_lsb", r->err.mean_lsb, ", \"bound_unit\": \"lsb\",\n     ");
+        }
         json_stat("throughput", &r->thr, c->tpc);
         if (r->has_lat) {
             printf(",\n     ");
@@ -134,10 +141,17 @@ int facet_cmd_bench(int argc, char **argv)
             o.format = argv[++i];
         } else if ((!strcmp(a, "--samples") || !strcmp(a, "--err-samples") || !strcmp(a, "--epochs"))
                    && i + 1 < argc) {
+            /* documented caps, so that a maximal run still ends in minutes */
+            long cap = !strcmp(a, "--samples") ? 65536L : !strcmp(a, "--err-samples") ? 4194304L : 1001L;
             char *end;
-            long v = strtol(argv[++i], &end, 10);
-            if (*end || v <= 0 || v > (1L << 26)) {
-                fprintf(stderr, "facet-bench bench: bad value '%s' for %s\n", argv[i], a);
+            long v;
+            if (argv[i + 1][0] < '0' || argv[i + 1][0] > '9') {
+                fprintf(stderr, "facet-bench bench: bad value '%s' for %s (decimal digits)\n", argv[i + 1], a);
+                return 2;
+            }
+            v = strtol(argv[++i], &end, 10);
+            if (*end || v <= 0 || v > cap) {
+                fprintf(stderr, "facet-bench bench: bad value '%s' for %s (1 to %ld)\n", argv[i], a, cap);
                 return 2;
             }
             if (!strcmp(a, "--samples")) {
@@ -184,6 +198,20 @@ int facet_cmd_bench(int argc, char **argv)
             fprintf(stderr, "facet-bench bench: unknown port '%s'\n", o.port);
             return 2;
         }
+        /* a facet port, or a peer built for one, that this CPU cannot run */
+        for (q = 0; peer_sets[q]; q++)
+            if (!strcmp(o.port, peer_sets[q]->name) && !peer_available(peer_sets[q])) {
+                fprintf(stderr, "facet-bench bench: peer '%s' needs the %s port, which this CPU cannot run\n",
+                        o.port, peer_sets[q]->width);
+                return 2;
+            }
+        for (p = 0; p < facet_port_count(); p++) {
+            int sup;
+            if (!strcmp(facet_port_at(p, &sup, NULL), o.port) && !sup) {
+                fprintf(stderr, "facet-bench bench: this CPU cannot run port '%s'\n", o.port);
+                return 2;
+            }
+        }
     }
     if (o.n_err < o.n_time)
         o.n_err = o.n_time;
@@ -218,5 +246,10 @@ int facet_cmd_bench(int argc, char **argv)
         printf("\n ]}\n");
     if (n == 0 && !c.json)
         printf("# nothing to run for this selection on this machine\n");
+    /* the facet command's rule: 1 when stdout could not be written */
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "facet-bench bench: cannot write the output\n");
+        return 1;
+    }
     return 0;
 }

@@ -14,21 +14,24 @@
 #define PEER_STR(x) PEER_STR_(x)
 #ifdef PEER_WIDTH /* x86: the facet port of the same width */
 #define BASE_ PEER_CAT(peer_shader_, PEER_WIDTH)
+#define BASE_NAME_ "shader_" PEER_STR(PEER_WIDTH)
 #define WIDTH_ PEER_STR(PEER_WIDTH)
 #define MARCH_ PEER_MARCH
 #else
 #define BASE_ peer_shader
+#define BASE_NAME_ "shader"
 #define WIDTH_ NULL
 #define MARCH_ "-march=native"
 #endif
 #ifdef PEER_FASTMATH
 #define SET_ PEER_CAT(BASE_, _fm)
+#define NAME_ BASE_NAME_ "_fm"
 #define BUILD_ "-O3 " MARCH_ " -fno-math-errno -ffp-contract=fast -ffast-math"
 #else
 #define SET_ BASE_
+#define NAME_ BASE_NAME_
 #define BUILD_ "-O3 " MARCH_ " -fno-math-errno -ffp-contract=fast"
 #endif
-#define NAME_ PEER_STR(SET_)
 
 #define INV_PI_F 0.318309886f
 
@@ -146,6 +149,6 @@ static void sh_vish_b(float *restrict out, const float *const *in, size_t n)
 }
 
 const peer_set SET_ = {
-    NAME_ + 5 /* without "peer_" */, BUILD_, WIDTH_,
+    NAME_, BUILD_, WIDTH_,
     sh_brdf, sh_fresnel_b, sh_ggx_d_b, sh_g1_b, sh_g2_b, sh_vis_b, sh_g1h_b, sh_vish_b,
 };

@@ -39,8 +39,17 @@ for t in test_f32_ports test_f32_accuracy test_fx_ports test_f32_bad_input test_
 done
 res=$(FACET_TEST_QUICK=1 $q build/tests/test_f32_ports 2>&1)
 printf '%s' "$res" | grep -q "port avx2: compiled in, but this CPU cannot run it" && ok || bad "avx2 not reported unsupported"
-# the bench's SIMD loops ask facet_port_supported(): no avx2 row, no SIGILL
-# (the peers are left out: they are built with -march=native)
+# the bench's SIMD loops and peers ask facet_port_supported(): no avx2 row,
+# no SIGILL (the shader peers are built for AVX2 / AVX-512 widths and skipped)
+out=$($q build/facet-bench bench ggx_d --quick --format f32 2>&1); rc=$?
+if [ $rc -eq 0 ] && printf '%s\n' "$out" | grep -qE '^ggx_d +f32 +textbook +peer' &&
+    ! printf '%s\n' "$out" | grep -qE '^ggx_d +f32 +shader_avx'; then ok; else
+    printf '%s\n' "$out" | tail -n 5; bad "facet-bench bench with peers under Nehalem (exit $rc)"; fi
+# a port (or a peer of a width) this CPU cannot run is refused with 2, as eval does
+$q build/facet-bench bench lambert --port avx2 --quick >/dev/null 2>build/old-cpu.err
+[ $? -eq 2 ] && grep -q "cannot run port 'avx2'" build/old-cpu.err && ok || bad "bench --port avx2: $(cat build/old-cpu.err)"
+$q build/facet-bench bench ggx_d --port shader_avx2_fm --quick >/dev/null 2>build/old-cpu.err
+[ $? -eq 2 ] && ok || bad "bench --port shader_avx2_fm: $(cat build/old-cpu.err)"
 out=$($q build/facet-bench bench lambert --quick --no-peers --format f32 2>&1); rc=$?
 if [ $rc -eq 0 ] && printf '%s\n' "$out" | grep -qE '^lambert +f32 +sse2 +inline' &&
     ! printf '%s\n' "$out" | grep -qE '^lambert +f32 +avx'; then ok; else

@@ -67,4 +67,19 @@ build/facet-bench bench nosuch >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "unkno
 build/facet-bench bench ggx_d --port nosuch --quick >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "unknown port: want exit 2"
 build/facet-bench bench ggx_d --format q15 >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "unknown format: want exit 2"
 build/facet-bench bench --help | grep -q 'usage: facet-bench bench' && ok || bad "--help"
+# est_cycles_median is the median over ticks_per_cycle (it printed the
+# minimum: four shared number buffers for five numbers in one printf)
+if command -v python3 >/dev/null 2>&1; then
+    printf '%s' "$out" | python3 -c '
+import json, sys
+d = json.load(sys.stdin); t = d["clock"]["ticks_per_cycle"]
+stats = [r[k] for r in d["results"] for k in ("throughput", "latency") if k in r]
+bad = [s for s in stats if abs(s["est_cycles_median"] - s["median"] / t) > 2e-4 * s["median"] / t]
+sys.exit(1 if bad or not stats else 0)' && ok || bad "JSON est_cycles_median is not median / ticks_per_cycle"
+fi
+# exit codes: 1 when stdout cannot be written; 2 for a value past its cap
+build/facet-bench bench lambert --quick --no-peers >/dev/full 2>/dev/null; [ $? -eq 1 ] && ok || bad "stdout /dev/full: want exit 1"
+build/facet-bench bench lambert --epochs 1002 >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "--epochs 1002: want exit 2"
+build/facet-bench bench lambert --samples 65544 >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "--samples 65544: want exit 2"
+build/facet-bench bench lambert --samples " 8" >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "--samples ' 8': want exit 2"
 echo "bench: $pass passed, $fail failed, 0 skipped"
