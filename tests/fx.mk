@@ -1,11 +1,11 @@
 # fx.mk - cross and bare-metal builds of the fixed-point kernels (included
 # by the Makefile; driven by tests/suites/50-fx-targets.sh).  Every build
-# compiles only src/fx_core.c, src/fx_kernels.c (and the table for tests),
+# compiles only src/fx_core.c, src/fx_kernels.c, src/fx_fast.c (and the table for tests),
 # so nothing else of the library has to port.
 #   $(BUILD)/fx/<target>/test_fx_hash[.elf]   the pinned-hash test per target
-#   $(BUILD)/fx/<cpu>/fx_kernels.o            Cortex-M objects for the size table
+#   $(BUILD)/fx/<cpu>/fx_kernels.o, fx_fast.o Cortex-M objects for the size table
 #   $(BUILD)/fx/rv32/fx.elf                   freestanding RV32IMC link check
-FX_KSRC   := src/fx_core.c src/fx_kernels.c src/fx_batch.c src/fx_only/fx_active_scalar.c
+FX_KSRC   := src/fx_core.c src/fx_kernels.c src/fx_fast.c src/fx_batch.c src/fx_only/fx_active_scalar.c
 FX_TSRC   := $(FX_KSRC) src/fx_table.c
 FX_HDRS   := include/facet/fx.h $(wildcard src/fx_*.h) src/port.h src/kernel_list.h src/kernels.def \
              tests/harness.h tests/fx_hash.h
@@ -20,7 +20,8 @@ FX_CM_LINK  = --specs=rdimon.specs -nostartfiles -T tests/cortexm/mps2.ld tests/
 .PHONY: fx-cortex-m fx-rv32 fx-linux-cross fx-portable
 fx-cortex-m: $(BUILD)/fx/cortex-m0/test_fx_hash.elf $(BUILD)/fx/cortex-m4/test_fx_hash.elf \
              $(BUILD)/fx/cortex-m0/fx_kernels.o $(BUILD)/fx/cortex-m4/fx_kernels.o \
-             $(BUILD)/fx/cortex-m0/fx_core.o $(BUILD)/fx/cortex-m4/fx_core.o
+             $(BUILD)/fx/cortex-m0/fx_core.o $(BUILD)/fx/cortex-m4/fx_core.o \
+             $(BUILD)/fx/cortex-m0/fx_fast.o $(BUILD)/fx/cortex-m4/fx_fast.o
 fx-rv32: $(BUILD)/fx/rv32/fx.elf
 fx-linux-cross: $(BUILD)/fx/aarch64/test_fx_hash $(BUILD)/fx/armv7/test_fx_hash \
                 $(BUILD)/fx/aarch64/integer-only.stamp
@@ -35,6 +36,9 @@ $(BUILD)/fx/cortex-m%/fx_kernels.o: src/fx_kernels.c $(FX_HDRS)
 	@mkdir -p $(dir $@)
 	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_CM_FLAGS) $(WARN) -Iinclude -Os -c $< -o $@
 $(BUILD)/fx/cortex-m%/fx_core.o: src/fx_core.c $(FX_HDRS)
+	@mkdir -p $(dir $@)
+	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_CM_FLAGS) $(WARN) -Iinclude -Os -c $< -o $@
+$(BUILD)/fx/cortex-m%/fx_fast.o: src/fx_fast.c $(FX_HDRS)
 	@mkdir -p $(dir $@)
 	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_CM_FLAGS) $(WARN) -Iinclude -Os -c $< -o $@
 

@@ -197,6 +197,71 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
                                 const int32_t *lov, const int32_t *alpha, const int32_t *f0,
                                 const int32_t *albedo, size_t n);
 
+/* ---- fast tier -------------------------------------------------------------
+ * facet_<kernel>_fx_fast: the same inputs (raw Q15 int32, same domains and
+ * clamping) and the same output containers and formats as facet_<kernel>_fx
+ * (FACET_FX_*_FRAC, FACET_FX_MAX_*), so a caller switches tier by name.
+ * Bound, every kernel: |raw - v 2^frac| <= max(1 LSB, 2^-10 v 2^frac), v
+ * the exact (oracle) value at the same raw inputs.  FACET_FX_FAST_ERR_<NAME>
+ * is the measured maximum of |raw - v 2^frac| / max(1, 2^-10 v 2^frac) over
+ * tests/test_fx_fast.c's sweep (enforced there; <= 1 is the tier's bound).
+ * Integer only, no divide instruction, no libgcc helper (Cortex-M0/M4,
+ * RV32IMC), bit-exact on every target (pinned hashes, tests/fx_hash.h).
+ * Written once over the lane op layer (src/fx_fast_body.h).
+ *
+ * Datapath.  Inputs are clamped first.  Products are 16 x 16 -> 32 bit
+ * (operands < 2^16, or a product bounded below 2^32 as noted in the body):
+ * one MULS on Cortex-M0, one lane of a 16-bit SIMD multiplier.  Exact Q30
+ * stages: S = NL + NV [<= 2^16], P = (2^16 - S)(2^16 + S) = (4 - s^2) 2^30
+ * and Q = (2^15 - L.V 2^15) 2^16 = (4 - 2t) 2^30 [both <= 2^32 - 2^16],
+ * u = min(P, Q) = (4 - 2 t_raised) 2^30, w = P - u = (2t - s^2) 2^30 (the
+ * specular peak's cancellation, exact), c = ~u = L.H^2 2^32 - 1, N A, A S
+ * [<= 2^31], NL NV, A^2 [<= 2^30].  Wide-range stages (D, Vis, G, the
+ * Fresnel tail y^5, the specular sum) are pseudo-floats m 2^(512 - n): a
+ * 16-bit mantissa m in [2^15, 2^16) and an exponent lane n < 2^11; a
+ * product is one 16x16 multiply (< 2^32) and a 1-bit renormalisation, a
+ * sum aligns the smaller mantissa (< 2^17 before its 1-bit
+ * renormalisation), a fixed value enters through one clz and two shifts.
+ * 1/x: the mantissa's top 7 bits index a 129-entry table of 2^31/m, the
+ * next 8 interpolate linearly (error 2^-15.4, no Newton step needed: one
+ * multiply of a < 2^10 difference by an 8-bit fraction); sqrt likewise
+ * (97 entries on [1/4, 1), 2^-15), after an even normalising shift.  Each
+ * pseudo-float step truncates (<= 2^-15); the one final rounding is to
+ * nearest, ties up; results saturate at the format maximum.  The only
+ * wide intermediate: brdf_hammon's UQ40.24 result, one 32x32->64 product
+ * m 2^k2 x 2^k1 (m < 2^26).  No stage overflows: every bound above is
+ * below 2^32, the exponent lanes stay in [0, 2^11). */
+#define FACET_FX_FAST_TOL_REL 0.0009765625 /* 2^-10 */
+#define FACET_FX_FAST_ERR_NOH_FROM_DOTS         1.0
+#define FACET_FX_FAST_ERR_LOH_FROM_DOTS         1.0
+#define FACET_FX_FAST_ERR_FRESNEL_SCHLICK       1.0
+#define FACET_FX_FAST_ERR_GGX_D                 1.0
+#define FACET_FX_FAST_ERR_SMITH_G1              1.0
+#define FACET_FX_FAST_ERR_SMITH_G2              1.0
+#define FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED 1.0
+#define FACET_FX_FAST_ERR_SMITH_VIS             1.0
+#define FACET_FX_FAST_ERR_SMITH_G1_HAMMON       1.0
+#define FACET_FX_FAST_ERR_SMITH_G2_HAMMON       1.0
+#define FACET_FX_FAST_ERR_SMITH_VIS_HAMMON      1.0
+#define FACET_FX_FAST_ERR_DIFFUSE_HAMMON        1.0
+#define FACET_FX_FAST_ERR_BRDF_HAMMON           1.0
+
+int32_t facet_noh_from_dots_fx_fast(int32_t nol, int32_t nov, int32_t lov);
+int32_t facet_loh_from_dots_fx_fast(int32_t lov);
+int32_t facet_fresnel_schlick_fx_fast(int32_t f0, int32_t cos_theta);
+uint32_t facet_ggx_d_fx_fast(int32_t noh, int32_t alpha);
+int32_t facet_smith_g1_fx_fast(int32_t nov, int32_t alpha);
+int32_t facet_smith_g2_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+int32_t facet_smith_g2_uncorrelated_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+uint32_t facet_smith_vis_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+int32_t facet_smith_g1_hammon_fx_fast(int32_t nov, int32_t alpha);
+int32_t facet_smith_g2_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+uint32_t facet_smith_vis_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+uint32_t facet_diffuse_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
+                                      int32_t albedo);
+uint64_t facet_brdf_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
+                                   int32_t f0, int32_t albedo);
+
 /* ---- the shared primitives (exposed for the tests) ---------------------- */
 /* floor((2^64 - 1) / d) - 2^32, d in [2^31, 2^32) */
 uint32_t facet_fx_rcp32(uint32_t d);

@@ -1,0 +1,439 @@
+/* fx_fast_body.h - the fx_fast tier (facet/fx.h "fast tier"), written once
+ * over the lane op layer of src/fx_body.h: the scalar specification
+ * (src/fx_fast.c over src/fx_ops_scalar.h) and any SIMD port instantiate
+ * these same bodies.  Branch-free (selects, min/max, per-lane shifts and
+ * table lookups), integer only, every intermediate below 2^32 except the
+ * 64-bit output of brdf_hammon (one fxv_mulw).
+ *
+ * The datapath (the "datapath" paragraph of facet/fx.h says it in short):
+ *   - raw Q15 inputs are clamped to the domain first (fxv_clamp);
+ *   - products are 16 x 16 -> 32 bit (fxv_mul32 of operands < 2^16 or
+ *     whose product is known below 2^32): one MULS on Cortex-M0;
+ *   - wide-range quantities (D, Vis, the Fresnel tail, the specular term)
+ *     are pseudo-floats fxs = m 2^(512 - n): a 16-bit mantissa m in
+ *     [2^15, 2^16) (0 for zero, then n >= 1024) and an exponent lane n;
+ *     a product is one 16x16 multiply and a 1-bit renormalisation, a
+ *     conversion from a 32-bit fixed value one clz and two shifts;
+ *   - 1/x and sqrt(x): 129- and 97-entry tables of the function on the
+ *     normalised mantissa, linearly interpolated (one table step, one
+ *     multiply): 1/x to 2^-15.4, sqrt to 2^-15 relative; no iteration;
+ *   - every rounding is a truncation (floor) except the final one of each
+ *     kernel (round to nearest, ties up) and the few marked "+ half".
+ * Bounds in brackets say why a value fits its 32 bits. */
+#ifndef FACET_FX_FAST_BODY_H
+#define FACET_FX_FAST_BODY_H
+
+#define FXF_ONE 32768u
+
+/* 1 / x on [1, 2): FXF_RCP[i] = round(2^31 / (2^15 + 2^8 i)), i = 0..128,
+ * the first (65536) held at 65535 so every result is below 2^16 */
+static const uint32_t fxf_rcp_tab[129] = {
+    65535, 65028, 64528, 64035, 63550, 63072, 62602, 62138, 61681, 61231, 60787, 60350,
+    59919, 59494, 59075, 58662, 58254, 57852, 57456, 57065, 56680, 56299, 55924, 55554,
+    55188, 54828, 54471, 54120, 53773, 53431, 53092, 52759, 52429, 52103, 51782, 51464,
+    51150, 50840, 50534, 50231, 49932, 49637, 49345, 49056, 48771, 48489, 48210, 47935,
+    47663, 47393, 47127, 46864, 46603, 46346, 46091, 45839, 45590, 45344, 45100, 44859,
+    44620, 44384, 44151, 43919, 43691, 43464, 43240, 43019, 42799, 42582, 42367, 42154,
+    41943, 41734, 41528, 41323, 41121, 40920, 40721, 40525, 40330, 40137, 39946, 39756,
+    39569, 39383, 39199, 39017, 38836, 38657, 38480, 38304, 38130, 37958, 37787, 37617,
+    37449, 37283, 37118, 36954, 36792, 36631, 36472, 36314, 36158, 36003, 35849, 35696,
+    35545, 35395, 35246, 35099, 34953, 34808, 34664, 34521, 34380, 34239, 34100, 33962,
+    33825, 33689, 33554, 33421, 33288, 33157, 33026, 32897, 32768,
+};
+
+/* sqrt on [1/4, 1]: FXF_SQRT[j] = round(2^16 sqrt((32 + j) / 128)), j = 0..96 */
+static const uint32_t fxf_sqrt_tab[97] = {
+    32768, 33276, 33776, 34270, 34756, 35235, 35708, 36175, 36636, 37091, 37540, 37985,
+    38424, 38858, 39287, 39712, 40132, 40548, 40960, 41368, 41771, 42171, 42567, 42959,
+    43348, 43733, 44115, 44494, 44869, 45242, 45611, 45977, 46341, 46702, 47059, 47415,
+    47767, 48117, 48465, 48809, 49152, 49492, 49830, 50166, 50499, 50830, 51159, 51486,
+    51811, 52134, 52454, 52773, 53090, 53405, 53719, 54030, 54340, 54647, 54954, 55258,
+    55561, 55862, 56162, 56459, 56756, 57051, 57344, 57636, 57926, 58215, 58503, 58789,
+    59073, 59357, 59639, 59919, 60199, 60477, 60753, 61029, 61303, 61576, 61848, 62119,
+    62388, 62657, 62924, 63190, 63455, 63719, 63982, 64243, 64504, 64763, 65022, 65279,
+    65536,
+};
+
+/* r ~ 2^31 / m for m in [2^15, 2^16): r in [2^15, 2^16).  Interpolation
+ * error <= 2^-16 (h^2/8 max|f''| with h = 2^-7), table rounding and the
+ * truncated step 2^-16 each. [(R[i] - R[i+1]) < 2^10, frac < 2^8] */
+static inline fxv_u32 fxf_rcp16(fxv_u32 m)
+{
+    fxv_u32 i = fxv_sub32(fxv_shr(m, 8), fxv_k32(128)), f = fxv_and(m, fxv_k32(255));
+    fxv_u32 r0 = fxv_lut(fxf_rcp_tab, i), r1 = fxv_lut(fxf_rcp_tab, fxv_add32(i, fxv_k32(1)));
+    return fxv_sub32(r0, fxv_shr(fxv_add32(fxv_mul32(fxv_sub32(r0, r1), f), fxv_k32(128)), 8));
+}
+
+/* s ~ 2^16 sqrt(x / 2^32) for x in [2^30, 2^32): s in [2^15, 2^16).
+ * Error <= 2^-15 relative. [(S[j+1] - S[j]) < 2^9, frac < 2^8] */
+static inline fxv_u32 fxf_sqrt16(fxv_u32 x)
+{
+    fxv_u32 j = fxv_sub32(fxv_shr(x, 25), fxv_k32(32)), f = fxv_and(fxv_shr(x, 17), fxv_k32(255));
+    fxv_u32 s0 = fxv_lut(fxf_sqrt_tab, j), s1 = fxv_lut(fxf_sqrt_tab, fxv_add32(j, fxv_k32(1)));
+    return fxv_add32(s0, fxv_shr(fxv_add32(fxv_mul32(fxv_sub32(s1, s0), f), fxv_k32(128)), 8));
+}
+
+/* ---- fxs: m 2^(512 - n), m in [2^15, 2^16) or m = 0 (then n >= 1024) ---- */
+typedef struct { fxv_u32 m, n; } fxs;
+
+#define FXS_ZERO_N 1536u
+
+/* x 2^-f of a 32-bit x (0 allowed): m = floor(x 2^k / 2^16), k = clz(x),
+ * n = 496 + k + f.  Truncation <= 2^-15 relative. */
+static inline fxs fxs_q(fxv_u32 x, unsigned f)
+{
+    fxs r;
+    fxv_u32 k = fxv_clz(x), z = fxv_lt(x, fxv_k32(1));
+    r.m = fxv_shr(fxv_shlv(x, fxv_min(k, fxv_k32(31))), 16);
+    r.n = fxv_sel(z, fxv_k32(FXS_ZERO_N), fxv_add32(k, fxv_k32(496u + f)));
+    return r;
+}
+
+/* a constant: m in [2^15, 2^16), value m 2^-f */
+static inline fxs fxs_k(uint32_t m, unsigned f)
+{
+    fxs r;
+    r.m = fxv_k32(m);
+    r.n = fxv_k32(512u + f);
+    return r;
+}
+
+/* a b: p = ma mb in [2^30, 2^32), h = its bit 31, m = p >> (15 + h).
+ * Truncation <= 2^-15 relative.  A zero stays zero (n >= 1024). */
+static inline fxs fxs_mul(fxs a, fxs b)
+{
+    fxs r;
+    fxv_u32 p = fxv_mul32(a.m, b.m), h = fxv_shr(p, 31);
+    r.m = fxv_shrv(p, fxv_add32(h, fxv_k32(15)));
+    r.n = fxv_sub32(fxv_add32(a.n, b.n), fxv_add32(h, fxv_k32(527)));
+    return r;
+}
+
+/* a + b, both >= 0: the smaller aligned to the larger (truncated), one
+ * renormalisation bit.  [mb + (ms >> d) < 2^17] */
+static inline fxs fxs_add(fxs a, fxs b)
+{
+    fxs r;
+    fxv_u32 bb = fxv_lt(b.n, a.n); /* b the larger */
+    fxv_u32 big = fxv_sel(bb, b.m, a.m), sml = fxv_sel(bb, a.m, b.m);
+    fxv_u32 n = fxv_min(a.n, b.n), d = fxv_min(fxv_sub32(fxv_max(a.n, b.n), n), fxv_k32(31));
+    fxv_u32 s = fxv_add32(big, fxv_shrv(sml, d)), h = fxv_shr(s, 16);
+    r.m = fxv_shrv(s, h);
+    r.n = fxv_sub32(n, h);
+    return r;
+}
+
+/* 1 / a, a > 0: 2^(n - 512) / m = r 2^-31 2^(n - 512), n' = 1055 - n */
+static inline fxs fxs_rcp(fxs a)
+{
+    fxs r;
+    r.m = fxf_rcp16(a.m);
+    r.n = fxv_sub32(fxv_k32(1055), a.n);
+    return r;
+}
+
+/* sqrt(a), a > 0: m 2^(16 - (n & 1)) is in [2^30, 2^32) (the exponent made
+ * even), n' = 264 + floor(n / 2). */
+static inline fxs fxs_sqrt(fxs a)
+{
+    fxs r;
+    fxv_u32 odd = fxv_and(a.n, fxv_k32(1));
+    r.m = fxf_sqrt16(fxv_shlv(a.m, fxv_sub32(fxv_k32(16), odd)));
+    r.n = fxv_add32(fxv_shr(a.n, 1), fxv_k32(264));
+    return r;
+}
+
+/* round(a 2^f) (ties up), saturated at max (a 32-bit output) */
+static inline fxv_u32 fxs_fixed(fxs a, unsigned f, uint32_t max)
+{
+    /* right: k = n - 512 - f >= 1: ((m >> (k - 1)) + 1) >> 1;
+     * left:  k <= 0: m << -k, -k <= 16 [m << 16 < 2^32], else saturate */
+    fxv_u32 thr = fxv_k32(513u + f), right = fxv_lt(a.n, thr);
+    fxv_u32 kr = fxv_min(fxv_sub32(fxv_max(a.n, thr), thr), fxv_k32(31));
+    fxv_u32 kl = fxv_sub32(fxv_k32(512u + f), fxv_min(a.n, fxv_k32(512u + f)));
+    fxv_u32 vr = fxv_shr(fxv_add32(fxv_shrv(a.m, kr), fxv_k32(1)), 1);
+    fxv_u32 vl = fxv_shlv(a.m, fxv_min(kl, fxv_k32(16)));
+    fxv_u32 v = fxv_sel(right, vl, vr);
+    v = fxv_sel(fxv_lt(fxv_k32(16), kl), fxv_k32(max), v);
+    return fxv_min(v, fxv_k32(max));
+}
+
+/* ---- shared pieces ---------------------------------------------------------- */
+/* the two-cosine clamp and S = NL + NV in [256, 2^16] */
+static inline fxv_u32 fxf_cos(fxv_i32 x) { return fxv_clamp(x, FACET_FX_COS_MIN, FACET_FX_ONE); }
+static inline fxv_u32 fxf_unit(fxv_i32 x) { return fxv_clamp(x, 0, FACET_FX_ONE); }
+static inline fxv_u32 fxf_alpha(fxv_i32 x) { return fxv_clamp(x, FACET_FX_ALPHA_MIN, FACET_FX_ONE); }
+
+/* The dot triple.  With S = NL + NV and lov clamped to [-32767, 32768]
+ * (L.V = -1 and -1 + 2^-15 give the same raised t: s^2/2 >= 2^-15):
+ *   P = (2^16 - S)(2^16 + S)  = (4 - s^2) 2^30            [<= 2^32 - 2^16]
+ *   Q = (2^15 - LOV) 2^16     = (4 - 2t) 2^30             [<= 2^32 - 2^16]
+ *   u = min(P, Q)             = (4 - 2 t_r) 2^30, t_r = max(t, s^2/2), the
+ *                               facet.h raise, exact
+ *   w = P - u                 = (2 t_r - s^2) 2^30, exact (the peak's
+ *                               cancellation without rounding)
+ *   c = ~u = 2^32 - 1 - u     = (t_r / 2) 2^32 - 1 = L.H^2 2^32 - 1
+ *                               [c >= 2^16 - 1: t_r >= s^2/2 >= 2^-15] */
+typedef struct { fxv_u32 s, u, w, c; } fxf_dots;
+
+static inline fxf_dots fxf_dots_of(fxv_u32 nl, fxv_u32 nv, fxv_i32 lov)
+{
+    fxf_dots g;
+    fxv_u32 t = fxv_clamp_off(lov, -FACET_FX_ONE + 1, FACET_FX_ONE); /* LOV + 32767 */
+    fxv_u32 p, q;
+    g.s = fxv_add32(nl, nv);
+    p = fxv_mul32(fxv_sub32(fxv_k32(65536), g.s), fxv_add32(fxv_k32(65536), g.s));
+    q = fxv_shl(fxv_sub32(fxv_k32(65535), t), 16); /* 2^15 - LOV in [0, 65535] */
+    g.u = fxv_min(p, q);
+    g.w = fxv_sub32(p, g.u);
+    g.c = fxv_not(g.u);
+    return g;
+}
+
+/* sqrt(c 2^-32) for c in [2^16 - 1, 2^32): an even normalising shift 2h
+ * [h <= 8], the table: sqrt = s 2^-(16 + h), s in [2^15, 2^16) */
+typedef struct { fxv_u32 s, h; } fxf_root;
+
+static inline fxf_root fxf_sqrt32(fxv_u32 c)
+{
+    fxf_root r;
+    fxv_u32 k = fxv_and(fxv_clz(c), fxv_k32(30));
+    r.s = fxf_sqrt16(fxv_shlv(c, k));
+    r.h = fxv_shr(k, 1);
+    return r;
+}
+
+/* ---- loh_from_dots ------------------------------------------------------------
+ * L.H = sqrt(T / 2^16), T = 2^15 + LOV: c = T 2^16 - 1 (exact for T >= 1,
+ * [(T - 1) 2^16 <= 2^32 - 2^16]), raw = round(s / 2^(1 + h)); T = 0 gives 0. */
+static inline fxv_u32 fxf_fast_loh_from_dots(fxv_i32 lov)
+{
+    fxv_u32 t = fxv_clamp_off(lov, -FACET_FX_ONE, FACET_FX_ONE);
+    fxv_u32 c = fxv_add32(fxv_shl(fxv_sub32(fxv_max(t, fxv_k32(1)), fxv_k32(1)), 16), fxv_k32(0xFFFF));
+    fxf_root r = fxf_sqrt32(c);
+    fxv_u32 v = fxv_shr(fxv_add32(fxv_shrv(r.s, r.h), fxv_k32(1)), 1);
+    return fxv_sel(fxv_lt(t, fxv_k32(1)), fxv_k32(0), v);
+}
+
+/* ---- noh_from_dots ------------------------------------------------------------
+ * N.H = s / sqrt(2 t_r) = s / (2 L.H) = S 2^h / s_c; with r = rcp16(s_c)
+ * ~ 2^31 / s_c: raw = round(S r / 2^(16 - h)) [S r < 2^16 2^16], at most
+ * 2^15; w = 0 (at or past N.H = 1) gives 2^15. */
+static inline fxv_u32 fxf_fast_noh_from_dots(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov)
+{
+    fxf_dots g = fxf_dots_of(fxf_cos(nol), fxf_cos(nov), lov);
+    fxf_root r = fxf_sqrt32(g.c);
+    fxv_u32 x = fxv_mul32(g.s, fxf_rcp16(r.s));
+    fxv_u32 v = fxv_shr(fxv_add32(fxv_shrv(x, fxv_sub32(fxv_k32(15), r.h)), fxv_k32(1)), 1);
+    v = fxv_min(v, fxv_k32(FXF_ONE));
+    return fxv_sel(fxv_lt(g.w, fxv_k32(1)), fxv_k32(FXF_ONE), v);
+}
+
+/* ---- Fresnel ------------------------------------------------------------------
+ * F = f0 + (1 - f0) y^5, Y = 2^15 - C (Q15):
+ *   z1 = round(Y^2 / 2^14)    Q16 y^2   [<= 2^16]
+ *   z2 = z1 floor(z1 / 2)     Q31 y^4   [<= 2^31]
+ *   y4 = round(z2 / 2^15)     Q16       [<= 2^16]
+ *   y5 = y4 Y                 Q31       [<= 2^31]
+ *   F31 = F0 2^16 + (2^15 - F0) round(y5 / 2^15)   Q31 [<= 2^31]
+ *   raw = round(F31 / 2^16).
+ * F(f0, 1) = f0 and F(f0, 0) = 1 exactly.  Error: rounding steps of
+ * <= 2^-17 each, scaled by y^k < 1, and the final rounding. */
+static inline fxv_u32 fxf_fast_fresnel_schlick(fxv_i32 f0_in, fxv_i32 cos_in)
+{
+    fxv_u32 f0 = fxf_unit(f0_in), y = fxv_sub32(fxv_k32(FXF_ONE), fxf_unit(cos_in));
+    fxv_u32 z1 = fxv_shr(fxv_add32(fxv_mul32(y, y), fxv_k32(1u << 13)), 14);
+    fxv_u32 z2 = fxv_mul32(z1, fxv_shr(z1, 1));
+    fxv_u32 y4 = fxv_shr(fxv_add32(z2, fxv_k32(1u << 14)), 15);
+    fxv_u32 y5 = fxv_shr(fxv_add32(fxv_mul32(y4, y), fxv_k32(1u << 14)), 15);
+    fxv_u32 f31 = fxv_add32(fxv_shl(f0, 16), fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), f0), y5));
+    return fxv_shr(fxv_add32(f31, fxv_k32(1u << 15)), 16);
+}
+
+/* ---- GGX D ----------------------------------------------------------------------
+ * d = (1 - n)(1 + n) + (n a)^2: d1 = (2^15 - N)(2^15 + N) Q30 exact, (N A)
+ * Q30 exact [<= 2^30], squared as fxs; D = (a / d)^2 / pi. */
+#define FXF_INV_PI_M 41722u /* round(2^17 / pi), value 2^-17 m */
+
+static inline fxv_u32 fxf_fast_ggx_d(fxv_i32 noh, fxv_i32 alpha)
+{
+    fxv_u32 n = fxf_unit(noh), a = fxf_alpha(alpha);
+    fxs na = fxs_q(fxv_mul32(n, a), 30);
+    fxs d = fxs_add(fxs_q(fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), n), fxv_add32(fxv_k32(FXF_ONE), n)), 30),
+                    fxs_mul(na, na));
+    fxs g = fxs_mul(fxs_q(a, 15), fxs_rcp(d));
+    return fxs_fixed(fxs_mul(fxs_mul(g, g), fxs_k(FXF_INV_PI_M, 17)), FACET_FX_D_FRAC, FACET_FX_MAX_D);
+}
+
+/* ---- Smith, exact ------------------------------------------------------------
+ * r(x) = sqrt(a^2 (1 - x)(1 + x) + x^2): A^2 [<= 2^30] and (2^15 - X)(2^15 + X)
+ * [<= 2^30] as fxs, X^2 Q30 exact. */
+static inline fxs fxf_smith_r(fxv_u32 x, fxs a2)
+{
+    fxs t = fxs_mul(a2, fxs_q(fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), x), fxv_add32(fxv_k32(FXF_ONE), x)), 30));
+    return fxs_sqrt(fxs_add(t, fxs_q(fxv_mul32(x, x), 30)));
+}
+
+/* G1 = 2 n / (n + r(n)) */
+static inline fxv_u32 fxf_fast_smith_g1(fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 n = fxf_unit(nov), a = fxf_alpha(alpha);
+    fxs den = fxs_add(fxs_q(n, 15), fxf_smith_r(n, fxs_q(fxv_mul32(a, a), 30)));
+    return fxs_fixed(fxs_mul(fxs_q(n, 14), fxs_rcp(den)), 15, FXF_ONE);
+}
+
+/* nv r(nl) + nl r(nv) */
+static inline fxs fxf_g2_den(fxv_u32 nl, fxv_u32 nv, fxs a2)
+{
+    return fxs_add(fxs_mul(fxs_q(nv, 15), fxf_smith_r(nl, a2)), fxs_mul(fxs_q(nl, 15), fxf_smith_r(nv, a2)));
+}
+
+/* G2 = 2 nl nv / (nv r(nl) + nl r(nv)) [NL NV <= 2^30] */
+static inline fxv_u32 fxf_fast_smith_g2(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
+    fxs den = fxf_g2_den(nl, nv, fxs_q(fxv_mul32(a, a), 30));
+    return fxs_fixed(fxs_mul(fxs_q(fxv_mul32(nl, nv), 29), fxs_rcp(den)), 15, FXF_ONE);
+}
+
+/* Vis = 0.5 / (nv r(nl) + nl r(nv)), UQ16.16 */
+static inline fxv_u32 fxf_fast_smith_vis(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
+    fxs v = fxs_rcp(fxf_g2_den(nl, nv, fxs_q(fxv_mul32(a, a), 30)));
+    v.n = fxv_add32(v.n, fxv_k32(1));
+    return fxs_fixed(v, FACET_FX_VIS_FRAC, FACET_FX_MAX_VIS);
+}
+
+/* G1(nl) G1(nv) = 4 nl nv / ((nl + r(nl)) (nv + r(nv))) */
+static inline fxv_u32 fxf_fast_smith_g2_uncorrelated(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
+    fxs a2 = fxs_q(fxv_mul32(a, a), 30);
+    fxs dl = fxs_add(fxs_q(nl, 15), fxf_smith_r(nl, a2)), dv = fxs_add(fxs_q(nv, 15), fxf_smith_r(nv, a2));
+    return fxs_fixed(fxs_mul(fxs_q(fxv_mul32(nl, nv), 28), fxs_rcp(fxs_mul(dl, dv))), 15, FXF_ONE);
+}
+
+/* ---- Smith, Hammon ------------------------------------------------------------
+ * G1 ~ 2 n / (n (2 - a) + a): den30 = N (2^16 - A) + A 2^15 exact [<= 2^31]. */
+static inline fxv_u32 fxf_fast_smith_g1_hammon(fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 n = fxf_unit(nov), a = fxf_alpha(alpha);
+    fxv_u32 den = fxv_add32(fxv_mul32(n, fxv_sub32(fxv_k32(65536), a)), fxv_shl(a, 15));
+    return fxs_fixed(fxs_mul(fxs_q(n, 14), fxs_rcp(fxs_q(den, 30))), 15, FXF_ONE);
+}
+
+/* m = (1 - a) 2 nl nv + a (nl + nv): (2^15 - A) and 2 NL NV [Q29 <= 2^30]
+ * as fxs, A S [<= 2^31] Q30. */
+static inline fxs fxf_hammon_m(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxs nlnv2)
+{
+    return fxs_add(fxs_mul(fxs_q(fxv_sub32(fxv_k32(FXF_ONE), a), 15), nlnv2),
+                   fxs_q(fxv_mul32(a, fxv_add32(nl, nv)), 30));
+}
+
+static inline fxv_u32 fxf_fast_smith_g2_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
+    fxs p = fxs_q(fxv_mul32(nl, nv), 29);
+    return fxs_fixed(fxs_mul(p, fxs_rcp(fxf_hammon_m(nl, nv, a, p))), 15, FXF_ONE);
+}
+
+static inline fxv_u32 fxf_fast_smith_vis_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
+    fxs v = fxs_rcp(fxf_hammon_m(nl, nv, a, fxs_q(fxv_mul32(nl, nv), 29)));
+    v.n = fxv_add32(v.n, fxv_k32(1));
+    return fxs_fixed(v, FACET_FX_VIS_FRAC, FACET_FX_MAX_VIS);
+}
+
+/* ---- Hammon's diffuse -----------------------------------------------------------
+ * With t = t_r and L.H = sqrt(t/2) (so sqrt(2t) = 2 L.H):
+ *   rough  = t (4.5 - t) (s + L.H) / (10 s)
+ *   smooth = 1.05 P(nl) P(nv),  P(x) = 1 - (1-x)^5 = x (1 + y + y^2 + y^3 + y^4)
+ *   result = albedo / pi ((1 - a) smooth + a rough + albedo a 0.1159 pi)
+ * P(x): Y = 2^15 - X, y^2, y^3, y^4 Q15 rounded, the sum Q15 [< 5 2^15],
+ * P = X sum Q30 [x sum = P <= 1: <= 2^30] (no cancellation: relative
+ * error ~ 2^-16 even at grazing). */
+#define FXF_C105_M   34406u /* round(1.05 2^15) */
+#define FXF_MULTI_M  47725u /* round(0.1159 pi 2^17) */
+#define FXF_TEN_M    40960u /* 10 = 40960 2^-12 */
+
+static inline fxv_u32 fxf_p5(fxv_u32 x)
+{
+    fxv_u32 y = fxv_sub32(fxv_k32(FXF_ONE), x), h = fxv_k32(1u << 14);
+    fxv_u32 y2 = fxv_shr(fxv_add32(fxv_mul32(y, y), h), 15);
+    fxv_u32 y3 = fxv_shr(fxv_add32(fxv_mul32(y2, y), h), 15);
+    fxv_u32 y4 = fxv_shr(fxv_add32(fxv_mul32(y2, y2), h), 15);
+    fxv_u32 sum = fxv_add32(fxv_add32(fxv_add32(fxv_k32(FXF_ONE), y), y2), fxv_add32(y3, y4));
+    return fxv_mul32(x, sum);
+}
+
+static inline fxs fxf_diffuse(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 alb, fxf_dots g, fxf_root lh)
+{
+    fxs t = fxs_q(g.c, 31); /* t_r = c 2^-31 */
+    fxs t45 = fxs_q(fxv_sub32(fxv_k32(9u << 28), fxv_shr(g.c, 2)), 29); /* 4.5 - t [>= 2.5] */
+    fxs lhs, s = fxs_q(g.s, 15), rough, smooth, single, multi;
+    lhs.m = lh.s;
+    lhs.n = fxv_add32(lh.h, fxv_k32(528)); /* L.H = s 2^-(16 + h) */
+    rough = fxs_mul(fxs_mul(t, t45), fxs_mul(fxs_add(s, lhs), fxs_rcp(fxs_mul(s, fxs_k(FXF_TEN_M, 12)))));
+    smooth = fxs_mul(fxs_mul(fxs_q(fxf_p5(nl), 30), fxs_q(fxf_p5(nv), 30)), fxs_k(FXF_C105_M, 15));
+    single = fxs_add(fxs_mul(fxs_q(fxv_sub32(fxv_k32(FXF_ONE), a), 15), smooth), fxs_mul(fxs_q(a, 15), rough));
+    multi = fxs_mul(fxs_q(fxv_mul32(alb, a), 30), fxs_k(FXF_MULTI_M, 17));
+    return fxs_mul(fxs_mul(fxs_q(alb, 15), fxs_k(FXF_INV_PI_M, 17)), fxs_add(single, multi));
+}
+
+static inline fxv_u32 fxf_fast_diffuse_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
+                                              fxv_i32 albedo)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov);
+    fxf_dots g = fxf_dots_of(nl, nv, lov);
+    return fxs_fixed(fxf_diffuse(nl, nv, fxf_alpha(alpha), fxf_unit(albedo), g, fxf_sqrt32(g.c)),
+                     FACET_FX_BRDF_FRAC, FACET_FX_MAX_DIFF);
+}
+
+/* ---- the whole model ------------------------------------------------------------
+ * spec = (a 2t)^2 F / (2 pi e^2 m), e = w + a^2 s^2 (facet/fx.h, fx_kernels.c):
+ *   1 - L.H = (1 - c 2^-32) / (1 + L.H) = u 2^-32 / (1 + L.H), 1 + L.H in
+ *   Q15 is already a normalised mantissa [2^15, 2^16); y^5 as fxs (no floor
+ *   on its range: F keeps its relative precision down to f0 = 0, L = V);
+ *   a 2t = A 2^-15 c 2^-30.  brdf = spec + diffuse added as fxs, one
+ *   rounding to UQ40.24: raw = m 2^(512 + 24 - n) [< 2^57], a left shift
+ *   of up to 41 done as m 2^k2 times 2^k1 (one 32x32->64 product). */
+#define FXF_TWO_PI_M 51472u /* round(2 pi 2^13) */
+
+static inline fxv_u64 fxs_fixed64(fxs a, unsigned f)
+{
+    fxv_u32 thr = fxv_k32(513u + f), right = fxv_lt(a.n, thr);
+    fxv_u32 kr = fxv_min(fxv_sub32(fxv_max(a.n, thr), thr), fxv_k32(31));
+    fxv_u32 kl = fxv_min(fxv_sub32(fxv_k32(512u + f), fxv_min(a.n, fxv_k32(512u + f))), fxv_k32(41));
+    fxv_u32 k1 = fxv_min(kl, fxv_k32(31)), k2 = fxv_sub32(kl, k1);
+    fxv_u32 vr = fxv_shr(fxv_add32(fxv_shrv(a.m, kr), fxv_k32(1)), 1);
+    fxv_u32 m = fxv_sel(right, fxv_shlv(a.m, k2), vr);
+    return fxv_mulw(m, fxv_sel(right, fxv_shlv(fxv_k32(1), k1), fxv_k32(1)));
+}
+
+static inline fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
+                                           fxv_i32 f0_in, fxv_i32 albedo)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha), f0 = fxf_unit(f0_in);
+    fxf_dots g = fxf_dots_of(nl, nv, lov);
+    fxf_root lh = fxf_sqrt32(g.c);
+    fxs opl, y, y2, f, as, e, m, a2t, num, den;
+    opl.m = fxv_add32(fxv_k32(FXF_ONE), fxv_shr(fxv_shrv(lh.s, lh.h), 1)); /* (1 + L.H) 2^15 */
+    opl.n = fxv_k32(527);
+    y = fxs_mul(fxs_q(g.u, 32), fxs_rcp(opl));
+    y2 = fxs_mul(y, y);
+    f = fxs_add(fxs_q(f0, 15), fxs_mul(fxs_q(fxv_sub32(fxv_k32(FXF_ONE), f0), 15),
+                                       fxs_mul(fxs_mul(y2, y2), y)));
+    as = fxs_q(fxv_mul32(a, g.s), 30);
+    e = fxs_add(fxs_q(g.w, 30), fxs_mul(as, as));
+    m = fxs_add(fxs_mul(fxs_q(fxv_sub32(fxv_k32(FXF_ONE), a), 15), fxs_q(fxv_mul32(nl, nv), 29)), as);
+    a2t = fxs_mul(fxs_q(a, 15), fxs_q(g.c, 30));
+    num = fxs_mul(fxs_mul(a2t, a2t), f);
+    den = fxs_mul(fxs_mul(fxs_mul(e, e), m), fxs_k(FXF_TWO_PI_M, 13));
+    return fxs_fixed64(fxs_add(fxs_mul(num, fxs_rcp(den)),
+                               fxf_diffuse(nl, nv, a, fxf_unit(albedo), g, lh)),
+                       FACET_FX_BRDF_FRAC);
+}
+
+#endif
