@@ -33,7 +33,7 @@
  *   fxv_min(a, b) fxv_max(a, b)    unsigned minimum / maximum
  *   fxv_lt(a, b)               all ones where a < b (unsigned), else 0
  *   fxv_sel(m, a, b)           a where the mask m is all ones, else b
- *   fxv_and(a, b) fxv_not(a)   bitwise and, complement
+ *   fxv_and fxv_or fxv_not     bitwise and, or, complement
  *   fxv_clamp_off(x, lo, hi)   min(max(x, lo), hi) - lo as fxv_u32 (lo may be < 0)
  *   fxv_lut(t, i)              t[i], t a const uint32_t table, i in range
  * Every op is exact on the stated range; no op rounds, wraps or saturates

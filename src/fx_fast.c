@@ -3,6 +3,7 @@
  * specification every port of the tier reproduces bit for bit. */
 #include "facet/fx.h"
 #include "fx_ops_scalar.h"
+#include "fx_body.h" /* fxb_rshr64 */
 #include "fx_fast_body.h"
 
 int32_t facet_noh_from_dots_fx_fast(int32_t nol, int32_t nov, int32_t lov)

@@ -25,6 +25,13 @@
 
 #define FXF_ONE 32768u
 
+/* the bodies are meant to be one straight-line sequence per kernel */
+#if defined(__GNUC__)
+#define FXF_INLINE static inline __attribute__((always_inline))
+#else
+#define FXF_INLINE static inline
+#endif
+
 /* 1 / x on [1, 2): FXF_RCP[i] = round(2^31 / (2^15 + 2^8 i)), i = 0..128,
  * the first (65536) held at 65535 so every result is below 2^16 */
 static const uint32_t fxf_rcp_tab[129] = {
@@ -41,7 +48,8 @@ static const uint32_t fxf_rcp_tab[129] = {
     33825, 33689, 33554, 33421, 33288, 33157, 33026, 32897, 32768,
 };
 
-/* sqrt on [1/4, 1]: FXF_SQRT[j] = round(2^16 sqrt((32 + j) / 128)), j = 0..96 */
+/* sqrt on [1/4, 1]: FXF_SQRT[j] = round(2^16 sqrt((32 + j) / 128)), j = 0..96,
+ * the last (65536) held at 65535 so every result is below 2^16 */
 static const uint32_t fxf_sqrt_tab[97] = {
     32768, 33276, 33776, 34270, 34756, 35235, 35708, 36175, 36636, 37091, 37540, 37985,
     38424, 38858, 39287, 39712, 40132, 40548, 40960, 41368, 41771, 42171, 42567, 42959,
@@ -51,26 +59,35 @@ static const uint32_t fxf_sqrt_tab[97] = {
     55561, 55862, 56162, 56459, 56756, 57051, 57344, 57636, 57926, 58215, 58503, 58789,
     59073, 59357, 59639, 59919, 60199, 60477, 60753, 61029, 61303, 61576, 61848, 62119,
     62388, 62657, 62924, 63190, 63455, 63719, 63982, 64243, 64504, 64763, 65022, 65279,
-    65536,
+    65535,
 };
 
 /* r ~ 2^31 / m for m in [2^15, 2^16): r in [2^15, 2^16).  Interpolation
  * error <= 2^-16 (h^2/8 max|f''| with h = 2^-7), table rounding and the
  * truncated step 2^-16 each. [(R[i] - R[i+1]) < 2^10, frac < 2^8] */
-static inline fxv_u32 fxf_rcp16(fxv_u32 m)
+FXF_INLINE fxv_u32 fxf_rcp16(fxv_u32 m)
 {
     fxv_u32 i = fxv_sub32(fxv_shr(m, 8), fxv_k32(128)), f = fxv_and(m, fxv_k32(255));
     fxv_u32 r0 = fxv_lut(fxf_rcp_tab, i), r1 = fxv_lut(fxf_rcp_tab, fxv_add32(i, fxv_k32(1)));
     return fxv_sub32(r0, fxv_shr(fxv_add32(fxv_mul32(fxv_sub32(r0, r1), f), fxv_k32(128)), 8));
 }
 
-/* s ~ 2^16 sqrt(x / 2^32) for x in [2^30, 2^32): s in [2^15, 2^16).
- * Error <= 2^-15 relative. [(S[j+1] - S[j]) < 2^9, frac < 2^8] */
-static inline fxv_u32 fxf_sqrt16(fxv_u32 x)
+/* the same from a 32-bit mantissa m in [2^31, 2^32): r ~ 2^47 / m, the 15
+ * bits below the index interpolate [(R[i] - R[i+1]) f < 2^10 2^15] */
+FXF_INLINE fxv_u32 fxf_rcp32(fxv_u32 m)
 {
-    fxv_u32 j = fxv_sub32(fxv_shr(x, 25), fxv_k32(32)), f = fxv_and(fxv_shr(x, 17), fxv_k32(255));
+    fxv_u32 i = fxv_sub32(fxv_shr(m, 24), fxv_k32(128)), f = fxv_and(fxv_shr(m, 9), fxv_k32(0x7FFF));
+    fxv_u32 r0 = fxv_lut(fxf_rcp_tab, i), r1 = fxv_lut(fxf_rcp_tab, fxv_add32(i, fxv_k32(1)));
+    return fxv_sub32(r0, fxv_shr(fxv_add32(fxv_mul32(fxv_sub32(r0, r1), f), fxv_k32(1u << 14)), 15));
+}
+
+/* s ~ 2^16 sqrt(x / 2^32) for x in [2^30, 2^32): s in [2^15, 2^16).
+ * The 15 bits below the index interpolate. [(S[j+1] - S[j]) < 2^9, f < 2^15] */
+FXF_INLINE fxv_u32 fxf_sqrt16(fxv_u32 x)
+{
+    fxv_u32 j = fxv_sub32(fxv_shr(x, 25), fxv_k32(32)), f = fxv_and(fxv_shr(x, 10), fxv_k32(0x7FFF));
     fxv_u32 s0 = fxv_lut(fxf_sqrt_tab, j), s1 = fxv_lut(fxf_sqrt_tab, fxv_add32(j, fxv_k32(1)));
-    return fxv_add32(s0, fxv_shr(fxv_add32(fxv_mul32(fxv_sub32(s1, s0), f), fxv_k32(128)), 8));
+    return fxv_add32(s0, fxv_shr(fxv_add32(fxv_mul32(fxv_sub32(s1, s0), f), fxv_k32(1u << 14)), 15));
 }
 
 /* ---- fxs: m 2^(512 - n), m in [2^15, 2^16) or m = 0 (then n >= 1024) ---- */
@@ -80,7 +97,7 @@ typedef struct { fxv_u32 m, n; } fxs;
 
 /* x 2^-f of a 32-bit x (0 allowed): m = floor(x 2^k / 2^16), k = clz(x),
  * n = 496 + k + f.  Truncation <= 2^-15 relative. */
-static inline fxs fxs_q(fxv_u32 x, unsigned f)
+FXF_INLINE fxs fxs_q(fxv_u32 x, unsigned f)
 {
     fxs r;
     fxv_u32 k = fxv_clz(x), z = fxv_lt(x, fxv_k32(1));
@@ -90,7 +107,7 @@ static inline fxs fxs_q(fxv_u32 x, unsigned f)
 }
 
 /* a constant: m in [2^15, 2^16), value m 2^-f */
-static inline fxs fxs_k(uint32_t m, unsigned f)
+FXF_INLINE fxs fxs_k(uint32_t m, unsigned f)
 {
     fxs r;
     r.m = fxv_k32(m);
@@ -100,7 +117,7 @@ static inline fxs fxs_k(uint32_t m, unsigned f)
 
 /* a b: p = ma mb in [2^30, 2^32), h = its bit 31, m = p >> (15 + h).
  * Truncation <= 2^-15 relative.  A zero stays zero (n >= 1024). */
-static inline fxs fxs_mul(fxs a, fxs b)
+FXF_INLINE fxs fxs_mul(fxs a, fxs b)
 {
     fxs r;
     fxv_u32 p = fxv_mul32(a.m, b.m), h = fxv_shr(p, 31);
@@ -111,7 +128,7 @@ static inline fxs fxs_mul(fxs a, fxs b)
 
 /* a + b, both >= 0: the smaller aligned to the larger (truncated), one
  * renormalisation bit.  [mb + (ms >> d) < 2^17] */
-static inline fxs fxs_add(fxs a, fxs b)
+FXF_INLINE fxs fxs_add(fxs a, fxs b)
 {
     fxs r;
     fxv_u32 bb = fxv_lt(b.n, a.n); /* b the larger */
@@ -124,7 +141,7 @@ static inline fxs fxs_add(fxs a, fxs b)
 }
 
 /* 1 / a, a > 0: 2^(n - 512) / m = r 2^-31 2^(n - 512), n' = 1055 - n */
-static inline fxs fxs_rcp(fxs a)
+FXF_INLINE fxs fxs_rcp(fxs a)
 {
     fxs r;
     r.m = fxf_rcp16(a.m);
@@ -134,7 +151,7 @@ static inline fxs fxs_rcp(fxs a)
 
 /* sqrt(a), a > 0: m 2^(16 - (n & 1)) is in [2^30, 2^32) (the exponent made
  * even), n' = 264 + floor(n / 2). */
-static inline fxs fxs_sqrt(fxs a)
+FXF_INLINE fxs fxs_sqrt(fxs a)
 {
     fxs r;
     fxv_u32 odd = fxv_and(a.n, fxv_k32(1));
@@ -144,7 +161,7 @@ static inline fxs fxs_sqrt(fxs a)
 }
 
 /* round(a 2^f) (ties up), saturated at max (a 32-bit output) */
-static inline fxv_u32 fxs_fixed(fxs a, unsigned f, uint32_t max)
+FXF_INLINE fxv_u32 fxs_fixed(fxs a, unsigned f, uint32_t max)
 {
     /* right: k = n - 512 - f >= 1: ((m >> (k - 1)) + 1) >> 1;
      * left:  k <= 0: m << -k, -k <= 16 [m << 16 < 2^32], else saturate */
@@ -160,9 +177,9 @@ static inline fxv_u32 fxs_fixed(fxs a, unsigned f, uint32_t max)
 
 /* ---- shared pieces ---------------------------------------------------------- */
 /* the two-cosine clamp and S = NL + NV in [256, 2^16] */
-static inline fxv_u32 fxf_cos(fxv_i32 x) { return fxv_clamp(x, FACET_FX_COS_MIN, FACET_FX_ONE); }
-static inline fxv_u32 fxf_unit(fxv_i32 x) { return fxv_clamp(x, 0, FACET_FX_ONE); }
-static inline fxv_u32 fxf_alpha(fxv_i32 x) { return fxv_clamp(x, FACET_FX_ALPHA_MIN, FACET_FX_ONE); }
+FXF_INLINE fxv_u32 fxf_cos(fxv_i32 x) { return fxv_clamp(x, FACET_FX_COS_MIN, FACET_FX_ONE); }
+FXF_INLINE fxv_u32 fxf_unit(fxv_i32 x) { return fxv_clamp(x, 0, FACET_FX_ONE); }
+FXF_INLINE fxv_u32 fxf_alpha(fxv_i32 x) { return fxv_clamp(x, FACET_FX_ALPHA_MIN, FACET_FX_ONE); }
 
 /* The dot triple.  With S = NL + NV and lov clamped to [-32767, 32768]
  * (L.V = -1 and -1 + 2^-15 give the same raised t: s^2/2 >= 2^-15):
@@ -176,7 +193,7 @@ static inline fxv_u32 fxf_alpha(fxv_i32 x) { return fxv_clamp(x, FACET_FX_ALPHA_
  *                               [c >= 2^16 - 1: t_r >= s^2/2 >= 2^-15] */
 typedef struct { fxv_u32 s, u, w, c; } fxf_dots;
 
-static inline fxf_dots fxf_dots_of(fxv_u32 nl, fxv_u32 nv, fxv_i32 lov)
+FXF_INLINE fxf_dots fxf_dots_of(fxv_u32 nl, fxv_u32 nv, fxv_i32 lov)
 {
     fxf_dots g;
     fxv_u32 t = fxv_clamp_off(lov, -FACET_FX_ONE + 1, FACET_FX_ONE); /* LOV + 32767 */
@@ -194,7 +211,7 @@ static inline fxf_dots fxf_dots_of(fxv_u32 nl, fxv_u32 nv, fxv_i32 lov)
  * [h <= 8], the table: sqrt = s 2^-(16 + h), s in [2^15, 2^16) */
 typedef struct { fxv_u32 s, h; } fxf_root;
 
-static inline fxf_root fxf_sqrt32(fxv_u32 c)
+FXF_INLINE fxf_root fxf_sqrt32(fxv_u32 c)
 {
     fxf_root r;
     fxv_u32 k = fxv_and(fxv_clz(c), fxv_k32(30));
@@ -206,7 +223,7 @@ static inline fxf_root fxf_sqrt32(fxv_u32 c)
 /* ---- loh_from_dots ------------------------------------------------------------
  * L.H = sqrt(T / 2^16), T = 2^15 + LOV: c = T 2^16 - 1 (exact for T >= 1,
  * [(T - 1) 2^16 <= 2^32 - 2^16]), raw = round(s / 2^(1 + h)); T = 0 gives 0. */
-static inline fxv_u32 fxf_fast_loh_from_dots(fxv_i32 lov)
+FXF_INLINE fxv_u32 fxf_fast_loh_from_dots(fxv_i32 lov)
 {
     fxv_u32 t = fxv_clamp_off(lov, -FACET_FX_ONE, FACET_FX_ONE);
     fxv_u32 c = fxv_add32(fxv_shl(fxv_sub32(fxv_max(t, fxv_k32(1)), fxv_k32(1)), 16), fxv_k32(0xFFFF));
@@ -219,7 +236,7 @@ static inline fxv_u32 fxf_fast_loh_from_dots(fxv_i32 lov)
  * N.H = s / sqrt(2 t_r) = s / (2 L.H) = S 2^h / s_c; with r = rcp16(s_c)
  * ~ 2^31 / s_c: raw = round(S r / 2^(16 - h)) [S r < 2^16 2^16], at most
  * 2^15; w = 0 (at or past N.H = 1) gives 2^15. */
-static inline fxv_u32 fxf_fast_noh_from_dots(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov)
+FXF_INLINE fxv_u32 fxf_fast_noh_from_dots(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov)
 {
     fxf_dots g = fxf_dots_of(fxf_cos(nol), fxf_cos(nov), lov);
     fxf_root r = fxf_sqrt32(g.c);
@@ -239,7 +256,7 @@ static inline fxv_u32 fxf_fast_noh_from_dots(fxv_i32 nol, fxv_i32 nov, fxv_i32 l
  *   raw = round(F31 / 2^16).
  * F(f0, 1) = f0 and F(f0, 0) = 1 exactly.  Error: rounding steps of
  * <= 2^-17 each, scaled by y^k < 1, and the final rounding. */
-static inline fxv_u32 fxf_fast_fresnel_schlick(fxv_i32 f0_in, fxv_i32 cos_in)
+FXF_INLINE fxv_u32 fxf_fast_fresnel_schlick(fxv_i32 f0_in, fxv_i32 cos_in)
 {
     fxv_u32 f0 = fxf_unit(f0_in), y = fxv_sub32(fxv_k32(FXF_ONE), fxf_unit(cos_in));
     fxv_u32 z1 = fxv_shr(fxv_add32(fxv_mul32(y, y), fxv_k32(1u << 13)), 14);
@@ -255,7 +272,7 @@ static inline fxv_u32 fxf_fast_fresnel_schlick(fxv_i32 f0_in, fxv_i32 cos_in)
  * Q30 exact [<= 2^30], squared as fxs; D = (a / d)^2 / pi. */
 #define FXF_INV_PI_M 41722u /* round(2^17 / pi), value 2^-17 m */
 
-static inline fxv_u32 fxf_fast_ggx_d(fxv_i32 noh, fxv_i32 alpha)
+FXF_INLINE fxv_u32 fxf_fast_ggx_d(fxv_i32 noh, fxv_i32 alpha)
 {
     fxv_u32 n = fxf_unit(noh), a = fxf_alpha(alpha);
     fxs na = fxs_q(fxv_mul32(n, a), 30);
@@ -268,14 +285,14 @@ static inline fxv_u32 fxf_fast_ggx_d(fxv_i32 noh, fxv_i32 alpha)
 /* ---- Smith, exact ------------------------------------------------------------
  * r(x) = sqrt(a^2 (1 - x)(1 + x) + x^2): A^2 [<= 2^30] and (2^15 - X)(2^15 + X)
  * [<= 2^30] as fxs, X^2 Q30 exact. */
-static inline fxs fxf_smith_r(fxv_u32 x, fxs a2)
+FXF_INLINE fxs fxf_smith_r(fxv_u32 x, fxs a2)
 {
     fxs t = fxs_mul(a2, fxs_q(fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), x), fxv_add32(fxv_k32(FXF_ONE), x)), 30));
     return fxs_sqrt(fxs_add(t, fxs_q(fxv_mul32(x, x), 30)));
 }
 
 /* G1 = 2 n / (n + r(n)) */
-static inline fxv_u32 fxf_fast_smith_g1(fxv_i32 nov, fxv_i32 alpha)
+FXF_INLINE fxv_u32 fxf_fast_smith_g1(fxv_i32 nov, fxv_i32 alpha)
 {
     fxv_u32 n = fxf_unit(nov), a = fxf_alpha(alpha);
     fxs den = fxs_add(fxs_q(n, 15), fxf_smith_r(n, fxs_q(fxv_mul32(a, a), 30)));
@@ -283,13 +300,13 @@ static inline fxv_u32 fxf_fast_smith_g1(fxv_i32 nov, fxv_i32 alpha)
 }
 
 /* nv r(nl) + nl r(nv) */
-static inline fxs fxf_g2_den(fxv_u32 nl, fxv_u32 nv, fxs a2)
+FXF_INLINE fxs fxf_g2_den(fxv_u32 nl, fxv_u32 nv, fxs a2)
 {
     return fxs_add(fxs_mul(fxs_q(nv, 15), fxf_smith_r(nl, a2)), fxs_mul(fxs_q(nl, 15), fxf_smith_r(nv, a2)));
 }
 
 /* G2 = 2 nl nv / (nv r(nl) + nl r(nv)) [NL NV <= 2^30] */
-static inline fxv_u32 fxf_fast_smith_g2(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+FXF_INLINE fxv_u32 fxf_fast_smith_g2(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
 {
     fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
     fxs den = fxf_g2_den(nl, nv, fxs_q(fxv_mul32(a, a), 30));
@@ -297,7 +314,7 @@ static inline fxv_u32 fxf_fast_smith_g2(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
 }
 
 /* Vis = 0.5 / (nv r(nl) + nl r(nv)), UQ16.16 */
-static inline fxv_u32 fxf_fast_smith_vis(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+FXF_INLINE fxv_u32 fxf_fast_smith_vis(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
 {
     fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
     fxs v = fxs_rcp(fxf_g2_den(nl, nv, fxs_q(fxv_mul32(a, a), 30)));
@@ -306,7 +323,7 @@ static inline fxv_u32 fxf_fast_smith_vis(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha
 }
 
 /* G1(nl) G1(nv) = 4 nl nv / ((nl + r(nl)) (nv + r(nv))) */
-static inline fxv_u32 fxf_fast_smith_g2_uncorrelated(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+FXF_INLINE fxv_u32 fxf_fast_smith_g2_uncorrelated(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
 {
     fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
     fxs a2 = fxs_q(fxv_mul32(a, a), 30);
@@ -316,7 +333,7 @@ static inline fxv_u32 fxf_fast_smith_g2_uncorrelated(fxv_i32 nol, fxv_i32 nov, f
 
 /* ---- Smith, Hammon ------------------------------------------------------------
  * G1 ~ 2 n / (n (2 - a) + a): den30 = N (2^16 - A) + A 2^15 exact [<= 2^31]. */
-static inline fxv_u32 fxf_fast_smith_g1_hammon(fxv_i32 nov, fxv_i32 alpha)
+FXF_INLINE fxv_u32 fxf_fast_smith_g1_hammon(fxv_i32 nov, fxv_i32 alpha)
 {
     fxv_u32 n = fxf_unit(nov), a = fxf_alpha(alpha);
     fxv_u32 den = fxv_add32(fxv_mul32(n, fxv_sub32(fxv_k32(65536), a)), fxv_shl(a, 15));
@@ -325,20 +342,20 @@ static inline fxv_u32 fxf_fast_smith_g1_hammon(fxv_i32 nov, fxv_i32 alpha)
 
 /* m = (1 - a) 2 nl nv + a (nl + nv): (2^15 - A) and 2 NL NV [Q29 <= 2^30]
  * as fxs, A S [<= 2^31] Q30. */
-static inline fxs fxf_hammon_m(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxs nlnv2)
+FXF_INLINE fxs fxf_hammon_m(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxs nlnv2)
 {
     return fxs_add(fxs_mul(fxs_q(fxv_sub32(fxv_k32(FXF_ONE), a), 15), nlnv2),
                    fxs_q(fxv_mul32(a, fxv_add32(nl, nv)), 30));
 }
 
-static inline fxv_u32 fxf_fast_smith_g2_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+FXF_INLINE fxv_u32 fxf_fast_smith_g2_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
 {
     fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
     fxs p = fxs_q(fxv_mul32(nl, nv), 29);
     return fxs_fixed(fxs_mul(p, fxs_rcp(fxf_hammon_m(nl, nv, a, p))), 15, FXF_ONE);
 }
 
-static inline fxv_u32 fxf_fast_smith_vis_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+FXF_INLINE fxv_u32 fxf_fast_smith_vis_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
 {
     fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
     fxs v = fxs_rcp(fxf_hammon_m(nl, nv, a, fxs_q(fxv_mul32(nl, nv), 29)));
@@ -346,19 +363,19 @@ static inline fxv_u32 fxf_fast_smith_vis_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i3
     return fxs_fixed(v, FACET_FX_VIS_FRAC, FACET_FX_MAX_VIS);
 }
 
-/* ---- Hammon's diffuse -----------------------------------------------------------
- * With t = t_r and L.H = sqrt(t/2) (so sqrt(2t) = 2 L.H):
- *   rough  = t (4.5 - t) (s + L.H) / (10 s)
- *   smooth = 1.05 P(nl) P(nv),  P(x) = 1 - (1-x)^5 = x (1 + y + y^2 + y^3 + y^4)
- *   result = albedo / pi ((1 - a) smooth + a rough + albedo a 0.1159 pi)
- * P(x): Y = 2^15 - X, y^2, y^3, y^4 Q15 rounded, the sum Q15 [< 5 2^15],
- * P = X sum Q30 [x sum = P <= 1: <= 2^30] (no cancellation: relative
- * error ~ 2^-16 even at grazing). */
-#define FXF_C105_M   34406u /* round(1.05 2^15) */
-#define FXF_MULTI_M  47725u /* round(0.1159 pi 2^17) */
-#define FXF_TEN_M    40960u /* 10 = 40960 2^-12 */
+/* ---- Hammon's diffuse and the whole model: 32-bit fixed stages -----------------
+ * Here every stage is a 32-bit value x with a scale 2^-E, E a compile-time
+ * constant or an exponent lane; a product is the high word of one 32x32->64
+ * multiply (fxw_mulhi, one UMULL on Cortex-M3/M4), and a chain of such
+ * products needs no renormalisation as long as each factor keeps >= 2^21
+ * (the bounds in brackets); clz-normalisations only where a range is wide.
+ * Truncations are absolute (<= 2^-E) and small against the bound. */
+FXF_INLINE fxv_u32 fxw_mulhi(fxv_u32 a, fxv_u32 b) { return fxv_hi(fxv_mulw(a, b)); }
 
-static inline fxv_u32 fxf_p5(fxv_u32 x)
+/* 1 - (1 - x)^5 = x (1 + y + y^2 + y^3 + y^4), y = 1 - x: Y = 2^15 - X, y^2,
+ * y^3, y^4 Q15 rounded, the sum Q15 [< 5 2^15], P = X sum Q30 [= x sum 2^30
+ * <= 2^30] (no cancellation: relative error ~ 2^-14.4 even at grazing). */
+FXF_INLINE fxv_u32 fxf_p5(fxv_u32 x)
 {
     fxv_u32 y = fxv_sub32(fxv_k32(FXF_ONE), x), h = fxv_k32(1u << 14);
     fxv_u32 y2 = fxv_shr(fxv_add32(fxv_mul32(y, y), h), 15);
@@ -368,72 +385,142 @@ static inline fxv_u32 fxf_p5(fxv_u32 x)
     return fxv_mul32(x, sum);
 }
 
-static inline fxs fxf_diffuse(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 alb, fxf_dots g, fxf_root lh)
+#define FXW_C105     34406u      /* round(1.05 2^15) */
+#define FXW_TENTH    52429u      /* round(2^19 / 10) */
+#define FXW_MULTI    1563843070u /* round(0.1159 pi 2^32) */
+#define FXW_INV_PI   83443u      /* round(2^18 / pi) */
+#define FXW_INV_2PI  683565276u  /* round(2^32 / (2 pi)) */
+
+/* The diffuse bracket B = (1 - a) 1.05 P(nl) P(nv) + a rough + albedo a
+ * 0.1159 pi in Q25 [B <= 64.9: < 2^31.02], times albedo / pi: Q25 [<= 20.65].
+ * With t = t_r = x 2^-(31 + k) (x = c 2^k in [2^30, 2^32), the sqrt's
+ * normalised c) and L.H = ls 2^-(16 + h):
+ *   rough = t (4.5 - t) / 10 (1 + L.H / s)
+ *   t (4.5 - t) = mh 2^-(28 + k), mh = hi(x t45), t45 = (4.5 - t) Q29
+ *                 [2.5 2^29 .. 4.5 2^29; mh >= 2^28.3]
+ *   1 / s = rS 2^(kS - 32), kS = clz(S) in [15, 23], rS = rcp16(S 2^kS / 2^16)
+ *   q = 1 + L.H / s  Q24 = 2^24 + (ls rS) >> (24 + h - kS)  [shift 1..17;
+ *                 L.H / s <= 128: q < 2^31.01]
+ *   a rough = x2 2^-(23 + k), x2 = hi(hi(mh q) (A 2^19/10) 2), to Q25.
+ * Each term's relative error <= 2^-13.4 (the P sums), its truncations
+ * <= 2^-25 absolute: below the output's LSB (2^-24) even at albedo = 1. */
+FXF_INLINE fxv_u32 fxw_diffuse26(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 alb, fxv_u32 s,
+                                    fxv_u32 c, fxv_u32 x, fxv_u32 k, fxf_root lh)
 {
-    fxs t = fxs_q(g.c, 31); /* t_r = c 2^-31 */
-    fxs t45 = fxs_q(fxv_sub32(fxv_k32(9u << 28), fxv_shr(g.c, 2)), 29); /* 4.5 - t [>= 2.5] */
-    fxs lhs, s = fxs_q(g.s, 15), rough, smooth, single, multi;
-    lhs.m = lh.s;
-    lhs.n = fxv_add32(lh.h, fxv_k32(528)); /* L.H = s 2^-(16 + h) */
-    rough = fxs_mul(fxs_mul(t, t45), fxs_mul(fxs_add(s, lhs), fxs_rcp(fxs_mul(s, fxs_k(FXF_TEN_M, 12)))));
-    smooth = fxs_mul(fxs_mul(fxs_q(fxf_p5(nl), 30), fxs_q(fxf_p5(nv), 30)), fxs_k(FXF_C105_M, 15));
-    single = fxs_add(fxs_mul(fxs_q(fxv_sub32(fxv_k32(FXF_ONE), a), 15), smooth), fxs_mul(fxs_q(a, 15), rough));
-    multi = fxs_mul(fxs_q(fxv_mul32(alb, a), 30), fxs_k(FXF_MULTI_M, 17));
-    return fxs_mul(fxs_mul(fxs_q(alb, 15), fxs_k(FXF_INV_PI_M, 17)), fxs_add(single, multi));
+    fxv_u32 pp = fxw_mulhi(fxv_shl(fxf_p5(nl), 1), fxv_shl(fxf_p5(nv), 1));          /* Q30 */
+    fxv_u32 k1 = fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), a), fxv_k32(FXW_C105));       /* Q30 <= 2^30.07 */
+    fxv_u32 smooth = fxw_mulhi(pp, fxv_shl(k1, 1));                                   /* Q29 */
+    fxv_u32 t45 = fxv_sub32(fxv_k32(9u << 28), fxv_shr(c, 2));                       /* Q29 */
+    fxv_u32 mh = fxw_mulhi(x, t45);
+    fxv_u32 ks = fxv_clz(s), rs = fxf_rcp32(fxv_shlv(s, ks));
+    fxv_u32 q = fxv_add32(fxv_k32(1u << 24),
+                          fxv_shrv(fxv_mul32(lh.s, rs), fxv_sub32(fxv_add32(lh.h, fxv_k32(24)), ks)));
+    /* a t (4.5 - t) / 10 = x1 2^-(31 + k) [A 2^19/10 2 < 2^31.7; x1 <= 2^30:
+     * t (4.5 - t) / 10 <= 1/2], doubled; a rough = x2 2^-(24 + k) */
+    fxv_u32 x1 = fxw_mulhi(mh, fxv_shl(fxv_mul32(a, fxv_k32(FXW_TENTH)), 1));
+    fxv_u32 x2 = fxw_mulhi(fxv_shl(x1, 1), q);
+    /* to Q25: x2 2^(1 - k), k even: k = 0 a left shift by 1 [a rough <= 64.5:
+     * x2 < 2^30.01], else right by k - 1; + half of the last step */
+    fxv_u32 rough = fxv_sel(fxv_lt(k, fxv_k32(1)), fxv_shl(x2, 1),
+                            fxv_shrv(x2, fxv_sub32(fxv_max(k, fxv_k32(1)), fxv_k32(1))));
+    fxv_u32 multi = fxw_mulhi(fxv_shl(fxv_mul32(alb, a), 1), fxv_k32(FXW_MULTI));    /* Q31 */
+    fxv_u32 b = fxv_add32(fxv_add32(fxv_shr(fxv_add32(smooth, fxv_k32(8)), 4), rough),
+                          fxv_shr(fxv_add32(multi, fxv_k32(33)), 6)); /* the 1 of 33: rough's half unit */
+    return fxw_mulhi(b, fxv_mul32(alb, fxv_k32(FXW_INV_PI)));                         /* alb/pi Q33 -> Q26 */
 }
 
-static inline fxv_u32 fxf_fast_diffuse_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
+FXF_INLINE fxv_u32 fxf_fast_diffuse_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
                                               fxv_i32 albedo)
 {
     fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov);
     fxf_dots g = fxf_dots_of(nl, nv, lov);
-    return fxs_fixed(fxf_diffuse(nl, nv, fxf_alpha(alpha), fxf_unit(albedo), g, fxf_sqrt32(g.c)),
-                     FACET_FX_BRDF_FRAC, FACET_FX_MAX_DIFF);
+    fxf_root lh = fxf_sqrt32(g.c);
+    fxv_u32 k = fxv_shl(lh.h, 1);
+    fxv_u32 d = fxw_diffuse26(nl, nv, fxf_alpha(alpha), fxf_unit(albedo), g.s, g.c, fxv_shlv(g.c, k), k, lh);
+    return fxv_shr(fxv_add32(d, fxv_k32(2)), 2);
+}
+
+/* the top 32 bits of a 64-bit x with x < 2^63 and x >= 2^26, normalised:
+ * top in [2^31, 2^32), x ~ top 2^(32 - e) (truncated, <= 2^-25 relative) */
+FXF_INLINE fxv_u32 fxw_top(fxv_u64 v, fxv_u32 *e)
+{
+    fxv_u32 hi = fxv_hi(v), kk = fxv_min(fxv_clz(hi), fxv_k32(31));   /* kk in [1, 31] */
+    fxv_u32 top = fxv_or(fxv_shlv(hi, kk), fxv_shrv(fxv_lo(v), fxv_sub32(fxv_k32(32), kk)));
+    fxv_u32 k2 = fxv_clz(top);                                         /* top >= 2^25: k2 <= 6 */
+    *e = fxv_add32(kk, k2);
+    return fxv_shlv(top, k2);
 }
 
 /* ---- the whole model ------------------------------------------------------------
- * spec = (a 2t)^2 F / (2 pi e^2 m), e = w + a^2 s^2 (facet/fx.h, fx_kernels.c):
- *   1 - L.H = (1 - c 2^-32) / (1 + L.H) = u 2^-32 / (1 + L.H), 1 + L.H in
- *   Q15 is already a normalised mantissa [2^15, 2^16); y^5 as fxs (no floor
- *   on its range: F keeps its relative precision down to f0 = 0, L = V);
- *   a 2t = A 2^-15 c 2^-30.  brdf = spec + diffuse added as fxs, one
- *   rounding to UQ40.24: raw = m 2^(512 + 24 - n) [< 2^57], a left shift
- *   of up to 41 done as m 2^k2 times 2^k1 (one 32x32->64 product). */
-#define FXF_TWO_PI_M 51472u /* round(2 pi 2^13) */
-
-static inline fxv_u64 fxs_fixed64(fxs a, unsigned f)
-{
-    fxv_u32 thr = fxv_k32(513u + f), right = fxv_lt(a.n, thr);
-    fxv_u32 kr = fxv_min(fxv_sub32(fxv_max(a.n, thr), thr), fxv_k32(31));
-    fxv_u32 kl = fxv_min(fxv_sub32(fxv_k32(512u + f), fxv_min(a.n, fxv_k32(512u + f))), fxv_k32(41));
-    fxv_u32 k1 = fxv_min(kl, fxv_k32(31)), k2 = fxv_sub32(kl, k1);
-    fxv_u32 vr = fxv_shr(fxv_add32(fxv_shrv(a.m, kr), fxv_k32(1)), 1);
-    fxv_u32 m = fxv_sel(right, fxv_shlv(a.m, k2), vr);
-    return fxv_mulw(m, fxv_sel(right, fxv_shlv(fxv_k32(1), k1), fxv_k32(1)));
-}
-
-static inline fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
+ * brdf = spec + diffuse, spec = (a 2t)^2 F / (2 pi e^2 m) (fx_kernels.c):
+ *   y = 1 - L.H = u 2^-32 / (1 + L.H): (1 + L.H) Q15 is a normalised
+ *     mantissa [2^15, 2^16), r1 = rcp16 ~ 2^16 / (1 + L.H); u 2^ku in
+ *     [2^31, 2^32) (u = 0 read as 1: y ~ 2^-32, its y^5 vanishes);
+ *     y = ym 2^-(32 + ku), y^5 = y5 2^-(32 + 5 ku) [ym >= 2^30, y5 >= 2^22]
+ *   F = f0 + (1 - f0) y^5 = Fs 2^-(30 + j), j = min(5 ku, clz(F0) - 16)
+ *     (f0 = 0: j = 5 ku, so F keeps its relative precision down to L = V)
+ *     [F0 2^(15 + j) < 2^31, the tail < 2^30], then normalised (kF)
+ *   a 2t = hi(A 2^ka, x) 2^-(13 + ka + k)   [>= 2^29], squared [>= 2^26]
+ *   e60 = (A S)^2 + w 2^30 (exact, < 2^63), m45 = 2 NL NV (2^15 - A) +
+ *     A S 2^15 (exact, < 2^47): top 32 bits, normalised
+ *   1 / (e^2 m): rcp16 of the normalised product [>= 2^29 before]
+ *   spec = sp 2^-Es, Es an exponent lane (biased by 256; spec < 2^33)
+ * brdf Q29 in 64 bits = spec sp 2^(29 - Es) (one 32x32->64 product by a
+ * power of two <= 2^31) + diffuse Q25 2^4, rounded once to UQ40.24. */
+FXF_INLINE fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
                                            fxv_i32 f0_in, fxv_i32 albedo)
 {
     fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha), f0 = fxf_unit(f0_in);
     fxf_dots g = fxf_dots_of(nl, nv, lov);
     fxf_root lh = fxf_sqrt32(g.c);
-    fxs opl, y, y2, f, as, e, m, a2t, num, den;
-    opl.m = fxv_add32(fxv_k32(FXF_ONE), fxv_shr(fxv_shrv(lh.s, lh.h), 1)); /* (1 + L.H) 2^15 */
-    opl.n = fxv_k32(527);
-    y = fxs_mul(fxs_q(g.u, 32), fxs_rcp(opl));
-    y2 = fxs_mul(y, y);
-    f = fxs_add(fxs_q(f0, 15), fxs_mul(fxs_q(fxv_sub32(fxv_k32(FXF_ONE), f0), 15),
-                                       fxs_mul(fxs_mul(y2, y2), y)));
-    as = fxs_q(fxv_mul32(a, g.s), 30);
-    e = fxs_add(fxs_q(g.w, 30), fxs_mul(as, as));
-    m = fxs_add(fxs_mul(fxs_q(fxv_sub32(fxv_k32(FXF_ONE), a), 15), fxs_q(fxv_mul32(nl, nv), 29)), as);
-    a2t = fxs_mul(fxs_q(a, 15), fxs_q(g.c, 30));
-    num = fxs_mul(fxs_mul(a2t, a2t), f);
-    den = fxs_mul(fxs_mul(fxs_mul(e, e), m), fxs_k(FXF_TWO_PI_M, 13));
-    return fxs_fixed64(fxs_add(fxs_mul(num, fxs_rcp(den)),
-                               fxf_diffuse(nl, nv, a, fxf_unit(albedo), g, lh)),
-                       FACET_FX_BRDF_FRAC);
+    fxv_u32 k = fxv_shl(lh.h, 1), x = fxv_shlv(g.c, k);             /* 2t = x 2^-(30 + k) */
+    fxv_u32 r1, uu, ku, ym, y2, y4, y5, k5, kf, jj, ft, fs, kF, ka, a2t, g2, num;
+    fxv_u32 as, ee, em, etop, mtop, e2, dm, kd, rd, sp, es, sl, sr;
+    fxv_u64 spec, d64;
+    /* Fresnel */
+    r1 = fxf_rcp32(fxv_add32(fxv_k32(1u << 31), fxv_shlv(lh.s, fxv_sub32(fxv_k32(15), lh.h)))); /* (1 + L.H) Q31 */
+    uu = fxv_max(g.u, fxv_k32(1));
+    ku = fxv_clz(uu);
+    ym = fxw_mulhi(fxv_shlv(uu, ku), fxv_shl(r1, 16));
+    y2 = fxw_mulhi(ym, ym);
+    y4 = fxw_mulhi(y2, y2);
+    y5 = fxw_mulhi(y4, ym);
+    k5 = fxv_add32(fxv_shl(ku, 2), ku);
+    kf = fxv_sel(fxv_lt(f0, fxv_k32(1)), fxv_k32(255), fxv_sub32(fxv_clz(f0), fxv_k32(16)));
+    jj = fxv_min(k5, kf);
+    ft = fxw_mulhi(y5, fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), f0), 16));
+    fs = fxv_add32(fxv_shlv(f0, fxv_min(fxv_add32(jj, fxv_k32(15)), fxv_k32(31))),
+                   fxv_shrv(ft, fxv_min(fxv_sub32(fxv_add32(k5, fxv_k32(1)), jj), fxv_k32(31))));
+    kF = fxv_clz(fs);
+    /* (a 2t)^2 F */
+    ka = fxv_clz(a);
+    a2t = fxw_mulhi(fxv_shlv(a, ka), x);
+    g2 = fxw_mulhi(a2t, a2t);
+    num = fxw_mulhi(g2, fxv_shlv(fs, kF));              /* 2^-(2ka + 2k + jj + kF - 8) */
+    /* e^2 m */
+    as = fxv_mul32(a, g.s);
+    etop = fxw_top(fxv_add64(fxv_mulw(as, as), fxv_mulw(g.w, fxv_k32(1u << 30))), &ee);
+    mtop = fxw_top(fxv_add64(fxv_mulw(fxv_shl(fxv_mul32(nl, nv), 1), fxv_sub32(fxv_k32(FXF_ONE), a)),
+                             fxv_mulw(as, fxv_k32(1u << 15))), &em);
+    /* e = etop 2^-(28 + ee), m = mtop 2^-(13 + em) */
+    e2 = fxw_mulhi(etop, etop);                        /* 2^-(24 + 2 ee) */
+    dm = fxw_mulhi(e2, mtop);                          /* 2^-(5 + 2 ee + em) [>= 2^29] */
+    kd = fxv_clz(dm);
+    rd = fxf_rcp32(fxv_shlv(dm, kd));     /* 1/(e^2 m) = rd 2^(2ee + em + kd - 42) */
+    sp = fxw_mulhi(fxw_mulhi(num, fxv_shl(rd, 16)), fxv_k32(FXW_INV_2PI));
+    /* spec = sp 2^-Es, Es = 2ka + 2k + jj + kF + 18 - 2ee - em - kd, held
+     * biased by 256 [Es >= -12: spec < 2^33, sp >= 2^21]; Q29: sp 2^(29 - Es)
+     * < 2^62, a left shift sl <= 41 split as (sp 2^(sl - 31)) 2^31 */
+    es = fxv_sub32(fxv_add32(fxv_add32(fxv_add32(fxv_shl(fxv_add32(ka, k), 1), jj), kF), fxv_k32(274)),
+                   fxv_add32(fxv_add32(fxv_shl(ee, 1), em), kd));
+    sl = fxv_sub32(fxv_k32(285), fxv_min(es, fxv_k32(285)));
+    sr = fxv_min(fxv_sub32(fxv_max(es, fxv_k32(285)), fxv_k32(285)), fxv_k32(31));
+    {
+        fxv_u32 s1 = fxv_min(sl, fxv_k32(31)), s2 = fxv_min(fxv_sub32(sl, s1), fxv_k32(10));
+        spec = fxv_mulw(fxv_shlv(fxv_shrv(sp, sr), s2), fxv_shlv(fxv_k32(1), s1));
+    }
+    d64 = fxv_mulw(fxw_diffuse26(nl, nv, a, fxf_unit(albedo), g.s, g.c, x, k, lh), fxv_k32(8));
+    return fxb_rshr64(fxv_add64(spec, d64), 5);
 }
 
 #endif

@@ -38,6 +38,7 @@ static inline fxv_u32 fxv_lt(fxv_u32 a, fxv_u32 b) { return a < b ? 0xFFFFFFFFu 
 static inline fxv_u32 fxv_sel(fxv_u32 m, fxv_u32 a, fxv_u32 b) { return (a & m) | (b & ~m); }
 static inline fxv_u32 fxv_and(fxv_u32 a, fxv_u32 b) { return a & b; }
 static inline fxv_u32 fxv_not(fxv_u32 a) { return ~a; }
+static inline fxv_u32 fxv_or(fxv_u32 a, fxv_u32 b) { return a | b; }
 static inline fxv_u32 fxv_clamp_off(fxv_i32 x, int32_t lo, int32_t hi)
 {
     return (uint32_t)(x < lo ? lo : x > hi ? hi : x) - (uint32_t)lo;

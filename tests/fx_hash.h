@@ -79,19 +79,19 @@ static const struct { const char *name; uint64_t hash; } fxh_pinned[] = {
 #ifdef FXH_FAST
 /* the fx_fast tier (facet_<kernel>_fx_fast), same grids */
 static const struct { const char *name; uint64_t hash; } fxh_pinned_fast[] = {
-    { "noh_from_dots", 0xfcf11ae5ad8ac86eull },
-    { "loh_from_dots", 0x8f4831da53f96a70ull },
+    { "noh_from_dots", 0xcfc8861fb9315e6cull },
+    { "loh_from_dots", 0x324fa6993f548174ull },
     { "fresnel_schlick", 0xc8d8cbbcdb80f0e7ull },
     { "ggx_d", 0x200a981cfcf5a39eull },
-    { "smith_g1", 0x89eb7848c04fc214ull },
-    { "smith_g2", 0xda44dccb30c5a2faull },
-    { "smith_g2_uncorrelated", 0x760b2b9fb17c38d5ull },
-    { "smith_vis", 0x5776b2ff8c7bbcf8ull },
+    { "smith_g1", 0x914876b0f7660e0bull },
+    { "smith_g2", 0x8aa9cb75584f0338ull },
+    { "smith_g2_uncorrelated", 0x87189bcf817d7d7full },
+    { "smith_vis", 0x81e878acfc7d9311ull },
     { "smith_g1_hammon", 0x5c1bdea1afa9f66bull },
     { "smith_g2_hammon", 0x34fe781ab6dc92adull },
     { "smith_vis_hammon", 0x668be970d27b38deull },
-    { "diffuse_hammon", 0xff585e50e9b08dd1ull },
-    { "brdf_hammon", 0x589e755eb26c62c7ull },
+    { "diffuse_hammon", 0xc116ce7bdb7def0full },
+    { "brdf_hammon", 0x1b0fb4a9988c3d23ull },
 };
 #define FXH_N_PINNED_FAST (sizeof fxh_pinned_fast / sizeof fxh_pinned_fast[0])
 #endif
