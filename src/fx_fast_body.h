@@ -246,40 +246,79 @@ FXF_INLINE fxv_u32 fxf_fast_noh_from_dots(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov)
     return fxv_sel(fxv_lt(g.w, fxv_k32(1)), fxv_k32(FXF_ONE), v);
 }
 
+/* ---- 32-bit fixed helpers ---------------------------------------------------
+ * fxw_mulhi(a, b) = floor(a b / 2^32): one UMULL's high word. */
+FXF_INLINE fxv_u32 fxw_mulhi(fxv_u32 a, fxv_u32 b) { return fxv_hi(fxv_mulw(a, b)); }
+
+/* the top 32 bits of a 64-bit x with x < 2^63 and x >= 2^26, normalised:
+ * top in [2^31, 2^32), x ~ top 2^(32 - e) (truncated, <= 2^-25 relative) */
+FXF_INLINE fxv_u32 fxw_top(fxv_u64 v, fxv_u32 *e)
+{
+    fxv_u32 hi = fxv_hi(v), kk = fxv_min(fxv_clz(hi), fxv_k32(31));   /* kk in [1, 31] */
+    fxv_u32 top = fxv_or(fxv_shlv(hi, kk), fxv_shrv(fxv_lo(v), fxv_sub32(fxv_k32(32), kk)));
+    fxv_u32 k2 = fxv_clz(top);                                         /* top >= 2^25: k2 <= 6 */
+    *e = fxv_add32(kk, k2);
+    return fxv_shlv(top, k2);
+}
+
+/* round(n / d 2^s) (ties up), saturated at max, with s given biased as the
+ * lane b = 95 - s (so a per-lane s works too); n < 2^32 (0 gives 0), d >= 1:
+ *   kn, kd normalise n and d; r = rcp32(d 2^kd) ~ 2^47 / (d 2^kd);
+ *   q = hi(n 2^kn, r 2^16) ~ n / d 2^(31 + kn - kd), in [2^30, 2^32) for n > 0
+ *   (relative error <= 2^-14.9: the table, the truncations), then shifted
+ *   by kq = 1 - (bit 31 of q) into [2^31, 2^32);
+ *   the result q 2^-sr, sr = 31 + kn - kd + kq - s: a rounded right shift;
+ *   sr < 0 means >= 2^32 and saturates, sr > 32 gives 0 [every shift count
+ *   in [0, 31]]. */
+FXF_INLINE fxv_u32 fxr_divb(fxv_u32 n, fxv_u32 d, fxv_u32 b, uint32_t max)
+{
+    fxv_u32 kn = fxv_min(fxv_clz(n), fxv_k32(31)), kd = fxv_clz(d);
+    fxv_u32 q = fxw_mulhi(fxv_shlv(n, kn), fxv_shl(fxf_rcp32(fxv_shlv(d, kd)), 16));
+    fxv_u32 kq = fxv_sub32(fxv_k32(1), fxv_shr(q, 31)); /* q 2^kq in [2^31, 2^32) */
+    fxv_u32 srb = fxv_add32(fxv_sub32(fxv_add32(b, kn), kd), kq); /* sr + 64 */
+    q = fxv_shlv(q, kq);
+    fxv_u32 t = fxv_shrv(q, fxv_min(fxv_sub32(fxv_max(srb, fxv_k32(65)), fxv_k32(65)), fxv_k32(31)));
+    fxv_u32 v = fxv_sel(fxv_lt(srb, fxv_k32(65)), t, fxv_shr(fxv_add32(t, fxv_k32(1)), 1));
+    v = fxv_sel(fxv_lt(srb, fxv_k32(64)), fxv_k32(max), fxv_sel(fxv_lt(srb, fxv_k32(97)), v, fxv_k32(0)));
+    return fxv_min(v, fxv_k32(max));
+}
+#define fxr_div(n, d, s, max) fxr_divb(n, d, fxv_k32(95u - (s)), max)
+
 /* ---- Fresnel ------------------------------------------------------------------
- * F = f0 + (1 - f0) y^5, Y = 2^15 - C (Q15):
- *   z1 = round(Y^2 / 2^14)    Q16 y^2   [<= 2^16]
- *   z2 = z1 floor(z1 / 2)     Q31 y^4   [<= 2^31]
- *   y4 = round(z2 / 2^15)     Q16       [<= 2^16]
- *   y5 = y4 Y                 Q31       [<= 2^31]
- *   F31 = F0 2^16 + (2^15 - F0) round(y5 / 2^15)   Q31 [<= 2^31]
- *   raw = round(F31 / 2^16).
- * F(f0, 1) = f0 and F(f0, 0) = 1 exactly.  Error: rounding steps of
- * <= 2^-17 each, scaled by y^k < 1, and the final rounding. */
+ * F = f0 + (1 - f0) y^5, Y = 2^15 - C (Q15), with fxw_mulhi (below):
+ *   y2 = Y^2                            Q30 exact   [<= 2^30]
+ *   y4 = hi(2 y2, 2 y2)                 Q30         [<= 2^30]
+ *   y5 = hi(2 y4, Y 2^16)               Q30         [<= 2^30]
+ *   F30 = F0 2^15 + hi(2 y5, (2^15 - F0) 2^16)    Q30 [<= 2^30]
+ *   raw = round(F30 / 2^15).
+ * Every operand <= 2^31; truncations <= 2^-30 each, so the error is the
+ * final rounding; F(f0, 1) = f0 and F(f0, 0) = 1 exactly. */
 FXF_INLINE fxv_u32 fxf_fast_fresnel_schlick(fxv_i32 f0_in, fxv_i32 cos_in)
 {
     fxv_u32 f0 = fxf_unit(f0_in), y = fxv_sub32(fxv_k32(FXF_ONE), fxf_unit(cos_in));
-    fxv_u32 z1 = fxv_shr(fxv_add32(fxv_mul32(y, y), fxv_k32(1u << 13)), 14);
-    fxv_u32 z2 = fxv_mul32(z1, fxv_shr(z1, 1));
-    fxv_u32 y4 = fxv_shr(fxv_add32(z2, fxv_k32(1u << 14)), 15);
-    fxv_u32 y5 = fxv_shr(fxv_add32(fxv_mul32(y4, y), fxv_k32(1u << 14)), 15);
-    fxv_u32 f31 = fxv_add32(fxv_shl(f0, 16), fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), f0), y5));
-    return fxv_shr(fxv_add32(f31, fxv_k32(1u << 15)), 16);
+    fxv_u32 y2 = fxv_shl(fxv_mul32(y, y), 1);
+    fxv_u32 y4 = fxw_mulhi(y2, y2);
+    fxv_u32 y5 = fxw_mulhi(fxv_shl(y4, 1), fxv_shl(y, 16));
+    fxv_u32 t = fxw_mulhi(fxv_shl(y5, 1), fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), f0), 16));
+    return fxv_shr(fxv_add32(fxv_add32(fxv_shl(f0, 15), t), fxv_k32(1u << 14)), 15);
 }
 
 /* ---- GGX D ----------------------------------------------------------------------
- * d = (1 - n)(1 + n) + (n a)^2: d1 = (2^15 - N)(2^15 + N) Q30 exact, (N A)
- * Q30 exact [<= 2^30], squared as fxs; D = (a / d)^2 / pi. */
-#define FXF_INV_PI_M 41722u /* round(2^17 / pi), value 2^-17 m */
+ * d = (1 - n)(1 + n) + (n a)^2: d60 = (2^15 - N)(2^15 + N) 2^30 + (N A)^2 Q60
+ * exact [<= 2^60, >= a^2 2^60 >= 2^40]; its top 32 bits dt (fxw_top, d =
+ * dt 2^-(28 + e)); pi d^2 = pd 2^-(22 + 2e), pd = hi(hi(dt, dt), pi 2^30)
+ * [>= 2^29.6]; D 2^13 = A^2 / pd 2^(5 + 2e), one fxr_div. */
+#define FXF_PI_30 3373259426u /* round(pi 2^30) */
 
 FXF_INLINE fxv_u32 fxf_fast_ggx_d(fxv_i32 noh, fxv_i32 alpha)
 {
-    fxv_u32 n = fxf_unit(noh), a = fxf_alpha(alpha);
-    fxs na = fxs_q(fxv_mul32(n, a), 30);
-    fxs d = fxs_add(fxs_q(fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), n), fxv_add32(fxv_k32(FXF_ONE), n)), 30),
-                    fxs_mul(na, na));
-    fxs g = fxs_mul(fxs_q(a, 15), fxs_rcp(d));
-    return fxs_fixed(fxs_mul(fxs_mul(g, g), fxs_k(FXF_INV_PI_M, 17)), FACET_FX_D_FRAC, FACET_FX_MAX_D);
+    fxv_u32 n = fxf_unit(noh), a = fxf_alpha(alpha), na = fxv_mul32(n, a), e;
+    fxv_u64 d60 = fxv_add64(fxv_mulw(fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), n), fxv_add32(fxv_k32(FXF_ONE), n)),
+                                     fxv_k32(1u << 30)),
+                            fxv_mulw(na, na));
+    fxv_u32 dt = fxw_top(d60, &e);
+    fxv_u32 pd = fxw_mulhi(fxw_mulhi(dt, dt), fxv_k32(FXF_PI_30));
+    return fxr_divb(fxv_mul32(a, a), pd, fxv_sub32(fxv_k32(90), fxv_shl(e, 1)), FACET_FX_MAX_D);
 }
 
 /* ---- Smith, exact ------------------------------------------------------------
@@ -332,35 +371,38 @@ FXF_INLINE fxv_u32 fxf_fast_smith_g2_uncorrelated(fxv_i32 nol, fxv_i32 nov, fxv_
 }
 
 /* ---- Smith, Hammon ------------------------------------------------------------
- * G1 ~ 2 n / (n (2 - a) + a): den30 = N (2^16 - A) + A 2^15 exact [<= 2^31]. */
+ * G1 ~ 2 n / (n (2 - a) + a): den30 = N (2^16 - A) + A 2^15 exact [2^20 ..
+ * 2^31]; G1 2^15 = 2N 2^30 / den30, one fxr_div. */
 FXF_INLINE fxv_u32 fxf_fast_smith_g1_hammon(fxv_i32 nov, fxv_i32 alpha)
 {
     fxv_u32 n = fxf_unit(nov), a = fxf_alpha(alpha);
     fxv_u32 den = fxv_add32(fxv_mul32(n, fxv_sub32(fxv_k32(65536), a)), fxv_shl(a, 15));
-    return fxs_fixed(fxs_mul(fxs_q(n, 14), fxs_rcp(fxs_q(den, 30))), 15, FXF_ONE);
+    return fxr_div(fxv_shl(n, 1), den, 30, FXF_ONE);
 }
 
-/* m = (1 - a) 2 nl nv + a (nl + nv): (2^15 - A) and 2 NL NV [Q29 <= 2^30]
- * as fxs, A S [<= 2^31] Q30. */
-FXF_INLINE fxs fxf_hammon_m(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxs nlnv2)
+/* m = (1 - a) 2 nl nv + a (nl + nv): m45 = 2 NL NV (2^15 - A) + A S 2^15
+ * Q45 exact [< 2^47, >= a s 2^45 >= 2^28], its top 32 bits mt:
+ * m45 ~ mt 2^(32 - e). */
+FXF_INLINE fxv_u32 fxf_hammon_m(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 nlnv, fxv_u32 *e)
 {
-    return fxs_add(fxs_mul(fxs_q(fxv_sub32(fxv_k32(FXF_ONE), a), 15), nlnv2),
-                   fxs_q(fxv_mul32(a, fxv_add32(nl, nv)), 30));
+    return fxw_top(fxv_add64(fxv_mulw(fxv_shl(nlnv, 1), fxv_sub32(fxv_k32(FXF_ONE), a)),
+                             fxv_mulw(fxv_mul32(a, fxv_add32(nl, nv)), fxv_k32(1u << 15))), e);
 }
 
+/* G2 2^15 = 2 NL NV 2^30 / m45 = NL NV / mt 2^(e - 1) */
 FXF_INLINE fxv_u32 fxf_fast_smith_g2_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
 {
-    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
-    fxs p = fxs_q(fxv_mul32(nl, nv), 29);
-    return fxs_fixed(fxs_mul(p, fxs_rcp(fxf_hammon_m(nl, nv, a, p))), 15, FXF_ONE);
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha), p = fxv_mul32(nl, nv), e;
+    fxv_u32 mt = fxf_hammon_m(nl, nv, a, p, &e);
+    return fxr_divb(p, mt, fxv_sub32(fxv_k32(96), e), FXF_ONE);
 }
 
+/* Vis 2^16 = 0.5 2^16 2^45 / m45 = 2^31 / mt 2^(e - 3) [< 2^30] */
 FXF_INLINE fxv_u32 fxf_fast_smith_vis_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
 {
-    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
-    fxs v = fxs_rcp(fxf_hammon_m(nl, nv, a, fxs_q(fxv_mul32(nl, nv), 29)));
-    v.n = fxv_add32(v.n, fxv_k32(1));
-    return fxs_fixed(v, FACET_FX_VIS_FRAC, FACET_FX_MAX_VIS);
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha), e;
+    fxv_u32 mt = fxf_hammon_m(nl, nv, a, fxv_mul32(nl, nv), &e);
+    return fxr_divb(fxv_k32(1u << 31), mt, fxv_sub32(fxv_k32(98), e), FACET_FX_MAX_VIS);
 }
 
 /* ---- Hammon's diffuse and the whole model: 32-bit fixed stages -----------------
@@ -370,7 +412,6 @@ FXF_INLINE fxv_u32 fxf_fast_smith_vis_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 a
  * products needs no renormalisation as long as each factor keeps >= 2^21
  * (the bounds in brackets); clz-normalisations only where a range is wide.
  * Truncations are absolute (<= 2^-E) and small against the bound. */
-FXF_INLINE fxv_u32 fxw_mulhi(fxv_u32 a, fxv_u32 b) { return fxv_hi(fxv_mulw(a, b)); }
 
 /* 1 - (1 - x)^5 = x (1 + y + y^2 + y^3 + y^4), y = 1 - x: Y = 2^15 - X, y^2,
  * y^3, y^4 Q15 rounded, the sum Q15 [< 5 2^15], P = X sum Q30 [= x sum 2^30
@@ -438,17 +479,6 @@ FXF_INLINE fxv_u32 fxf_fast_diffuse_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov
     fxv_u32 k = fxv_shl(lh.h, 1);
     fxv_u32 d = fxw_diffuse26(nl, nv, fxf_alpha(alpha), fxf_unit(albedo), g.s, g.c, fxv_shlv(g.c, k), k, lh);
     return fxv_shr(fxv_add32(d, fxv_k32(2)), 2);
-}
-
-/* the top 32 bits of a 64-bit x with x < 2^63 and x >= 2^26, normalised:
- * top in [2^31, 2^32), x ~ top 2^(32 - e) (truncated, <= 2^-25 relative) */
-FXF_INLINE fxv_u32 fxw_top(fxv_u64 v, fxv_u32 *e)
-{
-    fxv_u32 hi = fxv_hi(v), kk = fxv_min(fxv_clz(hi), fxv_k32(31));   /* kk in [1, 31] */
-    fxv_u32 top = fxv_or(fxv_shlv(hi, kk), fxv_shrv(fxv_lo(v), fxv_sub32(fxv_k32(32), kk)));
-    fxv_u32 k2 = fxv_clz(top);                                         /* top >= 2^25: k2 <= 6 */
-    *e = fxv_add32(kk, k2);
-    return fxv_shlv(top, k2);
 }
 
 /* ---- the whole model ------------------------------------------------------------
