@@ -32,63 +32,74 @@
 #define FXF_INLINE static inline
 #endif
 
-/* 1 / x on [1, 2): FXF_RCP[i] = round(2^31 / (2^15 + 2^8 i)), i = 0..128,
- * the first (65536) held at 65535 so every result is below 2^16 */
+/* floor(a b / 2^32): one UMULL's high word (four 16x16 MULS on ARMv6-M) */
+FXF_INLINE fxv_u32 fxw_mulhi(fxv_u32 a, fxv_u32 b) { return fxv_hi(fxv_mulw(a, b)); }
+
+/* 1 / x on [1, 2): fxf_rcp_tab[i] = round(2^35 / (2^15 + 2^8 i)), i = 0..128,
+ * the first (2^20) held at 2^20 - 1 so every result is below 2^20 */
 static const uint32_t fxf_rcp_tab[129] = {
-    65535, 65028, 64528, 64035, 63550, 63072, 62602, 62138, 61681, 61231, 60787, 60350,
-    59919, 59494, 59075, 58662, 58254, 57852, 57456, 57065, 56680, 56299, 55924, 55554,
-    55188, 54828, 54471, 54120, 53773, 53431, 53092, 52759, 52429, 52103, 51782, 51464,
-    51150, 50840, 50534, 50231, 49932, 49637, 49345, 49056, 48771, 48489, 48210, 47935,
-    47663, 47393, 47127, 46864, 46603, 46346, 46091, 45839, 45590, 45344, 45100, 44859,
-    44620, 44384, 44151, 43919, 43691, 43464, 43240, 43019, 42799, 42582, 42367, 42154,
-    41943, 41734, 41528, 41323, 41121, 40920, 40721, 40525, 40330, 40137, 39946, 39756,
-    39569, 39383, 39199, 39017, 38836, 38657, 38480, 38304, 38130, 37958, 37787, 37617,
-    37449, 37283, 37118, 36954, 36792, 36631, 36472, 36314, 36158, 36003, 35849, 35696,
-    35545, 35395, 35246, 35099, 34953, 34808, 34664, 34521, 34380, 34239, 34100, 33962,
-    33825, 33689, 33554, 33421, 33288, 33157, 33026, 32897, 32768,
+    1048575, 1040448, 1032444, 1024563, 1016801, 1009156, 1001625, 994205, 986895, 979691,
+    972592, 965595, 958698, 951899, 945195, 938586, 932068, 925640, 919300, 913046, 906877,
+    900790, 894785, 888859, 883011, 877240, 871544, 865921, 860370, 854890, 849479, 844137,
+    838861, 833650, 828504, 823422, 818401, 813441, 808541, 803699, 798915, 794188, 789516,
+    784899, 780336, 775825, 771366, 766958, 762601, 758292, 754032, 749820, 745654, 741534,
+    737460, 733430, 729444, 725501, 721601, 717742, 713924, 710147, 706409, 702711, 699051,
+    695429, 691844, 688296, 684784, 681308, 677867, 674461, 671089, 667750, 664444, 661171,
+    657930, 654721, 651542, 648395, 645278, 642190, 639132, 636103, 633102, 630130, 627186,
+    624269, 621378, 618515, 615678, 612866, 610081, 607320, 604584, 601873, 599186, 596523,
+    593884, 591268, 588674, 586104, 583555, 581029, 578525, 576042, 573580, 571139, 568719,
+    566320, 563940, 561580, 559241, 556920, 554619, 552336, 550073, 547827, 545601, 543392,
+    541201, 539027, 536871, 534732, 532610, 530505, 528416, 526344, 524288,
 };
 
-/* sqrt on [1/4, 1]: FXF_SQRT[j] = round(2^16 sqrt((32 + j) / 128)), j = 0..96,
- * the last (65536) held at 65535 so every result is below 2^16 */
+/* sqrt on [1/4, 1]: fxf_sqrt_tab[j] = round(2^20 sqrt((32 + j) / 128)), j = 0..96,
+ * the last (2^20) held at 2^20 - 1 so every result is below 2^20 */
 static const uint32_t fxf_sqrt_tab[97] = {
-    32768, 33276, 33776, 34270, 34756, 35235, 35708, 36175, 36636, 37091, 37540, 37985,
-    38424, 38858, 39287, 39712, 40132, 40548, 40960, 41368, 41771, 42171, 42567, 42959,
-    43348, 43733, 44115, 44494, 44869, 45242, 45611, 45977, 46341, 46702, 47059, 47415,
-    47767, 48117, 48465, 48809, 49152, 49492, 49830, 50166, 50499, 50830, 51159, 51486,
-    51811, 52134, 52454, 52773, 53090, 53405, 53719, 54030, 54340, 54647, 54954, 55258,
-    55561, 55862, 56162, 56459, 56756, 57051, 57344, 57636, 57926, 58215, 58503, 58789,
-    59073, 59357, 59639, 59919, 60199, 60477, 60753, 61029, 61303, 61576, 61848, 62119,
-    62388, 62657, 62924, 63190, 63455, 63719, 63982, 64243, 64504, 64763, 65022, 65279,
-    65535,
+    524288, 532417, 540424, 548314, 556091, 563762, 571330, 578798, 586172, 593454, 600647,
+    607756, 614782, 621729, 628599, 635395, 642119, 648773, 655360, 661881, 668339, 674734,
+    681070, 687347, 693568, 699733, 705844, 711903, 717911, 723869, 729778, 735640, 741455,
+    747225, 752951, 758634, 764275, 769874, 775432, 780952, 786432, 791875, 797280, 802649,
+    807982, 813280, 818544, 823775, 828972, 834137, 839270, 844372, 849444, 854485, 859497,
+    864479, 869433, 874359, 879258, 884129, 888974, 893792, 898584, 903351, 908093, 912811,
+    917504, 922173, 926819, 931442, 936041, 940619, 945174, 949707, 954219, 958709, 963179,
+    967627, 972056, 976464, 980853, 985222, 989572, 993903, 998215, 1002508, 1006783,
+    1011040, 1015279, 1019501, 1023705, 1027892, 1032062, 1036215, 1040352, 1044472,
+    1048575,
 };
 
-/* r ~ 2^31 / m for m in [2^15, 2^16): r in [2^15, 2^16).  Interpolation
- * error <= 2^-16 (h^2/8 max|f''| with h = 2^-7), table rounding and the
- * truncated step 2^-16 each. [(R[i] - R[i+1]) < 2^10, frac < 2^8] */
-FXF_INLINE fxv_u32 fxf_rcp16(fxv_u32 m)
-{
-    fxv_u32 i = fxv_sub32(fxv_shr(m, 8), fxv_k32(128)), f = fxv_and(m, fxv_k32(255));
-    fxv_u32 r0 = fxv_lut(fxf_rcp_tab, i), r1 = fxv_lut(fxf_rcp_tab, fxv_add32(i, fxv_k32(1)));
-    return fxv_sub32(r0, fxv_shr(fxv_add32(fxv_mul32(fxv_sub32(r0, r1), f), fxv_k32(128)), 8));
-}
-
-/* the same from a 32-bit mantissa m in [2^31, 2^32): r ~ 2^47 / m, the 15
- * bits below the index interpolate [(R[i] - R[i+1]) f < 2^10 2^15] */
-FXF_INLINE fxv_u32 fxf_rcp32(fxv_u32 m)
+/* r ~ 2^51 / m for m in [2^31, 2^32): r in [2^19, 2^20).  The top 7 bits
+ * below the leading one index the table, the next 15 interpolate linearly
+ * [(R[i] - R[i+1]) < 2^13, f < 2^15: the product < 2^28]; relative error
+ * <= 2^-17 (interpolation h^2/8 max|f''| = 2^-16 absolute on 1/x in
+ * (1/2, 1], table and step roundings 2^-21). */
+FXF_INLINE fxv_u32 fxf_rcp20(fxv_u32 m)
 {
     fxv_u32 i = fxv_sub32(fxv_shr(m, 24), fxv_k32(128)), f = fxv_and(fxv_shr(m, 9), fxv_k32(0x7FFF));
     fxv_u32 r0 = fxv_lut(fxf_rcp_tab, i), r1 = fxv_lut(fxf_rcp_tab, fxv_add32(i, fxv_k32(1)));
     return fxv_sub32(r0, fxv_shr(fxv_add32(fxv_mul32(fxv_sub32(r0, r1), f), fxv_k32(1u << 14)), 15));
 }
 
-/* s ~ 2^16 sqrt(x / 2^32) for x in [2^30, 2^32): s in [2^15, 2^16).
- * The 15 bits below the index interpolate. [(S[j+1] - S[j]) < 2^9, f < 2^15] */
-FXF_INLINE fxv_u32 fxf_sqrt16(fxv_u32 x)
+/* r ~ 2^31 / m for a 16-bit m in [2^15, 2^16): r in [2^15, 2^16) (the same
+ * table, 8 interpolation bits, truncated to 16 bits: <= 2^-15 relative) */
+FXF_INLINE fxv_u32 fxf_rcp16(fxv_u32 m)
+{
+    fxv_u32 i = fxv_sub32(fxv_shr(m, 8), fxv_k32(128)), f = fxv_and(m, fxv_k32(255));
+    fxv_u32 r0 = fxv_lut(fxf_rcp_tab, i), r1 = fxv_lut(fxf_rcp_tab, fxv_add32(i, fxv_k32(1)));
+    return fxv_shr(fxv_sub32(r0, fxv_shr(fxv_add32(fxv_mul32(fxv_sub32(r0, r1), f), fxv_k32(128)), 8)), 4);
+}
+
+/* s ~ 2^20 sqrt(x / 2^32) for x in [2^30, 2^32): s in [2^19, 2^20).  7
+ * index bits, 15 interpolation bits [(S[j+1] - S[j]) < 2^13]; relative
+ * error <= 2^-16.5 (h^2/8 max|f''| at 1/4: 2^-16 absolute on sqrt >= 1/2). */
+FXF_INLINE fxv_u32 fxf_sqrt20(fxv_u32 x)
 {
     fxv_u32 j = fxv_sub32(fxv_shr(x, 25), fxv_k32(32)), f = fxv_and(fxv_shr(x, 10), fxv_k32(0x7FFF));
     fxv_u32 s0 = fxv_lut(fxf_sqrt_tab, j), s1 = fxv_lut(fxf_sqrt_tab, fxv_add32(j, fxv_k32(1)));
     return fxv_add32(s0, fxv_shr(fxv_add32(fxv_mul32(fxv_sub32(s1, s0), f), fxv_k32(1u << 14)), 15));
 }
+
+/* the same to 16 bits: s ~ 2^16 sqrt(x / 2^32) in [2^15, 2^16) */
+FXF_INLINE fxv_u32 fxf_sqrt16(fxv_u32 x) { return fxv_shr(fxf_sqrt20(x), 4); }
 
 /* ---- fxs: m 2^(512 - n), m in [2^15, 2^16) or m = 0 (then n >= 1024) ---- */
 typedef struct { fxv_u32 m, n; } fxs;
@@ -208,47 +219,47 @@ FXF_INLINE fxf_dots fxf_dots_of(fxv_u32 nl, fxv_u32 nv, fxv_i32 lov)
 }
 
 /* sqrt(c 2^-32) for c in [2^16 - 1, 2^32): an even normalising shift 2h
- * [h <= 8], the table: sqrt = s 2^-(16 + h), s in [2^15, 2^16) */
+ * [h <= 8], the table: sqrt = s 2^-(20 + h), s in [2^19, 2^20) */
 typedef struct { fxv_u32 s, h; } fxf_root;
 
 FXF_INLINE fxf_root fxf_sqrt32(fxv_u32 c)
 {
     fxf_root r;
     fxv_u32 k = fxv_and(fxv_clz(c), fxv_k32(30));
-    r.s = fxf_sqrt16(fxv_shlv(c, k));
+    r.s = fxf_sqrt20(fxv_shlv(c, k));
     r.h = fxv_shr(k, 1);
     return r;
 }
 
 /* ---- loh_from_dots ------------------------------------------------------------
  * L.H = sqrt(T / 2^16), T = 2^15 + LOV: c = T 2^16 - 1 (exact for T >= 1,
- * [(T - 1) 2^16 <= 2^32 - 2^16]), raw = round(s / 2^(1 + h)); T = 0 gives 0. */
+ * [(T - 1) 2^16 <= 2^32 - 2^16]), raw = round(s / 2^(5 + h)); T = 0 gives 0. */
 FXF_INLINE fxv_u32 fxf_fast_loh_from_dots(fxv_i32 lov)
 {
     fxv_u32 t = fxv_clamp_off(lov, -FACET_FX_ONE, FACET_FX_ONE);
     fxv_u32 c = fxv_add32(fxv_shl(fxv_sub32(fxv_max(t, fxv_k32(1)), fxv_k32(1)), 16), fxv_k32(0xFFFF));
     fxf_root r = fxf_sqrt32(c);
-    fxv_u32 v = fxv_shr(fxv_add32(fxv_shrv(r.s, r.h), fxv_k32(1)), 1);
+    fxv_u32 v = fxv_shr(fxv_add32(fxv_shrv(r.s, fxv_add32(r.h, fxv_k32(4))), fxv_k32(1)), 1);
     return fxv_sel(fxv_lt(t, fxv_k32(1)), fxv_k32(0), v);
 }
 
 /* ---- noh_from_dots ------------------------------------------------------------
- * N.H = s / sqrt(2 t_r) = s / (2 L.H) = S 2^h / s_c; with r = rcp16(s_c)
- * ~ 2^31 / s_c: raw = round(S r / 2^(16 - h)) [S r < 2^16 2^16], at most
- * 2^15; w = 0 (at or past N.H = 1) gives 2^15. */
+ * N.H = s / sqrt(2 t_r) = s / (2 L.H) = S 2^(4 + h) / s_c; with r =
+ * rcp20(s_c 2^12) ~ 2^39 / s_c: x = hi(S 2^15, r 2^12) = S r 2^-5 [S 2^15
+ * <= 2^31], raw = round(x / 2^(15 - h)), at most 2^15; w = 0 (at or past
+ * N.H = 1) gives 2^15. */
 FXF_INLINE fxv_u32 fxf_fast_noh_from_dots(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov)
 {
     fxf_dots g = fxf_dots_of(fxf_cos(nol), fxf_cos(nov), lov);
     fxf_root r = fxf_sqrt32(g.c);
-    fxv_u32 x = fxv_mul32(g.s, fxf_rcp16(r.s));
-    fxv_u32 v = fxv_shr(fxv_add32(fxv_shrv(x, fxv_sub32(fxv_k32(15), r.h)), fxv_k32(1)), 1);
+    fxv_u32 x = fxw_mulhi(fxv_shl(g.s, 15), fxv_shl(fxf_rcp20(fxv_shl(r.s, 12)), 12));
+    fxv_u32 v = fxv_shr(fxv_add32(fxv_shrv(x, fxv_sub32(fxv_k32(14), r.h)), fxv_k32(1)), 1);
     v = fxv_min(v, fxv_k32(FXF_ONE));
     return fxv_sel(fxv_lt(g.w, fxv_k32(1)), fxv_k32(FXF_ONE), v);
 }
 
 /* ---- 32-bit fixed helpers ---------------------------------------------------
- * fxw_mulhi(a, b) = floor(a b / 2^32): one UMULL's high word. */
-FXF_INLINE fxv_u32 fxw_mulhi(fxv_u32 a, fxv_u32 b) { return fxv_hi(fxv_mulw(a, b)); }
+ * (fxw_mulhi: at the top.) */
 
 /* the top 32 bits of a 64-bit x with x < 2^63 and x >= 2^26, normalised:
  * top in [2^31, 2^32), x ~ top 2^(32 - e) (truncated, <= 2^-25 relative) */
@@ -263,9 +274,9 @@ FXF_INLINE fxv_u32 fxw_top(fxv_u64 v, fxv_u32 *e)
 
 /* round(n / d 2^s) (ties up), saturated at max, with s given biased as the
  * lane b = 95 - s (so a per-lane s works too); n < 2^32 (0 gives 0), d >= 1:
- *   kn, kd normalise n and d; r = rcp32(d 2^kd) ~ 2^47 / (d 2^kd);
- *   q = hi(n 2^kn, r 2^16) ~ n / d 2^(31 + kn - kd), in [2^30, 2^32) for n > 0
- *   (relative error <= 2^-14.9: the table, the truncations), then shifted
+ *   kn, kd normalise n and d; r = rcp20(d 2^kd) ~ 2^51 / (d 2^kd);
+ *   q = hi(n 2^kn, r 2^12) ~ n / d 2^(31 + kn - kd), in [2^30, 2^32) for n > 0
+ *   (relative error <= 2^-16.5: the table, the truncations), then shifted
  *   by kq = 1 - (bit 31 of q) into [2^31, 2^32);
  *   the result q 2^-sr, sr = 31 + kn - kd + kq - s: a rounded right shift;
  *   sr < 0 means >= 2^32 and saturates, sr > 32 gives 0 [every shift count
@@ -273,7 +284,7 @@ FXF_INLINE fxv_u32 fxw_top(fxv_u64 v, fxv_u32 *e)
 FXF_INLINE fxv_u32 fxr_divb(fxv_u32 n, fxv_u32 d, fxv_u32 b, uint32_t max)
 {
     fxv_u32 kn = fxv_min(fxv_clz(n), fxv_k32(31)), kd = fxv_clz(d);
-    fxv_u32 q = fxw_mulhi(fxv_shlv(n, kn), fxv_shl(fxf_rcp32(fxv_shlv(d, kd)), 16));
+    fxv_u32 q = fxw_mulhi(fxv_shlv(n, kn), fxv_shl(fxf_rcp20(fxv_shlv(d, kd)), 12));
     fxv_u32 kq = fxv_sub32(fxv_k32(1), fxv_shr(q, 31)); /* q 2^kq in [2^31, 2^32) */
     fxv_u32 srb = fxv_add32(fxv_sub32(fxv_add32(b, kn), kd), kq); /* sr + 64 */
     q = fxv_shlv(q, kq);
@@ -435,12 +446,12 @@ FXF_INLINE fxv_u32 fxf_p5(fxv_u32 x)
 /* The diffuse bracket B = (1 - a) 1.05 P(nl) P(nv) + a rough + albedo a
  * 0.1159 pi in Q25 [B <= 64.9: < 2^31.02], times albedo / pi: Q25 [<= 20.65].
  * With t = t_r = x 2^-(31 + k) (x = c 2^k in [2^30, 2^32), the sqrt's
- * normalised c) and L.H = ls 2^-(16 + h):
+ * normalised c) and L.H = ls 2^-(20 + h):
  *   rough = t (4.5 - t) / 10 (1 + L.H / s)
  *   t (4.5 - t) = mh 2^-(28 + k), mh = hi(x t45), t45 = (4.5 - t) Q29
  *                 [2.5 2^29 .. 4.5 2^29; mh >= 2^28.3]
- *   1 / s = rS 2^(kS - 32), kS = clz(S) in [15, 23], rS = rcp16(S 2^kS / 2^16)
- *   q = 1 + L.H / s  Q24 = 2^24 + (ls rS) >> (24 + h - kS)  [shift 1..17;
+ *   1 / s = rS 2^(kS - 36), kS = clz(S) in [15, 23], rS = rcp20(S 2^kS)
+ *   q = 1 + L.H / s  Q24 = 2^24 + hi(ls 2^12, rS 2^12) >> (24 + h - kS)  [shift 1..17;
  *                 L.H / s <= 128: q < 2^31.01]
  *   a rough = x2 2^-(23 + k), x2 = hi(hi(mh q) (A 2^19/10) 2), to Q25.
  * Each term's relative error <= 2^-13.4 (the P sums), its truncations
@@ -453,9 +464,9 @@ FXF_INLINE fxv_u32 fxw_diffuse26(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 alb,
     fxv_u32 smooth = fxw_mulhi(pp, fxv_shl(k1, 1));                                   /* Q29 */
     fxv_u32 t45 = fxv_sub32(fxv_k32(9u << 28), fxv_shr(c, 2));                       /* Q29 */
     fxv_u32 mh = fxw_mulhi(x, t45);
-    fxv_u32 ks = fxv_clz(s), rs = fxf_rcp32(fxv_shlv(s, ks));
-    fxv_u32 q = fxv_add32(fxv_k32(1u << 24),
-                          fxv_shrv(fxv_mul32(lh.s, rs), fxv_sub32(fxv_add32(lh.h, fxv_k32(24)), ks)));
+    fxv_u32 ks = fxv_clz(s), rs = fxf_rcp20(fxv_shlv(s, ks));
+    fxv_u32 q = fxv_add32(fxv_k32(1u << 24), fxv_shrv(fxw_mulhi(fxv_shl(lh.s, 12), fxv_shl(rs, 12)),
+                                                      fxv_sub32(fxv_add32(lh.h, fxv_k32(24)), ks)));
     /* a t (4.5 - t) / 10 = x1 2^-(31 + k) [A 2^19/10 2 < 2^31.7; x1 <= 2^30:
      * t (4.5 - t) / 10 <= 1/2], doubled; a rough = x2 2^-(24 + k) */
     fxv_u32 x1 = fxw_mulhi(mh, fxv_shl(fxv_mul32(a, fxv_k32(FXW_TENTH)), 1));
@@ -508,10 +519,10 @@ FXF_INLINE fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, f
     fxv_u32 as, ee, em, etop, mtop, e2, dm, kd, rd, sp, es, sl, sr;
     fxv_u64 spec, d64;
     /* Fresnel */
-    r1 = fxf_rcp32(fxv_add32(fxv_k32(1u << 31), fxv_shlv(lh.s, fxv_sub32(fxv_k32(15), lh.h)))); /* (1 + L.H) Q31 */
+    r1 = fxf_rcp20(fxv_add32(fxv_k32(1u << 31), fxv_shlv(lh.s, fxv_sub32(fxv_k32(11), lh.h)))); /* (1 + L.H) Q31 */
     uu = fxv_max(g.u, fxv_k32(1));
     ku = fxv_clz(uu);
-    ym = fxw_mulhi(fxv_shlv(uu, ku), fxv_shl(r1, 16));
+    ym = fxw_mulhi(fxv_shlv(uu, ku), fxv_shl(r1, 12));
     y2 = fxw_mulhi(ym, ym);
     y4 = fxw_mulhi(y2, y2);
     y5 = fxw_mulhi(y4, ym);
@@ -530,14 +541,19 @@ FXF_INLINE fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, f
     /* e^2 m */
     as = fxv_mul32(a, g.s);
     etop = fxw_top(fxv_add64(fxv_mulw(as, as), fxv_mulw(g.w, fxv_k32(1u << 30))), &ee);
-    mtop = fxw_top(fxv_add64(fxv_mulw(fxv_shl(fxv_mul32(nl, nv), 1), fxv_sub32(fxv_k32(FXF_ONE), a)),
-                             fxv_mulw(as, fxv_k32(1u << 15))), &em);
+    /* m30 = (1 - a) 2 nl nv 2^30 + A S = hi(2 NL NV, (2^15 - A) 2^17) + A S
+     * [(2^15 - 32) 2^17 < 2^32; m <= 2: m30 <= 2^31; m >= 2^-15: m30 >= 2^15,
+     * truncation <= 2^-15 relative], normalised: m = mtop 2^-(30 + km) */
+    mtop = fxv_add32(fxw_mulhi(fxv_shl(fxv_mul32(nl, nv), 1), fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), a), 17)), as);
+    em = fxv_clz(mtop);
+    mtop = fxv_shlv(mtop, em);
+    em = fxv_add32(em, fxv_k32(17));
     /* e = etop 2^-(28 + ee), m = mtop 2^-(13 + em) */
     e2 = fxw_mulhi(etop, etop);                        /* 2^-(24 + 2 ee) */
     dm = fxw_mulhi(e2, mtop);                          /* 2^-(5 + 2 ee + em) [>= 2^29] */
     kd = fxv_clz(dm);
-    rd = fxf_rcp32(fxv_shlv(dm, kd));     /* 1/(e^2 m) = rd 2^(2ee + em + kd - 42) */
-    sp = fxw_mulhi(fxw_mulhi(num, fxv_shl(rd, 16)), fxv_k32(FXW_INV_2PI));
+    rd = fxf_rcp20(fxv_shlv(dm, kd));     /* 1/(e^2 m) = rd 2^(2ee + em + kd - 46) */
+    sp = fxw_mulhi(fxw_mulhi(num, fxv_shl(rd, 12)), fxv_k32(FXW_INV_2PI));
     /* spec = sp 2^-Es, Es = 2ka + 2k + jj + kF + 18 - 2ee - em - kd, held
      * biased by 256 [Es >= -12: spec < 2^33, sp >= 2^21]; Q29: sp 2^(29 - Es)
      * < 2^62, a left shift sl <= 41 split as (sp 2^(sl - 31)) 2^31 */

@@ -79,19 +79,19 @@ static const struct { const char *name; uint64_t hash; } fxh_pinned[] = {
 #ifdef FXH_FAST
 /* the fx_fast tier (facet_<kernel>_fx_fast), same grids */
 static const struct { const char *name; uint64_t hash; } fxh_pinned_fast[] = {
-    { "noh_from_dots", 0xcfc8861fb9315e6cull },
-    { "loh_from_dots", 0x324fa6993f548174ull },
+    { "noh_from_dots", 0xc1d1d71ca71a5fe3ull },
+    { "loh_from_dots", 0x5af0098ffbb4d64aull },
     { "fresnel_schlick", 0x8d3297d639d8cc3eull },
-    { "ggx_d", 0xdd41cc26474a0f05ull },
-    { "smith_g1", 0x914876b0f7660e0bull },
-    { "smith_g2", 0x8aa9cb75584f0338ull },
-    { "smith_g2_uncorrelated", 0x87189bcf817d7d7full },
-    { "smith_vis", 0x81e878acfc7d9311ull },
-    { "smith_g1_hammon", 0x2eb51ca921a7143bull },
-    { "smith_g2_hammon", 0xefe30960594793c8ull },
-    { "smith_vis_hammon", 0xaa1a8cd819579b28ull },
-    { "diffuse_hammon", 0xc116ce7bdb7def0full },
-    { "brdf_hammon", 0x1b0fb4a9988c3d23ull },
+    { "ggx_d", 0x20b277145c20eb43ull },
+    { "smith_g1", 0x0d70d723708be01bull },
+    { "smith_g2", 0xe8f94c56927d8927ull },
+    { "smith_g2_uncorrelated", 0x018e21bf21e423aaull },
+    { "smith_vis", 0x1671c7b689ba80fbull },
+    { "smith_g1_hammon", 0x1339c973d84394f9ull },
+    { "smith_g2_hammon", 0xad548dfeb4e22987ull },
+    { "smith_vis_hammon", 0xe94f2258d41b5949ull },
+    { "diffuse_hammon", 0xb448e4fdac0ff4f6ull },
+    { "brdf_hammon", 0x62ff482c3d1a814bull },
 };
 #define FXH_N_PINNED_FAST (sizeof fxh_pinned_fast / sizeof fxh_pinned_fast[0])
 #endif
