@@ -8,8 +8,9 @@
  * error = |raw - v 2^frac| / max(1, 2^-10 v 2^frac) (the tier's bound: 1
  * LSB or 2^-10 relative, whichever is larger), held to exactly
  * FACET_FX_FAST_ERR_<NAME>; prints per kernel the samples, the max error,
- * the max LSB error where v 2^frac < 2^10 and the max relative error above,
- * with the argmax.  Also: every out-of-domain int32 class (INT32_MIN/MAX
+ * the max LSB error where v 2^frac < 2^10, the max relative error above and
+ * above 2^15 LSB (where the final rounding no longer shows), and the
+ * argmax of the error.  Also: every out-of-domain int32 class (INT32_MIN/MAX
  * included) gives the kernel at the clamped input, no output exceeds the
  * format maximum, and the exact key points the body promises. */
 #include <stdio.h>
@@ -53,7 +54,7 @@ static fast_fn cur;
 
 typedef struct {
     long n;
-    double max_err, max_lsb, max_rel;
+    double max_err, max_lsb, max_rel, max_rel_big;
     int32_t arg[FACET_FX_MAX_INPUTS];
     uint64_t got;
     double want;
@@ -79,6 +80,8 @@ static void one(const facet_fx_kernel *fk, const facet_kernel *k, const int32_t 
     } else if (diff / scaled > st->max_rel) {
         st->max_rel = diff / scaled;
     }
+    if (scaled >= 32768.0 && diff / scaled > st->max_rel_big)
+        st->max_rel_big = diff / scaled;
     if (err > st->max_err || st->n == 1) {
         st->max_err = err;
         st->got = got;
@@ -199,8 +202,12 @@ static void accuracy(const facet_fx_kernel *fk, const facet_kernel *k, double bo
         one(fk, k, in, &st);
     }
     edge_grid(fk, k, &st);
-    printf("%-22s %-8s %9ld %6.3f %6.3f 2^%6.2f  (", fk->name, fk->out_format, st.n, st.max_err, st.max_lsb,
+    printf(getenv("FACET_FX_FAST_DIGITS") ? "%-22s %-8s %9ld %.6f %6.3f 2^%6.2f " : "%-22s %-8s %9ld %7.4f %6.3f 2^%6.2f ", fk->name, fk->out_format, st.n, st.max_err, st.max_lsb,
            st.max_rel > 0 ? log2(st.max_rel) : -99.0);
+    if (st.max_rel_big > 0)
+        printf("2^%6.2f  (", log2(st.max_rel_big));
+    else
+        printf("%9s  (", "-");
     for (i = 0; i < fk->n_inputs; i++)
         printf("%s%d", i ? " " : "", (int)st.arg[i]);
     printf(") -> %llu / %.3f\n", (unsigned long long)st.got, st.want);
@@ -262,7 +269,8 @@ int main(void)
     size_t i;
     quick = getenv("FACET_TEST_QUICK") != NULL;
     th_name = "fx_fast";
-    printf("%-22s %-8s %9s %6s %6s %9s  argmax\n", "kernel", "format", "samples", "err", "LSB<1K", "rel>=1K");
+    printf("%-22s %-8s %9s %7s %6s %9s %9s  argmax of err\n", "kernel", "format", "samples", "err", "LSB<1K",
+           "rel>=1K", "rel>=32K");
     CHECK(N_FAST == facet_fx_kernel_count(), "fast kernels %u, fx kernels %u", (unsigned)N_FAST,
           (unsigned)facet_fx_kernel_count());
     for (i = 0; i < N_FAST; i++) {

@@ -197,68 +197,134 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
                                 const int32_t *lov, const int32_t *alpha, const int32_t *f0,
                                 const int32_t *albedo, size_t n);
 
-/* ---- fast tier -------------------------------------------------------------
- * facet_<kernel>_fx_fast: the same inputs (raw Q15 int32, same domains and
- * clamping) and the same output containers and formats as facet_<kernel>_fx
- * (FACET_FX_*_FRAC, FACET_FX_MAX_*), so a caller switches tier by name.
- * Bound, every kernel: |raw - v 2^frac| <= max(1 LSB, 2^-10 v 2^frac), v
- * the exact (oracle) value at the same raw inputs.  FACET_FX_FAST_ERR_<NAME>
- * is the measured maximum of |raw - v 2^frac| / max(1, 2^-10 v 2^frac) over
- * tests/test_fx_fast.c's sweep (enforced there; <= 1 is the tier's bound).
+/* ---- fast tier ---------------------------------------------------------------
+ * facet_<kernel>_fx_fast: the same inputs as facet_<kernel>_fx (raw Q15
+ * int32, the same domains, every int32 clamped the same way) and the same
+ * output containers, fraction bits and saturation values (FACET_FX_*_FRAC,
+ * FACET_FX_MAX_*): a caller switches tier by name.
+ * Bound, every kernel, every input: |raw - v 2^frac| <= max(1 LSB, 2^-10
+ * v 2^frac), v the exact value at the same raw inputs (the oracle).  The
+ * error measure is e = |raw - v 2^frac| / max(1, 2^-10 v 2^frac);
+ * FACET_FX_FAST_ERR_<NAME> is its measured maximum over
+ * tests/test_fx_fast.c's sweep (enforced there; the tier's bound is 1).
  * Integer only, no divide instruction, no libgcc helper (Cortex-M0/M4,
- * RV32IMC), bit-exact on every target (pinned hashes, tests/fx_hash.h).
- * Written once over the lane op layer (src/fx_fast_body.h).
+ * RV32IMC), bit-exact on every target (pinned hashes, tests/fx_hash.h);
+ * written once over the lane op layer (src/fx_fast_body.h), so a SIMD port
+ * instantiates the same body.  Cost: executed instructions per call on
+ * Cortex-M4 / Cortex-M0 (qemu trace, mean of bench/cortexm_main.c's 4
+ * inputs; gcc 13 -O2), the precise tier's in brackets.
  *
- * Datapath.  Inputs are clamped first.  Products are 16 x 16 -> 32 bit
- * (operands < 2^16, or a product bounded below 2^32 as noted in the body):
- * one MULS on Cortex-M0, one lane of a 16-bit SIMD multiplier.  Exact Q30
- * stages: S = NL + NV [<= 2^16], P = (2^16 - S)(2^16 + S) = (4 - s^2) 2^30
- * and Q = (2^15 - L.V 2^15) 2^16 = (4 - 2t) 2^30 [both <= 2^32 - 2^16],
- * u = min(P, Q) = (4 - 2 t_raised) 2^30, w = P - u = (2t - s^2) 2^30 (the
- * specular peak's cancellation, exact), c = ~u = L.H^2 2^32 - 1, N A, A S
- * [<= 2^31], NL NV, A^2 [<= 2^30].  Wide-range stages (D, Vis, G, the
- * Fresnel tail y^5, the specular sum) are pseudo-floats m 2^(512 - n): a
- * 16-bit mantissa m in [2^15, 2^16) and an exponent lane n < 2^11; a
- * product is one 16x16 multiply (< 2^32) and a 1-bit renormalisation, a
- * sum aligns the smaller mantissa (< 2^17 before its 1-bit
- * renormalisation), a fixed value enters through one clz and two shifts.
- * 1/x: the mantissa's top 7 bits index a 129-entry table of 2^31/m, the
- * next 8 interpolate linearly (error 2^-15.4, no Newton step needed: one
- * multiply of a < 2^10 difference by an 8-bit fraction); sqrt likewise
- * (97 entries on [1/4, 1), 2^-15), after an even normalising shift.  Each
- * pseudo-float step truncates (<= 2^-15); the one final rounding is to
- * nearest, ties up; results saturate at the format maximum.  The only
- * wide intermediate: brdf_hammon's UQ40.24 result, one 32x32->64 product
- * m 2^k2 x 2^k1 (m < 2^26).  No stage overflows: every bound above is
- * below 2^32, the exponent lanes stay in [0, 2^11). */
+ * Datapath (a specification a fixed-function pipeline can implement):
+ *   Inputs are clamped first (compare/select).  Exact stages:
+ *     S = NL + NV <= 2^16;  P = (2^16 - S)(2^16 + S) = (4 - s^2) 2^30 and
+ *     Q = (2^15 - LOV) 2^16 = (4 - 2t) 2^30, both <= 2^32 - 2^16;
+ *     u = min(P, Q) = (4 - 2 t_raised) 2^30 (the facet.h raise as one min);
+ *     w = P - u = (2t - s^2) 2^30 (the specular peak's cancellation, exact);
+ *     c = ~u = (L.H^2) 2^32 - 1; N A, A S <= 2^31; NL NV, A^2 <= 2^30.
+ *   1/x and sqrt: the normalised 32-bit mantissa (one clz, one shift; an
+ *     even shift for sqrt) indexes a 129-entry table of 2^35/x on [1, 2)
+ *     (resp. 97 entries of 2^20 sqrt on [1/4, 1)) with its top 7 bits; the
+ *     next 15 bits interpolate linearly (one multiply of a < 2^13
+ *     difference by a 15-bit fraction: < 2^28).  Error 2^-17 (1/x), 2^-16.5
+ *     (sqrt), no Newton step and no data-dependent loop.
+ *   Products: 16 x 16 -> 32 bit where the operands allow (Fresnel's
+ *     inputs, P(x), the clamped Q15 values: one MULS on Cortex-M0), else
+ *     the high word of one 32 x 32 -> 64 product (one UMULL on
+ *     Cortex-M3/M4), every operand < 2^32 and every product's high word
+ *     kept >= 2^21 so the truncation stays <= 2^-21; 2 NL NV (1 - a) and
+ *     e = w + a^2 s^2 are formed exactly in 64 bits (< 2^47, < 2^63), then
+ *     their top 32 bits (clz).
+ *   Wide ranges (D up to 2^20/pi, Vis, the Fresnel tail y^5 down to f0 =
+ *     0, the specular term up to 2^33) carry an exponent lane: a clz where
+ *     the range is wide, exponent sums elsewhere, all < 2^11 (biased, so
+ *     never negative); the Smith and D kernels with no 64-bit stage use
+ *     16-bit-mantissa pseudo-floats m 2^(512 - n), m in [2^15, 2^16).
+ *   Every intermediate truncates (floor); the one final rounding is to
+ *     nearest, ties up; results saturate at the format's maximum.
+ *   Why nothing overflows: each bound above is below 2^32 (64-bit values:
+ *     below 2^63), exponent lanes stay in [0, 2^11), and every shift count
+ *     is clamped to [0, 31]; the brackets in the body give each one.
+ * Measured (tests/test_fx_fast.c; LSB where v 2^frac < 2^10, relative
+ * where v 2^frac >= 2^15, argmax of e):
+ *   kernel                 e      LSB    rel       argmax (raw inputs)
+ *   noh_from_dots          0.514  0.514  -         (433, 617, -14467)
+ *   loh_from_dots          0.490  0.489  -         (-32755)
+ *   fresnel_schlick        0.501  0.500  -         (706, 26184)
+ *   ggx_d                  0.510  0.510  2^-15.25  (25925, 8397)
+ *   smith_g1               0.555  0.555  -         (122, 8397)
+ *   smith_g2               0.574  0.574  -         (153, 26259, 10282)
+ *   smith_g2_uncorrelated  0.600  0.600  -         (1020, 1948, 16439)
+ *   smith_vis              0.139  0.000  2^-12.86  (8196, 181, 4118)
+ *   smith_g1_hammon        0.512  0.511  -         (117, 8397)
+ *   smith_g2_hammon        0.512  0.511  -         (381, 9628, 27185)
+ *   smith_vis_hammon       0.036  0.000  2^-15.40  (32525, 32516, 5939)
+ *   diffuse_hammon         0.535  0.535  2^-13.52  (22245, 22273, 32768, 1390, 6)
+ *   brdf_hammon            0.746  0.746  2^-13.20  (32000, 128, 32, 33, 127, 128)
+ * (Q15 outputs never reach 2^15 LSB but at 1: no relative column.) */
 #define FACET_FX_FAST_TOL_REL 0.0009765625 /* 2^-10 */
-#define FACET_FX_FAST_ERR_NOH_FROM_DOTS         1.0
-#define FACET_FX_FAST_ERR_LOH_FROM_DOTS         1.0
-#define FACET_FX_FAST_ERR_FRESNEL_SCHLICK       1.0
-#define FACET_FX_FAST_ERR_GGX_D                 1.0
-#define FACET_FX_FAST_ERR_SMITH_G1              1.0
-#define FACET_FX_FAST_ERR_SMITH_G2              1.0
-#define FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED 1.0
-#define FACET_FX_FAST_ERR_SMITH_VIS             1.0
-#define FACET_FX_FAST_ERR_SMITH_G1_HAMMON       1.0
-#define FACET_FX_FAST_ERR_SMITH_G2_HAMMON       1.0
-#define FACET_FX_FAST_ERR_SMITH_VIS_HAMMON      1.0
-#define FACET_FX_FAST_ERR_DIFFUSE_HAMMON        1.0
-#define FACET_FX_FAST_ERR_BRDF_HAMMON           1.0
+#define FACET_FX_FAST_ERR_NOH_FROM_DOTS         0.514
+#define FACET_FX_FAST_ERR_LOH_FROM_DOTS         0.490
+#define FACET_FX_FAST_ERR_FRESNEL_SCHLICK       0.501
+#define FACET_FX_FAST_ERR_GGX_D                 0.510
+#define FACET_FX_FAST_ERR_SMITH_G1              0.555
+#define FACET_FX_FAST_ERR_SMITH_G2              0.574
+#define FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED 0.600
+#define FACET_FX_FAST_ERR_SMITH_VIS             0.139
+#define FACET_FX_FAST_ERR_SMITH_G1_HAMMON       0.512
+#define FACET_FX_FAST_ERR_SMITH_G2_HAMMON       0.512
+#define FACET_FX_FAST_ERR_SMITH_VIS_HAMMON      0.036
+#define FACET_FX_FAST_ERR_DIFFUSE_HAMMON        0.535
+#define FACET_FX_FAST_ERR_BRDF_HAMMON           0.746
 
+/* N.H = s / sqrt(2t) (1 at or past N.H = 1); domain and Q15 output as
+ * facet_noh_from_dots_fx.  One sqrt, one 1/x.
+ * Error: FACET_FX_FAST_ERR_NOH_FROM_DOTS.  Cost: 73 / 155 (181 / 1076). */
 int32_t facet_noh_from_dots_fx_fast(int32_t nol, int32_t nov, int32_t lov);
+/* L.H = sqrt((1 + L.V) / 2), Q15 (L.V = -1 gives 0).  One sqrt.
+ * Error: FACET_FX_FAST_ERR_LOH_FROM_DOTS.  Cost: 37 / 64 (84 / 416). */
 int32_t facet_loh_from_dots_fx_fast(int32_t lov);
+/* Schlick f0 + (1 - f0)(1 - cos)^5, Q15; F(f0, 1) = f0, F(f0, 0) = 1
+ * exactly.  1 mul, 3 high-word products; the error is the final rounding.
+ * Error: FACET_FX_FAST_ERR_FRESNEL_SCHLICK.  Cost: 23 / 63 (21 / 106). */
 int32_t facet_fresnel_schlick_fx_fast(int32_t f0, int32_t cos_theta);
+/* GGX D = alpha^2 / (pi d^2), d = (1 - n)(1 + n) + (n alpha)^2 exact in
+ * 64 bits; UQ19.13, max 2^20/pi.  One 1/x.
+ * Error: FACET_FX_FAST_ERR_GGX_D.  Cost: 83 / 271 (109 / 652). */
 uint32_t facet_ggx_d_fx_fast(int32_t noh, int32_t alpha);
+/* Smith G1 (exact GGX) = 2n / (n + sqrt(a^2 + (1 - a^2) n^2)), Q15.
+ * Pseudo-floats: one sqrt, one 1/x.
+ * Error: FACET_FX_FAST_ERR_SMITH_G1.  Cost: 162 / 294 (198 / 1063). */
 int32_t facet_smith_g1_fx_fast(int32_t nov, int32_t alpha);
+/* Smith G2 height-correlated, Q15.  Two sqrt, one 1/x.
+ * Error: FACET_FX_FAST_ERR_SMITH_G2.  Cost: 238 / 553 (352 / 1715). */
 int32_t facet_smith_g2_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+/* G1(N.L) G1(N.V), Q15.  Two sqrt, one 1/x.
+ * Error: FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED.  Cost: 262 / 582 (366 / 1727). */
 int32_t facet_smith_g2_uncorrelated_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+/* Vis = 0.5 / (nv r(nl) + nl r(nv)), UQ16.16.  Two sqrt, one 1/x.
+ * Error: FACET_FX_FAST_ERR_SMITH_VIS.  Cost: 216 / 477 (340 / 1674). */
 uint32_t facet_smith_vis_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+/* Hammon G1 = 2n / (n (2 - a) + a), the denominator exact; Q15.  One 1/x.
+ * Error: FACET_FX_FAST_ERR_SMITH_G1_HAMMON.  Cost: 54 / 126 (62 / 508). */
 int32_t facet_smith_g1_hammon_fx_fast(int32_t nov, int32_t alpha);
+/* Hammon G2 = 2 nl nv / m, m exact in 64 bits; Q15.  One 1/x.
+ * Error: FACET_FX_FAST_ERR_SMITH_G2_HAMMON.  Cost: 89 / 237 (101 / 600). */
 int32_t facet_smith_g2_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+/* Hammon Vis = 0.5 / m; UQ16.16, max 13117.  One 1/x.
+ * Error: FACET_FX_FAST_ERR_SMITH_VIS_HAMMON.  Cost: 71 / 178 (87 / 558). */
 uint32_t facet_smith_vis_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+/* Hammon's diffuse (facet.h's formula and raise); UQ8.24, max 20.65.
+ * 32-bit stages: P(x) = x (1 + y + ... + y^4) by 16-bit products, the
+ * bracket in Q25 [< 2^31.02], times albedo / pi; one sqrt, one 1/x.
+ * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON.  Cost: 143 / 462 (494 / 1960). */
 uint32_t facet_diffuse_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                       int32_t albedo);
+/* The whole model D Vis_hammon F(f0, L.H) + diffuse from the dots (N.H
+ * never formed, the peak's cancellation exact); UQ40.24, max 4.38e9.  One
+ * sqrt, three 1/x, 26 high-word products; spec and diffuse added in Q29
+ * (64 bits) and rounded once.
+ * Error: FACET_FX_FAST_ERR_BRDF_HAMMON (relative 2^-13.2 above 2^15 LSB).
+ * Cost: 300 / 1176 (1051 / 4221). */
 uint64_t facet_brdf_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                    int32_t f0, int32_t albedo);
 
