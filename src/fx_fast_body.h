@@ -1,25 +1,28 @@
 /* fx_fast_body.h - the fx_fast tier (facet/fx.h "fast tier"), written once
  * over the lane op layer of src/fx_body.h: the scalar specification
- * (src/fx_fast.c over src/fx_ops_scalar.h) and any SIMD port instantiate
- * these same bodies.  Branch-free (selects, min/max, per-lane shifts and
- * table lookups), integer only, every intermediate below 2^32 except the
- * 64-bit output of brdf_hammon (one fxv_mulw).
+ * (src/fx_fast.c over src/fx_ops_scalar.h) and the SIMD ports (the ops are
+ * in ports/avx2/fx_avx2.c and ports/neon/fx_neon.c) instantiate these same
+ * bodies.  Branch-free (selects, min/max, per-lane shifts, table lookups),
+ * integer only.
  *
- * The datapath (the "datapath" paragraph of facet/fx.h says it in short):
- *   - raw Q15 inputs are clamped to the domain first (fxv_clamp);
- *   - products are 16 x 16 -> 32 bit (fxv_mul32 of operands < 2^16 or
- *     whose product is known below 2^32): one MULS on Cortex-M0;
- *   - wide-range quantities (D, Vis, the Fresnel tail, the specular term)
- *     are pseudo-floats fxs = m 2^(512 - n): a 16-bit mantissa m in
- *     [2^15, 2^16) (0 for zero, then n >= 1024) and an exponent lane n;
- *     a product is one 16x16 multiply and a 1-bit renormalisation, a
- *     conversion from a 32-bit fixed value one clz and two shifts;
- *   - 1/x and sqrt(x): 129- and 97-entry tables of the function on the
- *     normalised mantissa, linearly interpolated (one table step, one
- *     multiply): 1/x to 2^-15.4, sqrt to 2^-15 relative; no iteration;
+ * The datapath (facet/fx.h's "datapath" paragraph says it in short):
+ *   - raw Q15 inputs are clamped to the domain first;
+ *   - products of small operands are 16 x 16 -> 32 bit (fxv_mul32: the
+ *     operands and the product below 2^32 as the brackets show), wider
+ *     ones the high word of one 32 x 32 -> 64 product (fxw_mulhi); a chain
+ *     of high words keeps every factor >= 2^21, so no renormalisation is
+ *     needed inside it and each truncation is <= 2^-21 relative;
+ *   - the quantities exact in 64 bits (d of D, w of the Smith roots, e and
+ *     the Smith denominators) give their top 32 bits (fxw_top: one clz);
+ *   - each value carries a scale 2^-E, E a constant or, where the range is
+ *     wide, an exponent lane (a sum of clz counts and constants);
+ *   - 1/x and sqrt(x): 129- and 97-entry Q20 tables of the function on the
+ *     normalised mantissa, 7 index bits, 15 bits of linear interpolation
+ *     (one multiply): 1/x to 2^-17, sqrt to 2^-16.5 relative; no iteration;
  *   - every rounding is a truncation (floor) except the final one of each
- *     kernel (round to nearest, ties up) and the few marked "+ half".
- * Bounds in brackets say why a value fits its 32 bits. */
+ *     kernel (round to nearest, ties up) and the few marked "+ half";
+ *     results saturate at the format's maximum (fxr_div).
+ * Bounds in brackets say why a value fits its 32 (or 64) bits. */
 #ifndef FACET_FX_FAST_BODY_H
 #define FACET_FX_FAST_BODY_H
 
@@ -79,15 +82,6 @@ FXF_INLINE fxv_u32 fxf_rcp20(fxv_u32 m)
     return fxv_sub32(r0, fxv_shr(fxv_add32(fxv_mul32(fxv_sub32(r0, r1), f), fxv_k32(1u << 14)), 15));
 }
 
-/* r ~ 2^31 / m for a 16-bit m in [2^15, 2^16): r in [2^15, 2^16) (the same
- * table, 8 interpolation bits, truncated to 16 bits: <= 2^-15 relative) */
-FXF_INLINE fxv_u32 fxf_rcp16(fxv_u32 m)
-{
-    fxv_u32 i = fxv_sub32(fxv_shr(m, 8), fxv_k32(128)), f = fxv_and(m, fxv_k32(255));
-    fxv_u32 r0 = fxv_lut(fxf_rcp_tab, i), r1 = fxv_lut(fxf_rcp_tab, fxv_add32(i, fxv_k32(1)));
-    return fxv_shr(fxv_sub32(r0, fxv_shr(fxv_add32(fxv_mul32(fxv_sub32(r0, r1), f), fxv_k32(128)), 8)), 4);
-}
-
 /* s ~ 2^20 sqrt(x / 2^32) for x in [2^30, 2^32): s in [2^19, 2^20).  7
  * index bits, 15 interpolation bits [(S[j+1] - S[j]) < 2^13]; relative
  * error <= 2^-16.5 (h^2/8 max|f''| at 1/4: 2^-16 absolute on sqrt >= 1/2). */
@@ -96,94 +90,6 @@ FXF_INLINE fxv_u32 fxf_sqrt20(fxv_u32 x)
     fxv_u32 j = fxv_sub32(fxv_shr(x, 25), fxv_k32(32)), f = fxv_and(fxv_shr(x, 10), fxv_k32(0x7FFF));
     fxv_u32 s0 = fxv_lut(fxf_sqrt_tab, j), s1 = fxv_lut(fxf_sqrt_tab, fxv_add32(j, fxv_k32(1)));
     return fxv_add32(s0, fxv_shr(fxv_add32(fxv_mul32(fxv_sub32(s1, s0), f), fxv_k32(1u << 14)), 15));
-}
-
-/* the same to 16 bits: s ~ 2^16 sqrt(x / 2^32) in [2^15, 2^16) */
-FXF_INLINE fxv_u32 fxf_sqrt16(fxv_u32 x) { return fxv_shr(fxf_sqrt20(x), 4); }
-
-/* ---- fxs: m 2^(512 - n), m in [2^15, 2^16) or m = 0 (then n >= 1024) ---- */
-typedef struct { fxv_u32 m, n; } fxs;
-
-#define FXS_ZERO_N 1536u
-
-/* x 2^-f of a 32-bit x (0 allowed): m = floor(x 2^k / 2^16), k = clz(x),
- * n = 496 + k + f.  Truncation <= 2^-15 relative. */
-FXF_INLINE fxs fxs_q(fxv_u32 x, unsigned f)
-{
-    fxs r;
-    fxv_u32 k = fxv_clz(x), z = fxv_lt(x, fxv_k32(1));
-    r.m = fxv_shr(fxv_shlv(x, fxv_min(k, fxv_k32(31))), 16);
-    r.n = fxv_sel(z, fxv_k32(FXS_ZERO_N), fxv_add32(k, fxv_k32(496u + f)));
-    return r;
-}
-
-/* a constant: m in [2^15, 2^16), value m 2^-f */
-FXF_INLINE fxs fxs_k(uint32_t m, unsigned f)
-{
-    fxs r;
-    r.m = fxv_k32(m);
-    r.n = fxv_k32(512u + f);
-    return r;
-}
-
-/* a b: p = ma mb in [2^30, 2^32), h = its bit 31, m = p >> (15 + h).
- * Truncation <= 2^-15 relative.  A zero stays zero (n >= 1024). */
-FXF_INLINE fxs fxs_mul(fxs a, fxs b)
-{
-    fxs r;
-    fxv_u32 p = fxv_mul32(a.m, b.m), h = fxv_shr(p, 31);
-    r.m = fxv_shrv(p, fxv_add32(h, fxv_k32(15)));
-    r.n = fxv_sub32(fxv_add32(a.n, b.n), fxv_add32(h, fxv_k32(527)));
-    return r;
-}
-
-/* a + b, both >= 0: the smaller aligned to the larger (truncated), one
- * renormalisation bit.  [mb + (ms >> d) < 2^17] */
-FXF_INLINE fxs fxs_add(fxs a, fxs b)
-{
-    fxs r;
-    fxv_u32 bb = fxv_lt(b.n, a.n); /* b the larger */
-    fxv_u32 big = fxv_sel(bb, b.m, a.m), sml = fxv_sel(bb, a.m, b.m);
-    fxv_u32 n = fxv_min(a.n, b.n), d = fxv_min(fxv_sub32(fxv_max(a.n, b.n), n), fxv_k32(31));
-    fxv_u32 s = fxv_add32(big, fxv_shrv(sml, d)), h = fxv_shr(s, 16);
-    r.m = fxv_shrv(s, h);
-    r.n = fxv_sub32(n, h);
-    return r;
-}
-
-/* 1 / a, a > 0: 2^(n - 512) / m = r 2^-31 2^(n - 512), n' = 1055 - n */
-FXF_INLINE fxs fxs_rcp(fxs a)
-{
-    fxs r;
-    r.m = fxf_rcp16(a.m);
-    r.n = fxv_sub32(fxv_k32(1055), a.n);
-    return r;
-}
-
-/* sqrt(a), a > 0: m 2^(16 - (n & 1)) is in [2^30, 2^32) (the exponent made
- * even), n' = 264 + floor(n / 2). */
-FXF_INLINE fxs fxs_sqrt(fxs a)
-{
-    fxs r;
-    fxv_u32 odd = fxv_and(a.n, fxv_k32(1));
-    r.m = fxf_sqrt16(fxv_shlv(a.m, fxv_sub32(fxv_k32(16), odd)));
-    r.n = fxv_add32(fxv_shr(a.n, 1), fxv_k32(264));
-    return r;
-}
-
-/* round(a 2^f) (ties up), saturated at max (a 32-bit output) */
-FXF_INLINE fxv_u32 fxs_fixed(fxs a, unsigned f, uint32_t max)
-{
-    /* right: k = n - 512 - f >= 1: ((m >> (k - 1)) + 1) >> 1;
-     * left:  k <= 0: m << -k, -k <= 16 [m << 16 < 2^32], else saturate */
-    fxv_u32 thr = fxv_k32(513u + f), right = fxv_lt(a.n, thr);
-    fxv_u32 kr = fxv_min(fxv_sub32(fxv_max(a.n, thr), thr), fxv_k32(31));
-    fxv_u32 kl = fxv_sub32(fxv_k32(512u + f), fxv_min(a.n, fxv_k32(512u + f)));
-    fxv_u32 vr = fxv_shr(fxv_add32(fxv_shrv(a.m, kr), fxv_k32(1)), 1);
-    fxv_u32 vl = fxv_shlv(a.m, fxv_min(kl, fxv_k32(16)));
-    fxv_u32 v = fxv_sel(right, vl, vr);
-    v = fxv_sel(fxv_lt(fxv_k32(16), kl), fxv_k32(max), v);
-    return fxv_min(v, fxv_k32(max));
 }
 
 /* ---- shared pieces ---------------------------------------------------------- */
@@ -333,52 +239,64 @@ FXF_INLINE fxv_u32 fxf_fast_ggx_d(fxv_i32 noh, fxv_i32 alpha)
 }
 
 /* ---- Smith, exact ------------------------------------------------------------
- * r(x) = sqrt(a^2 (1 - x)(1 + x) + x^2): A^2 [<= 2^30] and (2^15 - X)(2^15 + X)
- * [<= 2^30] as fxs, X^2 Q30 exact. */
-FXF_INLINE fxs fxf_smith_r(fxv_u32 x, fxs a2)
+ * r(x) = sqrt(w), w = a^2 (1 - x)(1 + x) + x^2: w60 = A^2 (2^15 - X)(2^15 + X)
+ * + X^2 2^30 Q60 exact [<= 2^60, >= a^2 2^60 >= 2^40]; its top 32 bits
+ * (w = top 2^-E, E = 28 + e in [31, 52]); the exponent made even by
+ * top >> (E & 1), the table: r = sq 2^-(4 + H), H = E >> 1 in [15, 26],
+ * sq in [2^19, 2^20); returned as Q30: sq 2^(26 - H) [r <= 1: <= 2^30;
+ * r >= alpha >= 2^-10: >= 2^20]. */
+FXF_INLINE fxv_u32 fxw_smith_r30(fxv_u32 x, fxv_u32 a2)
 {
-    fxs t = fxs_mul(a2, fxs_q(fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), x), fxv_add32(fxv_k32(FXF_ONE), x)), 30));
-    return fxs_sqrt(fxs_add(t, fxs_q(fxv_mul32(x, x), 30)));
+    fxv_u32 e, top, ee, hh;
+    top = fxw_top(fxv_add64(fxv_mulw(a2, fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), x), fxv_add32(fxv_k32(FXF_ONE), x))),
+                            fxv_mulw(fxv_mul32(x, x), fxv_k32(1u << 30))), &e);
+    ee = fxv_add32(e, fxv_k32(28));
+    hh = fxv_shr(ee, 1);
+    return fxv_shlv(fxf_sqrt20(fxv_shrv(top, fxv_and(ee, fxv_k32(1)))), fxv_sub32(fxv_k32(26), hh));
 }
 
-/* G1 = 2 n / (n + r(n)) */
+/* G1 = 2 n / (n + r(n)): den30 = N 2^15 + r30 [<= 2^31]; G1 2^15 = 2N 2^30 /
+ * den30, one fxr_div.  G1(0) = 0, G1(1) = 1. */
 FXF_INLINE fxv_u32 fxf_fast_smith_g1(fxv_i32 nov, fxv_i32 alpha)
 {
     fxv_u32 n = fxf_unit(nov), a = fxf_alpha(alpha);
-    fxs den = fxs_add(fxs_q(n, 15), fxf_smith_r(n, fxs_q(fxv_mul32(a, a), 30)));
-    return fxs_fixed(fxs_mul(fxs_q(n, 14), fxs_rcp(den)), 15, FXF_ONE);
+    fxv_u32 den = fxv_add32(fxv_shl(n, 15), fxw_smith_r30(n, fxv_mul32(a, a)));
+    return fxr_div(fxv_shl(n, 1), den, 30, FXF_ONE);
 }
 
-/* nv r(nl) + nl r(nv) */
-FXF_INLINE fxs fxf_g2_den(fxv_u32 nl, fxv_u32 nv, fxs a2)
+/* nv r(nl) + nl r(nv) in Q45, in 64 bits [< 2^46, >= 2^28], top 32 bits:
+ * ~ dt 2^(32 - e) */
+FXF_INLINE fxv_u32 fxf_g2_den(fxv_u32 nl, fxv_u32 nv, fxv_u32 a2, fxv_u32 *e)
 {
-    return fxs_add(fxs_mul(fxs_q(nv, 15), fxf_smith_r(nl, a2)), fxs_mul(fxs_q(nl, 15), fxf_smith_r(nv, a2)));
+    return fxw_top(fxv_add64(fxv_mulw(nv, fxw_smith_r30(nl, a2)), fxv_mulw(nl, fxw_smith_r30(nv, a2))), e);
 }
 
-/* G2 = 2 nl nv / (nv r(nl) + nl r(nv)) [NL NV <= 2^30] */
+/* G2 = 2 nl nv / den: G2 2^15 = 2 NL NV 2^30 / den45 = NL NV / dt 2^(e - 1) */
 FXF_INLINE fxv_u32 fxf_fast_smith_g2(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
 {
-    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
-    fxs den = fxf_g2_den(nl, nv, fxs_q(fxv_mul32(a, a), 30));
-    return fxs_fixed(fxs_mul(fxs_q(fxv_mul32(nl, nv), 29), fxs_rcp(den)), 15, FXF_ONE);
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha), e;
+    fxv_u32 dt = fxf_g2_den(nl, nv, fxv_mul32(a, a), &e);
+    return fxr_divb(fxv_mul32(nl, nv), dt, fxv_sub32(fxv_k32(96), e), FXF_ONE);
 }
 
-/* Vis = 0.5 / (nv r(nl) + nl r(nv)), UQ16.16 */
+/* Vis = 0.5 / den: Vis 2^16 = 2^60 / den45 = 2^31 / dt 2^(e - 3) [< 2^30] */
 FXF_INLINE fxv_u32 fxf_fast_smith_vis(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
 {
-    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
-    fxs v = fxs_rcp(fxf_g2_den(nl, nv, fxs_q(fxv_mul32(a, a), 30)));
-    v.n = fxv_add32(v.n, fxv_k32(1));
-    return fxs_fixed(v, FACET_FX_VIS_FRAC, FACET_FX_MAX_VIS);
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha), e;
+    fxv_u32 dt = fxf_g2_den(nl, nv, fxv_mul32(a, a), &e);
+    return fxr_divb(fxv_k32(1u << 31), dt, fxv_sub32(fxv_k32(98), e), FACET_FX_MAX_VIS);
 }
 
-/* G1(nl) G1(nv) = 4 nl nv / ((nl + r(nl)) (nv + r(nv))) */
+/* G1(nl) G1(nv) = 4 nl nv / ((nl + r(nl)) (nv + r(nv))): the two sums Q30
+ * [<= 2^31], their product Q60 [<= 2^62] ~ pt 2^(32 - e);
+ * G 2^15 = NL NV 2^47 / prod = NL NV / pt 2^(15 + e) */
 FXF_INLINE fxv_u32 fxf_fast_smith_g2_uncorrelated(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
 {
-    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
-    fxs a2 = fxs_q(fxv_mul32(a, a), 30);
-    fxs dl = fxs_add(fxs_q(nl, 15), fxf_smith_r(nl, a2)), dv = fxs_add(fxs_q(nv, 15), fxf_smith_r(nv, a2));
-    return fxs_fixed(fxs_mul(fxs_q(fxv_mul32(nl, nv), 28), fxs_rcp(fxs_mul(dl, dv))), 15, FXF_ONE);
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha), a2 = fxv_mul32(a, a), e;
+    fxv_u32 dl = fxv_add32(fxv_shl(nl, 15), fxw_smith_r30(nl, a2));
+    fxv_u32 dv = fxv_add32(fxv_shl(nv, 15), fxw_smith_r30(nv, a2));
+    fxv_u32 pt = fxw_top(fxv_mulw(dl, dv), &e);
+    return fxr_divb(fxv_mul32(nl, nv), pt, fxv_sub32(fxv_k32(80), e), FXF_ONE);
 }
 
 /* ---- Smith, Hammon ------------------------------------------------------------
@@ -444,7 +362,8 @@ FXF_INLINE fxv_u32 fxf_p5(fxv_u32 x)
 #define FXW_INV_2PI  683565276u  /* round(2^32 / (2 pi)) */
 
 /* The diffuse bracket B = (1 - a) 1.05 P(nl) P(nv) + a rough + albedo a
- * 0.1159 pi in Q25 [B <= 64.9: < 2^31.02], times albedo / pi: Q25 [<= 20.65].
+ * 0.1159 pi in Q25 [B <= 64.9: < 2^31.02], times albedo / pi (Q33): Q26
+ * [<= 20.65: < 2^30.4].
  * With t = t_r = x 2^-(31 + k) (x = c 2^k in [2^30, 2^32), the sqrt's
  * normalised c) and L.H = ls 2^-(20 + h):
  *   rough = t (4.5 - t) / 10 (1 + L.H / s)
@@ -453,7 +372,7 @@ FXF_INLINE fxv_u32 fxf_p5(fxv_u32 x)
  *   1 / s = rS 2^(kS - 36), kS = clz(S) in [15, 23], rS = rcp20(S 2^kS)
  *   q = 1 + L.H / s  Q24 = 2^24 + hi(ls 2^12, rS 2^12) >> (24 + h - kS)  [shift 1..17;
  *                 L.H / s <= 128: q < 2^31.01]
- *   a rough = x2 2^-(23 + k), x2 = hi(hi(mh q) (A 2^19/10) 2), to Q25.
+ *   a rough = x2 2^-(24 + k), x2 = hi(2 hi(mh, 2 A 2^19/10), q), to Q25.
  * Each term's relative error <= 2^-13.4 (the P sums), its truncations
  * <= 2^-25 absolute: below the output's LSB (2^-24) even at albedo = 1. */
 FXF_INLINE fxv_u32 fxw_diffuse26(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 alb, fxv_u32 s,
@@ -494,20 +413,20 @@ FXF_INLINE fxv_u32 fxf_fast_diffuse_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov
 
 /* ---- the whole model ------------------------------------------------------------
  * brdf = spec + diffuse, spec = (a 2t)^2 F / (2 pi e^2 m) (fx_kernels.c):
- *   y = 1 - L.H = u 2^-32 / (1 + L.H): (1 + L.H) Q15 is a normalised
- *     mantissa [2^15, 2^16), r1 = rcp16 ~ 2^16 / (1 + L.H); u 2^ku in
+ *   y = 1 - L.H = u 2^-32 / (1 + L.H): (1 + L.H) Q31 is a normalised
+ *     mantissa [2^31, 2^32), r1 = rcp20 ~ 2^20 / (1 + L.H); u 2^ku in
  *     [2^31, 2^32) (u = 0 read as 1: y ~ 2^-32, its y^5 vanishes);
  *     y = ym 2^-(32 + ku), y^5 = y5 2^-(32 + 5 ku) [ym >= 2^30, y5 >= 2^22]
  *   F = f0 + (1 - f0) y^5 = Fs 2^-(30 + j), j = min(5 ku, clz(F0) - 16)
  *     (f0 = 0: j = 5 ku, so F keeps its relative precision down to L = V)
  *     [F0 2^(15 + j) < 2^31, the tail < 2^30], then normalised (kF)
  *   a 2t = hi(A 2^ka, x) 2^-(13 + ka + k)   [>= 2^29], squared [>= 2^26]
- *   e60 = (A S)^2 + w 2^30 (exact, < 2^63), m45 = 2 NL NV (2^15 - A) +
- *     A S 2^15 (exact, < 2^47): top 32 bits, normalised
- *   1 / (e^2 m): rcp16 of the normalised product [>= 2^29 before]
+ *   e60 = (A S)^2 + w 2^30 (exact, < 2^63): top 32 bits, normalised
+ *   m30 = (1 - a) 2 nl nv 2^30 + A S [<= 2^31, >= 2^15], normalised
+ *   1 / (e^2 m): rcp20 of the normalised product [>= 2^29 before]
  *   spec = sp 2^-Es, Es an exponent lane (biased by 256; spec < 2^33)
  * brdf Q29 in 64 bits = spec sp 2^(29 - Es) (one 32x32->64 product by a
- * power of two <= 2^31) + diffuse Q25 2^4, rounded once to UQ40.24. */
+ * power of two <= 2^31) + diffuse Q26 2^3, rounded once to UQ40.24. */
 FXF_INLINE fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
                                            fxv_i32 f0_in, fxv_i32 albedo)
 {

@@ -231,18 +231,21 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
  *     inputs, P(x), the clamped Q15 values: one MULS on Cortex-M0), else
  *     the high word of one 32 x 32 -> 64 product (one UMULL on
  *     Cortex-M3/M4), every operand < 2^32 and every product's high word
- *     kept >= 2^21 so the truncation stays <= 2^-21; 2 NL NV (1 - a) and
- *     e = w + a^2 s^2 are formed exactly in 64 bits (< 2^47, < 2^63), then
- *     their top 32 bits (clz).
+ *     kept >= 2^21 so the truncation stays <= 2^-21.  The sums that need
+ *     it (d = 1 - n^2 (1 - a^2), the Smith w = a^2 + (1 - a^2) x^2,
+ *     Hammon's m = (1 - a) 2 nl nv + a s, e = w + a^2 s^2, the Smith
+ *     denominators) are formed exactly in 64 bits (< 2^63), then their top
+ *     32 bits (one clz); brdf_hammon keeps m in Q30 (>= 2^15).
  *   Wide ranges (D up to 2^20/pi, Vis, the Fresnel tail y^5 down to f0 =
  *     0, the specular term up to 2^33) carry an exponent lane: a clz where
- *     the range is wide, exponent sums elsewhere, all < 2^11 (biased, so
- *     never negative); the Smith and D kernels with no 64-bit stage use
- *     16-bit-mantissa pseudo-floats m 2^(512 - n), m in [2^15, 2^16).
+ *     the range is wide, sums of counts and constants elsewhere, all below
+ *     2^10 (biased, so never negative).  A quotient is one table
+ *     reciprocal of the normalised divisor times the normalised dividend,
+ *     then one rounded shift by the lane's exponent (saturating).
  *   Every intermediate truncates (floor); the one final rounding is to
  *     nearest, ties up; results saturate at the format's maximum.
  *   Why nothing overflows: each bound above is below 2^32 (64-bit values:
- *     below 2^63), exponent lanes stay in [0, 2^11), and every shift count
+ *     below 2^63), exponent lanes stay in [0, 2^10), and every shift count
  *     is clamped to [0, 31]; the brackets in the body give each one.
  * Measured (tests/test_fx_fast.c; LSB where v 2^frac < 2^10, relative
  * where v 2^frac >= 2^15, argmax of e):
@@ -251,10 +254,10 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
  *   loh_from_dots          0.490  0.489  -         (-32755)
  *   fresnel_schlick        0.501  0.500  -         (706, 26184)
  *   ggx_d                  0.510  0.510  2^-15.25  (25925, 8397)
- *   smith_g1               0.555  0.555  -         (122, 8397)
- *   smith_g2               0.574  0.574  -         (153, 26259, 10282)
- *   smith_g2_uncorrelated  0.600  0.600  -         (1020, 1948, 16439)
- *   smith_vis              0.139  0.000  2^-12.86  (8196, 181, 4118)
+ *   smith_g1               0.536  0.536  -         (129, 8397)
+ *   smith_g2               0.521  0.520  -         (151, 29643, 9878)
+ *   smith_g2_uncorrelated  0.534  0.534  -         (355, 9954, 18199)
+ *   smith_vis              0.053  0.000  2^-14.25  (16539, 16545, 64)
  *   smith_g1_hammon        0.512  0.511  -         (117, 8397)
  *   smith_g2_hammon        0.512  0.511  -         (381, 9628, 27185)
  *   smith_vis_hammon       0.036  0.000  2^-15.40  (32525, 32516, 5939)
@@ -266,10 +269,10 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
 #define FACET_FX_FAST_ERR_LOH_FROM_DOTS         0.490
 #define FACET_FX_FAST_ERR_FRESNEL_SCHLICK       0.501
 #define FACET_FX_FAST_ERR_GGX_D                 0.510
-#define FACET_FX_FAST_ERR_SMITH_G1              0.555
-#define FACET_FX_FAST_ERR_SMITH_G2              0.574
-#define FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED 0.600
-#define FACET_FX_FAST_ERR_SMITH_VIS             0.139
+#define FACET_FX_FAST_ERR_SMITH_G1              0.536
+#define FACET_FX_FAST_ERR_SMITH_G2              0.521
+#define FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED 0.534
+#define FACET_FX_FAST_ERR_SMITH_VIS             0.053
 #define FACET_FX_FAST_ERR_SMITH_G1_HAMMON       0.512
 #define FACET_FX_FAST_ERR_SMITH_G2_HAMMON       0.512
 #define FACET_FX_FAST_ERR_SMITH_VIS_HAMMON      0.036
@@ -292,7 +295,7 @@ int32_t facet_fresnel_schlick_fx_fast(int32_t f0, int32_t cos_theta);
  * Error: FACET_FX_FAST_ERR_GGX_D.  Cost: 83 / 271 (109 / 652). */
 uint32_t facet_ggx_d_fx_fast(int32_t noh, int32_t alpha);
 /* Smith G1 (exact GGX) = 2n / (n + sqrt(a^2 + (1 - a^2) n^2)), Q15.
- * Pseudo-floats: one sqrt, one 1/x.
+ * w exact in 64 bits, one sqrt, one 1/x.
  * Error: FACET_FX_FAST_ERR_SMITH_G1.  Cost: 162 / 294 (198 / 1063). */
 int32_t facet_smith_g1_fx_fast(int32_t nov, int32_t alpha);
 /* Smith G2 height-correlated, Q15.  Two sqrt, one 1/x.
