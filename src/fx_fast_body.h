@@ -356,7 +356,7 @@ FXF_INLINE fxv_u32 fxf_p5(fxv_u32 x)
 }
 
 #define FXW_C105     34406u      /* round(1.05 2^15) */
-#define FXW_TENTH    52429u      /* round(2^19 / 10) */
+#define FXW_TENTH    104857u     /* floor(2^20 / 10) */
 #define FXW_MULTI    1563843070u /* round(0.1159 pi 2^32) */
 #define FXW_INV_PI   83443u      /* round(2^18 / pi) */
 #define FXW_INV_2PI  683565276u  /* round(2^32 / (2 pi)) */
@@ -372,7 +372,7 @@ FXF_INLINE fxv_u32 fxf_p5(fxv_u32 x)
  *   1 / s = rS 2^(kS - 36), kS = clz(S) in [15, 23], rS = rcp20(S 2^kS)
  *   q = 1 + L.H / s  Q24 = 2^24 + hi(ls 2^12, rS 2^12) >> (24 + h - kS)  [shift 1..17;
  *                 L.H / s <= 128: q < 2^31.01]
- *   a rough = x2 2^-(24 + k), x2 = hi(2 hi(mh, 2 A 2^19/10), q), to Q25.
+ *   a rough = x2 2^-(24 + k), x2 = hi(2 hi(mh, A floor(2^20/10)), q), to Q25.
  * Each term's relative error <= 2^-13.4 (the P sums), its truncations
  * <= 2^-25 absolute: below the output's LSB (2^-24) even at albedo = 1. */
 FXF_INLINE fxv_u32 fxw_diffuse26(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 alb, fxv_u32 s,
@@ -386,17 +386,15 @@ FXF_INLINE fxv_u32 fxw_diffuse26(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 alb,
     fxv_u32 ks = fxv_clz(s), rs = fxf_rcp20(fxv_shlv(s, ks));
     fxv_u32 q = fxv_add32(fxv_k32(1u << 24), fxv_shrv(fxw_mulhi(fxv_shl(lh.s, 12), fxv_shl(rs, 12)),
                                                       fxv_sub32(fxv_add32(lh.h, fxv_k32(24)), ks)));
-    /* a t (4.5 - t) / 10 = x1 2^-(31 + k) [A 2^19/10 2 < 2^31.7; x1 <= 2^30:
-     * t (4.5 - t) / 10 <= 1/2], doubled; a rough = x2 2^-(24 + k) */
-    fxv_u32 x1 = fxw_mulhi(mh, fxv_shl(fxv_mul32(a, fxv_k32(FXW_TENTH)), 1));
-    fxv_u32 x2 = fxw_mulhi(fxv_shl(x1, 1), q);
-    /* to Q25: x2 2^(1 - k), k even: k = 0 a left shift by 1 [a rough <= 64.5:
-     * x2 < 2^30.01], else right by k - 1; + half of the last step */
-    fxv_u32 rough = fxv_sel(fxv_lt(k, fxv_k32(1)), fxv_shl(x2, 1),
-                            fxv_shrv(x2, fxv_sub32(fxv_max(k, fxv_k32(1)), fxv_k32(1))));
+    /* a t (4.5 - t) / 10 = x1 2^-(31 + k) [mh < 4.5 2^29: t < 2^(1 - k);
+     * A floor(2^20 / 10) < 2^31.68: x1 < 2^30.85]; a rough = x2 2^-(24 + k),
+     * x2 = hi(2 x1, q); Q25: 2 x2 >> k [a rough 2^(25 + k) < 2^31.9: rough
+     * <= 0.45 t (1 + 128 sqrt(t/2)) with t < 2^(1 - k)] */
+    fxv_u32 x1 = fxw_mulhi(mh, fxv_mul32(a, fxv_k32(FXW_TENTH)));
+    fxv_u32 rough = fxv_shrv(fxv_shl(fxw_mulhi(fxv_shl(x1, 1), q), 1), k);
     fxv_u32 multi = fxw_mulhi(fxv_shl(fxv_mul32(alb, a), 1), fxv_k32(FXW_MULTI));    /* Q31 */
     fxv_u32 b = fxv_add32(fxv_add32(fxv_shr(fxv_add32(smooth, fxv_k32(8)), 4), rough),
-                          fxv_shr(fxv_add32(multi, fxv_k32(33)), 6)); /* the 1 of 33: rough's half unit */
+                          fxv_shr(fxv_add32(multi, fxv_k32(32)), 6));
     return fxw_mulhi(b, fxv_mul32(alb, fxv_k32(FXW_INV_PI)));                         /* alb/pi Q33 -> Q26 */
 }
 
@@ -408,7 +406,7 @@ FXF_INLINE fxv_u32 fxf_fast_diffuse_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov
     fxf_root lh = fxf_sqrt32(g.c);
     fxv_u32 k = fxv_shl(lh.h, 1);
     fxv_u32 d = fxw_diffuse26(nl, nv, fxf_alpha(alpha), fxf_unit(albedo), g.s, g.c, fxv_shlv(g.c, k), k, lh);
-    return fxv_shr(fxv_add32(d, fxv_k32(2)), 2);
+    return fxv_shr(fxv_add32(fxv_shl(d, 1), fxv_k32(5)), 3); /* (d + 2.5) / 4: + half the mean floor */
 }
 
 /* ---- the whole model ------------------------------------------------------------
@@ -418,8 +416,10 @@ FXF_INLINE fxv_u32 fxf_fast_diffuse_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov
  *     [2^31, 2^32) (u = 0 read as 1: y ~ 2^-32, its y^5 vanishes);
  *     y = ym 2^-(32 + ku), y^5 = y5 2^-(32 + 5 ku) [ym >= 2^30, y5 >= 2^22]
  *   F = f0 + (1 - f0) y^5 = Fs 2^-(30 + j), j = min(5 ku, clz(F0) - 16)
- *     (f0 = 0: j = 5 ku, so F keeps its relative precision down to L = V)
- *     [F0 2^(15 + j) < 2^31, the tail < 2^30], then normalised (kF)
+ *     [F0 2^(15 + j) < 2^31, the tail < 2^30], then normalised (kF); f0 = 0
+ *     gives j <= 16: F to 2^-46 absolute, which is what the output needs,
+ *     since F < 2^-16 means L.H ~ 1, so H ~ L ~ V off grazing: D Vis <=
+ *     2^16.3 and the error D Vis 2^-46 < 2^-29
  *   a 2t = hi(A 2^ka, x) 2^-(13 + ka + k)   [>= 2^29], squared [>= 2^26]
  *   e60 = (A S)^2 + w 2^30 (exact, < 2^63): top 32 bits, normalised
  *   m30 = (1 - a) 2 nl nv 2^30 + A S [<= 2^31, >= 2^15], normalised
@@ -435,7 +435,7 @@ FXF_INLINE fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, f
     fxf_root lh = fxf_sqrt32(g.c);
     fxv_u32 k = fxv_shl(lh.h, 1), x = fxv_shlv(g.c, k);             /* 2t = x 2^-(30 + k) */
     fxv_u32 r1, uu, ku, ym, y2, y4, y5, k5, kf, jj, ft, fs, kF, ka, a2t, g2, num;
-    fxv_u32 as, ee, em, etop, mtop, e2, dm, kd, rd, sp, es, sl, sr;
+    fxv_u32 as, ee, em, etop, mtop, e2, dm, kd, rd, sp, ks, es, sl, sr;
     fxv_u64 spec, d64;
     /* Fresnel */
     r1 = fxf_rcp20(fxv_add32(fxv_k32(1u << 31), fxv_shlv(lh.s, fxv_sub32(fxv_k32(11), lh.h)))); /* (1 + L.H) Q31 */
@@ -446,10 +446,10 @@ FXF_INLINE fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, f
     y4 = fxw_mulhi(y2, y2);
     y5 = fxw_mulhi(y4, ym);
     k5 = fxv_add32(fxv_shl(ku, 2), ku);
-    kf = fxv_sel(fxv_lt(f0, fxv_k32(1)), fxv_k32(255), fxv_sub32(fxv_clz(f0), fxv_k32(16)));
+    kf = fxv_sub32(fxv_clz(f0), fxv_k32(16));            /* f0 = 0: 16 */
     jj = fxv_min(k5, kf);
     ft = fxw_mulhi(y5, fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), f0), 16));
-    fs = fxv_add32(fxv_shlv(f0, fxv_min(fxv_add32(jj, fxv_k32(15)), fxv_k32(31))),
+    fs = fxv_add32(fxv_shlv(f0, fxv_add32(jj, fxv_k32(15))),
                    fxv_shrv(ft, fxv_min(fxv_sub32(fxv_add32(k5, fxv_k32(1)), jj), fxv_k32(31))));
     kF = fxv_clz(fs);
     /* (a 2t)^2 F */
@@ -473,18 +473,20 @@ FXF_INLINE fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, f
     kd = fxv_clz(dm);
     rd = fxf_rcp20(fxv_shlv(dm, kd));     /* 1/(e^2 m) = rd 2^(2ee + em + kd - 46) */
     sp = fxw_mulhi(fxw_mulhi(num, fxv_shl(rd, 12)), fxv_k32(FXW_INV_2PI));
-    /* spec = sp 2^-Es, Es = 2ka + 2k + jj + kF + 18 - 2ee - em - kd, held
-     * biased by 256 [Es >= -12: spec < 2^33, sp >= 2^21]; Q29: sp 2^(29 - Es)
-     * < 2^62, a left shift sl <= 41 split as (sp 2^(sl - 31)) 2^31 */
-    es = fxv_sub32(fxv_add32(fxv_add32(fxv_add32(fxv_shl(fxv_add32(ka, k), 1), jj), kF), fxv_k32(274)),
+    /* spec = sp 2^-Es, Es = 2ka + 2k + jj + kF + 18 - 2ee - em - kd [sp >=
+     * 2^21], normalised: + ks, held biased by 256 [Es >= -2: spec < 2^33];
+     * Q29: sp 2^(29 - Es) < 2^62, a left shift sl <= 30 or a right one */
+    ks = fxv_clz(sp);
+    sp = fxv_shlv(sp, ks);
+    es = fxv_sub32(fxv_add32(fxv_add32(fxv_add32(fxv_shl(fxv_add32(ka, k), 1), jj), fxv_add32(kF, ks)),
+                             fxv_k32(274)),
                    fxv_add32(fxv_add32(fxv_shl(ee, 1), em), kd));
     sl = fxv_sub32(fxv_k32(285), fxv_min(es, fxv_k32(285)));
     sr = fxv_min(fxv_sub32(fxv_max(es, fxv_k32(285)), fxv_k32(285)), fxv_k32(31));
-    {
-        fxv_u32 s1 = fxv_min(sl, fxv_k32(31)), s2 = fxv_min(fxv_sub32(sl, s1), fxv_k32(10));
-        spec = fxv_mulw(fxv_shlv(fxv_shrv(sp, sr), s2), fxv_shlv(fxv_k32(1), s1));
-    }
-    d64 = fxv_mulw(fxw_diffuse26(nl, nv, a, fxf_unit(albedo), g.s, g.c, x, k, lh), fxv_k32(8));
+    spec = fxv_mulw(fxv_shrv(sp, sr), fxv_shlv(fxv_k32(1), sl));
+    /* diffuse Q26 to Q29 plus half a Q26 unit: the mean of its last floor */
+    d64 = fxv_mulw(fxv_add32(fxv_shl(fxw_diffuse26(nl, nv, a, fxf_unit(albedo), g.s, g.c, x, k, lh), 1), fxv_k32(1)),
+                   fxv_k32(4));
     return fxb_rshr64(fxv_add64(spec, d64), 5);
 }
 

@@ -102,7 +102,7 @@ static int alpha_set(int32_t *a, int n_log)
 static void geometry(fx_rng *r, int32_t *nl, int32_t *nv, int32_t *lv)
 {
     double cl, cv, phi, u = (fx_next(r) >> 11) * 0x1p-53, w = (fx_next(r) >> 11) * 0x1p-53;
-    unsigned mode = (unsigned)(fx_next(r) % 6);
+    unsigned mode = (unsigned)(fx_next(r) % 7);
     cl = u;
     cv = w;
     phi = 2 * M_PI * ((fx_next(r) >> 11) * 0x1p-53);
@@ -114,6 +114,10 @@ static void geometry(fx_rng *r, int32_t *nl, int32_t *nv, int32_t *lv)
     } else if (mode == 2) { /* L near V */
         cv = cl + (w - 0.5) * 0x1p-9;
         phi = (phi - M_PI) * 0x1p-10;
+    } else if (mode == 3) { /* the peak near normal incidence: L ~ V ~ N */
+        cl = cos(0.3 * u);
+        cv = cos(0.3 * u * (1 + (w - 0.5) * 0.02));
+        phi = M_PI + (phi - M_PI) * 0x1p-8;
     }
     cl = fmin(fmax(cl, 0x1p-8), 1.0);
     cv = fmin(fmax(cv, 0x1p-8), 1.0);
@@ -133,7 +137,7 @@ static void random_inputs(fx_rng *r, const facet_fx_kernel *fk, int32_t *in)
         else if (!strcmp(nm, "nov")) in[i] = nv;
         else if (!strcmp(nm, "lov")) in[i] = lv;
         else if (!strcmp(nm, "alpha")) in[i] = (fx_next(r) & 3) ? (int32_t)floor(32.0 * pow(1024.0, (fx_next(r) >> 11) * 0x1p-53)) : fx_range(r, 32, 32768);
-        else if (fx_next(r) % 8 == 0) in[i] = (int32_t)(fx_next(r) % 64); /* tiny f0 / albedo / cos */
+        else if (fx_next(r) % 4 == 0) in[i] = (int32_t)(fx_next(r) % 64); /* tiny (or 0) f0 / albedo / cos */
         else in[i] = fx_range(r, 0, 32768);
         if (fx_next(r) % 16 == 0)
             in[i] = fx_range(r, fk->lo[i], fk->hi[i]);
@@ -194,7 +198,7 @@ static void accuracy(const facet_fx_kernel *fk, const facet_kernel *k, double bo
                 }
             }
     }
-    nr = fk->n_inputs <= 2 ? 100000 : fk->n_inputs == 3 ? 400000 : 300000;
+    nr = fk->n_inputs <= 2 ? 100000 : fk->n_inputs == 3 ? 400000 : 1000000;
     if (quick)
         nr /= 20;
     for (j = 0; j < nr; j++) {

@@ -250,34 +250,34 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
  * Measured (tests/test_fx_fast.c; LSB where v 2^frac < 2^10, relative
  * where v 2^frac >= 2^15, argmax of e):
  *   kernel                 e      LSB    rel       argmax (raw inputs)
- *   noh_from_dots          0.514  0.514  -         (433, 617, -14467)
+ *   noh_from_dots          0.508  0.508  -         (417, 128, -8466)
  *   loh_from_dots          0.490  0.489  -         (-32755)
  *   fresnel_schlick        0.501  0.500  -         (706, 26184)
  *   ggx_d                  0.510  0.510  2^-15.25  (25925, 8397)
  *   smith_g1               0.536  0.536  -         (129, 8397)
- *   smith_g2               0.521  0.520  -         (151, 29643, 9878)
- *   smith_g2_uncorrelated  0.534  0.534  -         (355, 9954, 18199)
+ *   smith_g2               0.517  0.517  -         (255, 21793, 17340)
+ *   smith_g2_uncorrelated  0.525  0.524  -         (271, 31740, 17976)
  *   smith_vis              0.053  0.000  2^-14.25  (16539, 16545, 64)
  *   smith_g1_hammon        0.512  0.511  -         (117, 8397)
- *   smith_g2_hammon        0.512  0.511  -         (381, 9628, 27185)
- *   smith_vis_hammon       0.036  0.000  2^-15.40  (32525, 32516, 5939)
- *   diffuse_hammon         0.535  0.535  2^-13.52  (22245, 22273, 32768, 1390, 6)
- *   brdf_hammon            0.746  0.746  2^-13.20  (32000, 128, 32, 33, 127, 128)
+ *   smith_g2_hammon        0.508  0.507  -         (5892, 202, 13832)
+ *   smith_vis_hammon       0.037  0.000  2^-15.41  (32726, 32727, 15988)
+ *   diffuse_hammon         0.558  0.557  2^-13.50  (31949, 31957, 29548, 454, 6)
+ *   brdf_hammon            0.646  0.646  2^-13.20  (32768, 128, 129, 1000, 32, 0)
  * (Q15 outputs never reach 2^15 LSB but at 1: no relative column.) */
 #define FACET_FX_FAST_TOL_REL 0.0009765625 /* 2^-10 */
-#define FACET_FX_FAST_ERR_NOH_FROM_DOTS         0.514
+#define FACET_FX_FAST_ERR_NOH_FROM_DOTS         0.508
 #define FACET_FX_FAST_ERR_LOH_FROM_DOTS         0.490
 #define FACET_FX_FAST_ERR_FRESNEL_SCHLICK       0.501
 #define FACET_FX_FAST_ERR_GGX_D                 0.510
 #define FACET_FX_FAST_ERR_SMITH_G1              0.536
-#define FACET_FX_FAST_ERR_SMITH_G2              0.521
-#define FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED 0.534
+#define FACET_FX_FAST_ERR_SMITH_G2              0.517
+#define FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED 0.525
 #define FACET_FX_FAST_ERR_SMITH_VIS             0.053
 #define FACET_FX_FAST_ERR_SMITH_G1_HAMMON       0.512
-#define FACET_FX_FAST_ERR_SMITH_G2_HAMMON       0.512
-#define FACET_FX_FAST_ERR_SMITH_VIS_HAMMON      0.036
-#define FACET_FX_FAST_ERR_DIFFUSE_HAMMON        0.535
-#define FACET_FX_FAST_ERR_BRDF_HAMMON           0.746
+#define FACET_FX_FAST_ERR_SMITH_G2_HAMMON       0.508
+#define FACET_FX_FAST_ERR_SMITH_VIS_HAMMON      0.037
+#define FACET_FX_FAST_ERR_DIFFUSE_HAMMON        0.558
+#define FACET_FX_FAST_ERR_BRDF_HAMMON           0.646
 
 /* N.H = s / sqrt(2t) (1 at or past N.H = 1); domain and Q15 output as
  * facet_noh_from_dots_fx.  One sqrt, one 1/x.
@@ -327,7 +327,7 @@ uint32_t facet_diffuse_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int
  * sqrt, three 1/x, 26 high-word products; spec and diffuse added in Q29
  * (64 bits) and rounded once.
  * Error: FACET_FX_FAST_ERR_BRDF_HAMMON (relative 2^-13.2 above 2^15 LSB).
- * Cost: 300 / 1176 (1051 / 4221). */
+ * Cost: 284 / 1198 (1051 / 4221). */
 uint64_t facet_brdf_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                    int32_t f0, int32_t albedo);
 
