@@ -202,7 +202,7 @@ FXF_INLINE fxv_u32 fxr_divb(fxv_u32 n, fxv_u32 d, fxv_u32 b, uint32_t max)
 #define fxr_div(n, d, s, max) fxr_divb(n, d, fxv_k32(95u - (s)), max)
 
 /* ---- Fresnel ------------------------------------------------------------------
- * F = f0 + (1 - f0) y^5, Y = 2^15 - C (Q15), with fxw_mulhi (below):
+ * F = f0 + (1 - f0) y^5, Y = 2^15 - C (Q15), hi = fxw_mulhi:
  *   y2 = Y^2                            Q30 exact   [<= 2^30]
  *   y4 = hi(2 y2, 2 y2)                 Q30         [<= 2^30]
  *   y5 = hi(2 y4, Y 2^16)               Q30         [<= 2^30]
@@ -451,7 +451,7 @@ FXF_INLINE fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, f
     ft = fxw_mulhi(y5, fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), f0), 16));
     fs = fxv_add32(fxv_shlv(f0, fxv_add32(jj, fxv_k32(15))),
                    fxv_shrv(ft, fxv_min(fxv_sub32(fxv_add32(k5, fxv_k32(1)), jj), fxv_k32(31))));
-    kF = fxv_clz(fs);
+    kF = fxv_min(fxv_clz(fs), fxv_k32(31)); /* fs = 0 (F < 2^-46): spec 0 */
     /* (a 2t)^2 F */
     ka = fxv_clz(a);
     a2t = fxw_mulhi(fxv_shlv(a, ka), x);
@@ -476,7 +476,7 @@ FXF_INLINE fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, f
     /* spec = sp 2^-Es, Es = 2ka + 2k + jj + kF + 18 - 2ee - em - kd [sp >=
      * 2^21], normalised: + ks, held biased by 256 [Es >= -2: spec < 2^33];
      * Q29: sp 2^(29 - Es) < 2^62, a left shift sl <= 30 or a right one */
-    ks = fxv_clz(sp);
+    ks = fxv_min(fxv_clz(sp), fxv_k32(31));
     sp = fxv_shlv(sp, ks);
     es = fxv_sub32(fxv_add32(fxv_add32(fxv_add32(fxv_shl(fxv_add32(ka, k), 1), jj), fxv_add32(kF, ks)),
                              fxv_k32(274)),

@@ -242,8 +242,10 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
  *     2^10 (biased, so never negative).  A quotient is one table
  *     reciprocal of the normalised divisor times the normalised dividend,
  *     then one rounded shift by the lane's exponent (saturating).
- *   Every intermediate truncates (floor); the one final rounding is to
- *     nearest, ties up; results saturate at the format's maximum.
+ *   Intermediates truncate (floor), but for the few steps the body marks
+ *     as rounded (P(x)'s powers, the diffuse sum's terms); the final
+ *     rounding is to nearest, ties up; results saturate at the format's
+ *     maximum.
  *   Why nothing overflows: each bound above is below 2^32 (64-bit values:
  *     below 2^63), exponent lanes stay in [0, 2^10), and every shift count
  *     is clamped to [0, 31]; the brackets in the body give each one.
