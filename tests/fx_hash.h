@@ -90,8 +90,8 @@ static const struct { const char *name; uint64_t hash; } fxh_pinned_fast[] = {
     { "smith_g1_hammon", 0x1339c973d84394f9ull },
     { "smith_g2_hammon", 0xad548dfeb4e22987ull },
     { "smith_vis_hammon", 0xe94f2258d41b5949ull },
-    { "diffuse_hammon", 0x80db0162c34f6d04ull },
-    { "brdf_hammon", 0x9c676d7a60138c22ull },
+    { "diffuse_hammon", 0x08cbfb8476579d9cull },
+    { "brdf_hammon", 0xb03e03d0f7286755ull },
 };
 #define FXH_N_PINNED_FAST (sizeof fxh_pinned_fast / sizeof fxh_pinned_fast[0])
 #endif

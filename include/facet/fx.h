@@ -263,7 +263,7 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
  *   smith_g1_hammon        0.512  0.511  -         (117, 8397)
  *   smith_g2_hammon        0.508  0.507  -         (5892, 202, 13832)
  *   smith_vis_hammon       0.037  0.000  2^-15.41  (32726, 32727, 15988)
- *   diffuse_hammon         0.558  0.557  2^-13.50  (31949, 31957, 29548, 454, 6)
+ *   diffuse_hammon         0.518  0.517  2^-14.55  (32398, 32398, 31296, 7199, 6)
  *   brdf_hammon            0.646  0.646  2^-13.20  (32768, 128, 129, 1000, 32, 0)
  * (Q15 outputs never reach 2^15 LSB but at 1: no relative column.) */
 #define FACET_FX_FAST_TOL_REL 0.0009765625 /* 2^-10 */
@@ -278,7 +278,7 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
 #define FACET_FX_FAST_ERR_SMITH_G1_HAMMON       0.512
 #define FACET_FX_FAST_ERR_SMITH_G2_HAMMON       0.508
 #define FACET_FX_FAST_ERR_SMITH_VIS_HAMMON      0.037
-#define FACET_FX_FAST_ERR_DIFFUSE_HAMMON        0.558
+#define FACET_FX_FAST_ERR_DIFFUSE_HAMMON        0.518
 #define FACET_FX_FAST_ERR_BRDF_HAMMON           0.646
 
 /* N.H = s / sqrt(2t) (1 at or past N.H = 1); domain and Q15 output as
@@ -329,7 +329,7 @@ uint32_t facet_diffuse_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int
  * sqrt, three 1/x, 26 high-word products; spec and diffuse added in Q29
  * (64 bits) and rounded once.
  * Error: FACET_FX_FAST_ERR_BRDF_HAMMON (relative 2^-13.2 above 2^15 LSB).
- * Cost: 284 / 1080 (1051 / 4221). */
+ * Cost: 285 / 1116 (1051 / 4221). */
 uint64_t facet_brdf_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                    int32_t f0, int32_t albedo);
 
