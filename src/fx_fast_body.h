@@ -18,7 +18,8 @@
  *     wide, an exponent lane (a sum of clz counts and constants);
  *   - 1/x and sqrt(x): 129- and 97-entry Q20 tables of the function on the
  *     normalised mantissa, 7 index bits, 15 bits of linear interpolation
- *     (one multiply): 1/x to 2^-17, sqrt to 2^-16.5 relative; no iteration;
+ *     (one multiply): 1/x to 2^-16, sqrt to 2^-15 relative; no iteration
+ *     (and a 257-entry table of the diffuse's 1 + y + ... + y^4);
  *   - every rounding is a truncation (floor) except the final one of each
  *     kernel (round to nearest, ties up) and the few marked "+ half";
  *     results saturate at the format's maximum (fxr_div).
@@ -73,8 +74,8 @@ static const uint32_t fxf_sqrt_tab[97] = {
 /* r ~ 2^51 / m for m in [2^31, 2^32): r in [2^19, 2^20).  The top 7 bits
  * below the leading one index the table, the next 15 interpolate linearly
  * [(R[i] - R[i+1]) < 2^13, f < 2^15: the product < 2^28]; relative error
- * <= 2^-17 (interpolation h^2/8 max|f''| = 2^-16 absolute on 1/x in
- * (1/2, 1], table and step roundings 2^-21). */
+ * <= 2^-16 (interpolation h^2/8 max|f''| = 2^-16 absolute at 1/x ~ 1,
+ * table and step roundings 2^-21; measured 2^-15.95). */
 FXF_INLINE fxv_u32 fxf_rcp20(fxv_u32 m)
 {
     fxv_u32 i = fxv_sub32(fxv_shr(m, 24), fxv_k32(128)), f = fxv_and(fxv_shr(m, 9), fxv_k32(0x7FFF));
@@ -84,7 +85,8 @@ FXF_INLINE fxv_u32 fxf_rcp20(fxv_u32 m)
 
 /* s ~ 2^20 sqrt(x / 2^32) for x in [2^30, 2^32): s in [2^19, 2^20).  7
  * index bits, 15 interpolation bits [(S[j+1] - S[j]) < 2^13]; relative
- * error <= 2^-16.5 (h^2/8 max|f''| at 1/4: 2^-16 absolute on sqrt >= 1/2). */
+ * error <= 2^-15 (h^2/8 max|f''| at 1/4: 2^-16 absolute on sqrt = 1/2;
+ * measured 2^-14.98). */
 FXF_INLINE fxv_u32 fxf_sqrt20(fxv_u32 x)
 {
     fxv_u32 j = fxv_sub32(fxv_shr(x, 25), fxv_k32(32)), f = fxv_and(fxv_shr(x, 10), fxv_k32(0x7FFF));
@@ -182,7 +184,7 @@ FXF_INLINE fxv_u32 fxw_top(fxv_u64 v, fxv_u32 *e)
  * lane b = 95 - s (so a per-lane s works too); n < 2^32 (0 gives 0), d >= 1:
  *   kn, kd normalise n and d; r = rcp20(d 2^kd) ~ 2^51 / (d 2^kd);
  *   q = hi(n 2^kn, r 2^12) ~ n / d 2^(31 + kn - kd), in [2^30, 2^32) for n > 0
- *   (relative error <= 2^-16.5: the table, the truncations), then shifted
+ *   (relative error <= 2^-15.9: the table, the truncations), then shifted
  *   by kq = 1 - (bit 31 of q) into [2^31, 2^32);
  *   the result q 2^-sr, sr = 31 + kn - kd + kq - s: a rounded right shift;
  *   sr < 0 means >= 2^32 and saturates, sr > 32 gives 0 [every shift count
@@ -347,7 +349,8 @@ FXF_INLINE fxv_u32 fxf_fast_smith_vis_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 a
  * round(2^16 sum), i = 0..256 (and a copy of the last), linearly
  * interpolated by the 7 bits of X below the index [steps < 2^12: the
  * product < 2^19]; error h^2/8 max|sum''| = 2^-16.7 on a sum >= 1 (the
- * chord of a convex function: never below it).  P = X sum Q31 [x sum = P
+ * chord of a convex function: never below it), with the roundings
+ * 2^-15.8 relative (measured).  P = X sum Q31 [x sum = P
  * <= 1, the chord's excess < 2^-16: < 2^31 + 2^15]. */
 static const uint32_t fxf_p5_tab[258] = {
     327680, 325130, 322600, 320089, 317599, 315128, 312676, 310243, 307830, 305436, 303061,
@@ -400,7 +403,7 @@ FXF_INLINE fxv_u32 fxf_p5(fxv_u32 x)
  *   q = 1 + L.H / s  Q24 = 2^24 + hi(ls 2^12, rS 2^12) >> (24 + h - kS)  [shift 1..17;
  *                 L.H / s <= 128: q < 2^31.01]
  *   a rough = x2 2^-(24 + k), x2 = hi(2 hi(mh, A floor(2^20/10)), q), to Q25.
- * Each term's relative error <= 2^-15 (the P sums), its truncations
+ * Each term's relative error <= 2^-14.8 (the P sums), its truncations
  * <= 2^-25 absolute: below the output's LSB (2^-24) even at albedo = 1. */
 FXF_INLINE fxv_u32 fxw_diffuse26(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 alb, fxv_u32 s,
                                     fxv_u32 c, fxv_u32 x, fxv_u32 k, fxf_root lh)

@@ -225,10 +225,12 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
  *     even shift for sqrt) indexes a 129-entry table of 2^35/x on [1, 2)
  *     (resp. 97 entries of 2^20 sqrt on [1/4, 1)) with its top 7 bits; the
  *     next 15 bits interpolate linearly (one multiply of a < 2^13
- *     difference by a 15-bit fraction: < 2^28).  Error 2^-17 (1/x), 2^-16.5
- *     (sqrt), no Newton step and no data-dependent loop.
- *   Products: 16 x 16 -> 32 bit where the operands allow (Fresnel's
- *     inputs, P(x), the clamped Q15 values: one MULS on Cortex-M0), else
+ *     difference by a 15-bit fraction: < 2^28).  Relative error 2^-16 (1/x),
+ *     2^-15 (sqrt: h^2/8 max|f''| at 1/4), no Newton step and no
+ *     data-dependent loop.  The diffuse's 1 + y + y^2 + y^3 + y^4 (y = 1 -
+ *     x) likewise: 257 entries on x = i/256, 7 interpolation bits, 2^-15.8.
+ *   Products: 16 x 16 -> 32 bit where the operands allow (the clamped
+ *     Q15 values, table steps: one MULS on Cortex-M0), else
  *     the high word of one 32 x 32 -> 64 product (one UMULL on
  *     Cortex-M3/M4), every operand < 2^32 and every product's high word
  *     kept >= 2^21 so the truncation stays <= 2^-21.  The sums that need
@@ -243,7 +245,7 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
  *     reciprocal of the normalised divisor times the normalised dividend,
  *     then one rounded shift by the lane's exponent (saturating).
  *   Intermediates truncate (floor), but for the few steps the body marks
- *     as rounded (P(x)'s powers, the diffuse sum's terms); the final
+ *     as rounded (table interpolations, the diffuse sum's terms); the final
  *     rounding is to nearest, ties up; results saturate at the format's
  *     maximum.
  *   Why nothing overflows: each bound above is below 2^32 (64-bit values:
@@ -319,7 +321,7 @@ int32_t facet_smith_g2_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
  * Error: FACET_FX_FAST_ERR_SMITH_VIS_HAMMON.  Cost: 71 / 178 (87 / 558). */
 uint32_t facet_smith_vis_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 /* Hammon's diffuse (facet.h's formula and raise); UQ8.24, max 20.65.
- * 32-bit stages: P(x) = x (1 + y + ... + y^4) by 16-bit products, the
+ * 32-bit stages: P(x) = x (1 + y + ... + y^4), the sum from a table; the
  * bracket in Q25 [< 2^31.02], times albedo / pi; one sqrt, one 1/x.
  * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON.  Cost: 143 / 462 (494 / 1960). */
 uint32_t facet_diffuse_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
