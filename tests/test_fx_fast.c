@@ -3,8 +3,9 @@
  *   - loh_from_dots on every input; the two-input kernels on every value of
  *     their first input times a set of second inputs (Fresnel: both ways);
  *   - every kernel on random geometry (consistent dot triples aimed at the
- *     peak and grazing angles, and random raw tuples of the domain) and an
- *     edge grid;
+ *     peak, grazing angles, L near V and the near-normal peak), on raw
+ *     tuples uniform over the domain (ends and the peak's L.V weighted),
+ *     and on an edge grid;
  * error = |raw - v 2^frac| / max(1, 2^-10 v 2^frac) (the tier's bound: 1
  * LSB or 2^-10 relative, whichever is larger), held to exactly
  * FACET_FX_FAST_ERR_<NAME>; prints per kernel the samples, the max error,
@@ -144,6 +145,30 @@ static void random_inputs(fx_rng *r, const facet_fx_kernel *fk, int32_t *in)
     }
 }
 
+/* raw tuples uniform over the domain, 1 in 4 inputs pinned near an end of
+ * its range, alpha log-uniform 1 in 8, L.V half the time near the peak's
+ * 2 nl nv - 1 or L = V's value (then maybe inconsistent by up to 2^-10) */
+static void uniform_inputs(fx_rng *r, const facet_fx_kernel *fk, int32_t *in)
+{
+    int i;
+    for (i = 0; i < fk->n_inputs; i++) {
+        uint64_t x = fx_next(r);
+        int32_t lo = fk->lo[i], hi = fk->hi[i];
+        unsigned mode = (unsigned)(x & 7);
+        x >>= 3;
+        if (mode == 0) in[i] = lo + (int32_t)(x % 64);
+        else if (mode == 1) in[i] = hi - (int32_t)(x % 64);
+        else if (mode == 2 && !strcmp(fk->inputs[i], "alpha")) in[i] = (int32_t)floor(32.0 * pow(1024.0, (x >> 11) * 0x1p-53));
+        else in[i] = lo + (int32_t)(x % (uint64_t)(hi - lo + 1));
+        if (!strcmp(fk->inputs[i], "lov") && i >= 2 && (x & 1)) {
+            double nl = in[0] / 32768.0, nv = in[1] / 32768.0;
+            double v = (x & 2) ? 2 * nl * nv - 1 : nl * nv + sqrt(1 - nl * nl) * sqrt(1 - nv * nv);
+            v += ((double)(fx_next(r) % 2001) - 1000) * 0x1p-20;
+            in[i] = (int32_t)round_hu(fmin(fmax(v, -1.0), 1.0) * 32768);
+        }
+    }
+}
+
 static const int32_t edges_[] = { 0, 1, 32, 33, 127, 128, 129, 1000, 16384, 23170, 32000, 32767, 32768,
                                   -1, -16384, -32767, -32768 };
 
@@ -203,6 +228,10 @@ static void accuracy(const facet_fx_kernel *fk, const facet_kernel *k, double bo
         nr /= 20;
     for (j = 0; j < nr; j++) {
         random_inputs(&r, fk, in);
+        one(fk, k, in, &st);
+    }
+    for (j = 0; j < nr; j++) {
+        uniform_inputs(&r, fk, in);
         one(fk, k, in, &st);
     }
     edge_grid(fk, k, &st);
