@@ -169,15 +169,15 @@ FXF_INLINE fxv_u32 fxf_fast_noh_from_dots(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov)
 /* ---- 32-bit fixed helpers ---------------------------------------------------
  * (fxw_mulhi: at the top.) */
 
-/* the top 32 bits of a 64-bit x with x < 2^63 and x >= 2^26, normalised:
- * top in [2^31, 2^32), x ~ top 2^(32 - e) (truncated, <= 2^-25 relative) */
+/* the top 32 bits of a 64-bit x with 2^26 <= x < 2^63: top = floor(x /
+ * 2^(32 - kk)), kk = min(clz(hi), 31) in [1, 31], so top >= 2^31 when x >=
+ * 2^32 and top = floor(x / 2) >= 2^25 below (every user normalises again,
+ * or squares it: >= 2^18); x ~ top 2^(32 - e), truncated <= 2^-25 */
 FXF_INLINE fxv_u32 fxw_top(fxv_u64 v, fxv_u32 *e)
 {
-    fxv_u32 hi = fxv_hi(v), kk = fxv_min(fxv_clz(hi), fxv_k32(31));   /* kk in [1, 31] */
-    fxv_u32 top = fxv_or(fxv_shlv(hi, kk), fxv_shrv(fxv_lo(v), fxv_sub32(fxv_k32(32), kk)));
-    fxv_u32 k2 = fxv_clz(top);                                         /* top >= 2^25: k2 <= 6 */
-    *e = fxv_add32(kk, k2);
-    return fxv_shlv(top, k2);
+    fxv_u32 hi = fxv_hi(v), kk = fxv_min(fxv_clz(hi), fxv_k32(31));
+    *e = kk;
+    return fxv_or(fxv_shlv(hi, kk), fxv_shrv(fxv_lo(v), fxv_sub32(fxv_k32(32), kk)));
 }
 
 /* round(n / d 2^s) (ties up), saturated at max, with s given biased as the
@@ -451,7 +451,7 @@ FXF_INLINE fxv_u32 fxf_fast_diffuse_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov
  *     since F < 2^-16 means L.H ~ 1, so H ~ L ~ V off grazing: D Vis <=
  *     2^16.3 and the error D Vis 2^-46 < 2^-29
  *   a 2t = hi(A 2^ka, x) 2^-(13 + ka + k)   [>= 2^29], squared [>= 2^26]
- *   e60 = (A S)^2 + w 2^30 (exact, < 2^63): top 32 bits, normalised
+ *   e60 = (A S)^2 + w 2^30 (exact, < 2^63): its top 32 bits [>= 2^25]
  *   m30 = (1 - a) 2 nl nv 2^30 + A S [<= 2^31, >= 2^15], normalised
  *   1 / (e^2 m): rcp20 of the normalised product [>= 2^29 before]
  *   spec = sp 2^-Es, Es an exponent lane (biased by 256; spec < 2^33)

@@ -333,7 +333,7 @@ uint32_t facet_diffuse_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int
  * sqrt, three 1/x, 26 high-word products; spec and diffuse added in Q29
  * (64 bits) and rounded once.
  * Error: FACET_FX_FAST_ERR_BRDF_HAMMON (relative 2^-13.2 above 2^15 LSB).
- * Cost: 285 / 1116 (1051 / 4221). */
+ * Cost: 275 / 1060 (1051 / 4221). */
 uint64_t facet_brdf_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                    int32_t f0, int32_t albedo);
 
