@@ -287,10 +287,10 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
 
 /* N.H = s / sqrt(2t) (1 at or past N.H = 1); domain and Q15 output as
  * facet_noh_from_dots_fx.  One sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_NOH_FROM_DOTS.  Cost: 73 / 155 (181 / 1076). */
+ * Error: FACET_FX_FAST_ERR_NOH_FROM_DOTS.  Cost: 73 / 147 (181 / 1076). */
 int32_t facet_noh_from_dots_fx_fast(int32_t nol, int32_t nov, int32_t lov);
 /* L.H = sqrt((1 + L.V) / 2), Q15 (L.V = -1 gives 0).  One sqrt.
- * Error: FACET_FX_FAST_ERR_LOH_FROM_DOTS.  Cost: 37 / 64 (84 / 416). */
+ * Error: FACET_FX_FAST_ERR_LOH_FROM_DOTS.  Cost: 37 / 58 (84 / 416). */
 int32_t facet_loh_from_dots_fx_fast(int32_t lov);
 /* Schlick f0 + (1 - f0)(1 - cos)^5, Q15; F(f0, 1) = f0, F(f0, 0) = 1
  * exactly.  1 mul, 3 high-word products; the error is the final rounding.
@@ -298,34 +298,34 @@ int32_t facet_loh_from_dots_fx_fast(int32_t lov);
 int32_t facet_fresnel_schlick_fx_fast(int32_t f0, int32_t cos_theta);
 /* GGX D = alpha^2 / (pi d^2), d = (1 - n)(1 + n) + (n alpha)^2 exact in
  * 64 bits; UQ19.13, max 2^20/pi.  One 1/x.
- * Error: FACET_FX_FAST_ERR_GGX_D.  Cost: 83 / 271 (109 / 652). */
+ * Error: FACET_FX_FAST_ERR_GGX_D.  Cost: 73 / 217 (109 / 652). */
 uint32_t facet_ggx_d_fx_fast(int32_t noh, int32_t alpha);
 /* Smith G1 (exact GGX) = 2n / (n + sqrt(a^2 + (1 - a^2) n^2)), Q15.
  * w exact in 64 bits, one sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_G1.  Cost: 162 / 294 (198 / 1063). */
+ * Error: FACET_FX_FAST_ERR_SMITH_G1.  Cost: 91 / 229 (198 / 1063). */
 int32_t facet_smith_g1_fx_fast(int32_t nov, int32_t alpha);
 /* Smith G2 height-correlated, Q15.  Two sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_G2.  Cost: 238 / 553 (352 / 1715). */
+ * Error: FACET_FX_FAST_ERR_SMITH_G2.  Cost: 136 / 418 (352 / 1715). */
 int32_t facet_smith_g2_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 /* G1(N.L) G1(N.V), Q15.  Two sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED.  Cost: 262 / 582 (366 / 1727). */
+ * Error: FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED.  Cost: 131 / 420 (366 / 1727). */
 int32_t facet_smith_g2_uncorrelated_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 /* Vis = 0.5 / (nv r(nl) + nl r(nv)), UQ16.16.  Two sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_VIS.  Cost: 216 / 477 (340 / 1674). */
+ * Error: FACET_FX_FAST_ERR_SMITH_VIS.  Cost: 115 / 374 (340 / 1674). */
 uint32_t facet_smith_vis_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 /* Hammon G1 = 2n / (n (2 - a) + a), the denominator exact; Q15.  One 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_G1_HAMMON.  Cost: 54 / 126 (62 / 508). */
+ * Error: FACET_FX_FAST_ERR_SMITH_G1_HAMMON.  Cost: 54 / 115 (62 / 508). */
 int32_t facet_smith_g1_hammon_fx_fast(int32_t nov, int32_t alpha);
 /* Hammon G2 = 2 nl nv / m, m exact in 64 bits; Q15.  One 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_G2_HAMMON.  Cost: 89 / 237 (101 / 600). */
+ * Error: FACET_FX_FAST_ERR_SMITH_G2_HAMMON.  Cost: 77 / 180 (101 / 600). */
 int32_t facet_smith_g2_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 /* Hammon Vis = 0.5 / m; UQ16.16, max 13117.  One 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_VIS_HAMMON.  Cost: 71 / 178 (87 / 558). */
+ * Error: FACET_FX_FAST_ERR_SMITH_VIS_HAMMON.  Cost: 66 / 143 (87 / 558). */
 uint32_t facet_smith_vis_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 /* Hammon's diffuse (facet.h's formula and raise); UQ8.24, max 20.65.
  * 32-bit stages: P(x) = x (1 + y + ... + y^4), the sum from a table; the
  * bracket in Q25 [< 2^31.02], times albedo / pi; one sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON.  Cost: 143 / 462 (494 / 1960). */
+ * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON.  Cost: 121 / 414 (494 / 1960). */
 uint32_t facet_diffuse_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                       int32_t albedo);
 /* The whole model D Vis_hammon F(f0, L.H) + diffuse from the dots (N.H
