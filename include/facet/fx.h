@@ -213,7 +213,7 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
  * written once over the lane op layer (src/fx_fast_body.h), so a SIMD port
  * instantiates the same body.  Cost: executed instructions per call on
  * Cortex-M4 / Cortex-M0 (qemu trace, mean of bench/cortexm_main.c's 4
- * inputs; gcc 13 -O2), the precise tier's in brackets.
+ * inputs; arm-none-eabi-gcc 12.2 -O2), the precise tier's in brackets.
  *
  * Datapath (a specification a fixed-function pipeline can implement):
  *   Inputs are clamped first (compare/select).  Exact stages:
@@ -234,7 +234,8 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
  *     Q15 values, table steps: one MULS on Cortex-M0), else
  *     the high word of one 32 x 32 -> 64 product (one UMULL on
  *     Cortex-M3/M4), every operand < 2^32 and every product's high word
- *     kept >= 2^21 so the truncation stays <= 2^-21.  The sums that need
+ *     kept >= 2^21 (2^18 for e^2 at brdf_hammon's sharpest peaks) so the
+ *     truncation stays <= 2^-21 (2^-18).  The sums that need
  *     it (d = 1 - n^2 (1 - a^2), the Smith w = a^2 + (1 - a^2) x^2,
  *     Hammon's m = (1 - a) 2 nl nv + a s, e = w + a^2 s^2, the Smith
  *     denominators) are formed exactly in 64 bits (< 2^63), then their top
