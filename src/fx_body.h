@@ -26,6 +26,16 @@
  *   fxv_and64(a, c)            a & c, c a constant
  *   fxv_lo(a) fxv_hi(a)        the low / high 32 bits of a fxv_u64
  *   fxv_narrow(a)              a fxv_u64 known to be below 2^32, as fxv_u32
+ * and, for the fast tier (src/fx_fast_body.h), on fxv_u32:
+ *   fxv_shr(a, k) fxv_shl(a, k)    a >> k, a << k mod 2^32, 0 <= k < 32 a constant
+ *   fxv_shrv(a, n) fxv_shlv(a, n)  the same by a per-lane count 0 <= n < 32
+ *   fxv_clz(a)                 leading zeros of a 32-bit a, 32 for a = 0
+ *   fxv_min(a, b) fxv_max(a, b)    unsigned minimum / maximum
+ *   fxv_lt(a, b)               all ones where a < b (unsigned), else 0
+ *   fxv_sel(m, a, b)           a where the mask m is all ones, else b
+ *   fxv_and fxv_or fxv_not     bitwise and, or, complement
+ *   fxv_clamp_off(x, lo, hi)   min(max(x, lo), hi) - lo as fxv_u32 (lo may be < 0)
+ *   fxv_lut(t, i)              t[i], t a const uint32_t table, i in range
  * Every op is exact on the stated range; no op rounds, wraps or saturates
  * where the body uses it (the bounds in brackets say why). */
 #ifndef FACET_FX_BODY_ONE

@@ -4,7 +4,7 @@
 # their batch API on the scalar loop, the table), so nothing else of the
 # library has to port, and the firmware list is what these targets test.
 #   $(BUILD)/fx/<target>/test_fx_hash[.elf]   the pinned-hash test per target
-#   $(BUILD)/fx/<cpu>/fx_kernels.o            Cortex-M objects for the size table
+#   $(BUILD)/fx/<cpu>/fx_kernels.o, fx_fast.o Cortex-M objects for the size table
 #   $(BUILD)/fx/rv32/fx.elf                   freestanding RV32IMC link check
 FX_KSRC   := $(filter-out src/fx_table.c,$(FX_SOURCES)) # the Makefile's firmware list
 FX_TSRC   := $(FX_KSRC) src/fx_table.c
@@ -21,7 +21,8 @@ FX_CM_LINK  = --specs=rdimon.specs -nostartfiles -T tests/cortexm/mps2.ld tests/
 .PHONY: fx-cortex-m fx-rv32 fx-linux-cross fx-portable
 fx-cortex-m: $(BUILD)/fx/cortex-m0/test_fx_hash.elf $(BUILD)/fx/cortex-m4/test_fx_hash.elf \
              $(BUILD)/fx/cortex-m0/fx_kernels.o $(BUILD)/fx/cortex-m4/fx_kernels.o \
-             $(BUILD)/fx/cortex-m0/fx_core.o $(BUILD)/fx/cortex-m4/fx_core.o
+             $(BUILD)/fx/cortex-m0/fx_core.o $(BUILD)/fx/cortex-m4/fx_core.o \
+             $(BUILD)/fx/cortex-m0/fx_fast.o $(BUILD)/fx/cortex-m4/fx_fast.o
 fx-rv32: $(BUILD)/fx/rv32/fx.elf
 fx-linux-cross: $(BUILD)/fx/aarch64/test_fx_hash $(BUILD)/fx/armv7/test_fx_hash \
                 $(BUILD)/fx/aarch64/integer-only.stamp
@@ -36,6 +37,9 @@ $(BUILD)/fx/cortex-m%/fx_kernels.o: src/fx_kernels.c $(FX_HDRS)
 	@mkdir -p $(dir $@)
 	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_CM_FLAGS) $(WARN) -Iinclude -Os -c $< -o $@
 $(BUILD)/fx/cortex-m%/fx_core.o: src/fx_core.c $(FX_HDRS)
+	@mkdir -p $(dir $@)
+	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_CM_FLAGS) $(WARN) -Iinclude -Os -c $< -o $@
+$(BUILD)/fx/cortex-m%/fx_fast.o: src/fx_fast.c $(FX_HDRS)
 	@mkdir -p $(dir $@)
 	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_CM_FLAGS) $(WARN) -Iinclude -Os -c $< -o $@
 

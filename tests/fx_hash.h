@@ -76,4 +76,24 @@ static const struct { const char *name; uint64_t hash; } fxh_pinned[] = {
 };
 #define FXH_N_PINNED (sizeof fxh_pinned / sizeof fxh_pinned[0])
 
+#ifdef FXH_FAST
+/* the fx_fast tier (facet_<kernel>_fx_fast), same grids */
+static const struct { const char *name; uint64_t hash; } fxh_pinned_fast[] = {
+    { "noh_from_dots", 0xc1d1d71ca71a5fe3ull },
+    { "loh_from_dots", 0x5af0098ffbb4d64aull },
+    { "fresnel_schlick", 0x8d3297d639d8cc3eull },
+    { "ggx_d", 0x20b277145c20eb43ull },
+    { "smith_g1", 0xa843900217b2a43dull },
+    { "smith_g2", 0xf348f9bb73e67c90ull },
+    { "smith_g2_uncorrelated", 0x99026cfae08adca8ull },
+    { "smith_vis", 0x92aac1660a9557b6ull },
+    { "smith_g1_hammon", 0x1339c973d84394f9ull },
+    { "smith_g2_hammon", 0xad548dfeb4e22987ull },
+    { "smith_vis_hammon", 0xe94f2258d41b5949ull },
+    { "diffuse_hammon", 0x08cbfb8476579d9cull },
+    { "brdf_hammon", 0xb03e03d0f7286755ull },
+};
+#define FXH_N_PINNED_FAST (sizeof fxh_pinned_fast / sizeof fxh_pinned_fast[0])
+#endif
+
 #endif

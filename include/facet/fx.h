@@ -197,6 +197,147 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
                                 const int32_t *lov, const int32_t *alpha, const int32_t *f0,
                                 const int32_t *albedo, size_t n);
 
+/* ---- fast tier ---------------------------------------------------------------
+ * facet_<kernel>_fx_fast: the same inputs as facet_<kernel>_fx (raw Q15
+ * int32, the same domains, every int32 clamped the same way) and the same
+ * output containers, fraction bits and saturation values (FACET_FX_*_FRAC,
+ * FACET_FX_MAX_*): a caller switches tier by name.
+ * Bound, every kernel, every input: |raw - v 2^frac| <= max(1 LSB, 2^-10
+ * v 2^frac), v the exact value at the same raw inputs (the oracle).  The
+ * error measure is e = |raw - v 2^frac| / max(1, 2^-10 v 2^frac);
+ * FACET_FX_FAST_ERR_<NAME> is its measured maximum over
+ * tests/test_fx_fast.c's sweep and a 2e7-tuple run of the same families
+ * per kernel (enforced by the test; the tier's bound is 1).
+ * Integer only, no divide instruction, no libgcc helper (Cortex-M0/M4,
+ * RV32IMC), bit-exact on every target (pinned hashes, tests/fx_hash.h);
+ * written once over the lane op layer (src/fx_fast_body.h), so a SIMD port
+ * instantiates the same body.  Cost: executed instructions per call on
+ * Cortex-M4 / Cortex-M0 (qemu trace, mean of bench/cortexm_main.c's 4
+ * inputs; arm-none-eabi-gcc 12.2 -O2), the precise tier's in brackets.
+ *
+ * Datapath (a specification a fixed-function pipeline can implement):
+ *   Inputs are clamped first (compare/select).  Exact stages:
+ *     S = NL + NV <= 2^16;  P = (2^16 - S)(2^16 + S) = (4 - s^2) 2^30 and
+ *     Q = (2^15 - LOV) 2^16 = (4 - 2t) 2^30, both <= 2^32 - 2^16;
+ *     u = min(P, Q) = (4 - 2 t_raised) 2^30 (the facet.h raise as one min);
+ *     w = P - u = (2t - s^2) 2^30 (the specular peak's cancellation, exact);
+ *     c = ~u = (L.H^2) 2^32 - 1; N A, A S <= 2^31; NL NV, A^2 <= 2^30.
+ *   1/x and sqrt: the normalised 32-bit mantissa (one clz, one shift; an
+ *     even shift for sqrt) indexes a 129-entry table of 2^35/x on [1, 2)
+ *     (resp. 97 entries of 2^20 sqrt on [1/4, 1)) with its top 7 bits; the
+ *     next 15 bits interpolate linearly (one multiply of a < 2^13
+ *     difference by a 15-bit fraction: < 2^28).  Relative error 2^-16 (1/x),
+ *     2^-15 (sqrt: h^2/8 max|f''| at 1/4), no Newton step and no
+ *     data-dependent loop.  The diffuse's 1 + y + y^2 + y^3 + y^4 (y = 1 -
+ *     x) likewise: 257 entries on x = i/256, 7 interpolation bits, 2^-15.8.
+ *   Products: 16 x 16 -> 32 bit where the operands allow (the clamped
+ *     Q15 values, table steps: one MULS on Cortex-M0), else
+ *     the high word of one 32 x 32 -> 64 product (one UMULL on
+ *     Cortex-M3/M4), every operand < 2^32 and every product's high word
+ *     kept >= 2^21 (2^18 for e^2 at brdf_hammon's sharpest peaks) so the
+ *     truncation stays <= 2^-21 (2^-18).  The sums that need
+ *     it (d = 1 - n^2 (1 - a^2), the Smith w = a^2 + (1 - a^2) x^2,
+ *     Hammon's m = (1 - a) 2 nl nv + a s, e = w + a^2 s^2, the Smith
+ *     denominators) are formed exactly in 64 bits (< 2^63), then their top
+ *     32 bits (one clz); brdf_hammon keeps m in Q30 (>= 2^15).
+ *   Wide ranges (D up to 2^20/pi, Vis, the Fresnel tail y^5 down to f0 =
+ *     0, the specular term up to 2^33) carry an exponent lane: a clz where
+ *     the range is wide, sums of counts and constants elsewhere, all below
+ *     2^10 (biased, so never negative).  A quotient is one table
+ *     reciprocal of the normalised divisor times the normalised dividend,
+ *     then one rounded shift by the lane's exponent (saturating).
+ *   Intermediates truncate (floor), but for the few steps the body marks
+ *     as rounded (table interpolations, the diffuse sum's terms); the final
+ *     rounding is to nearest, ties up; results saturate at the format's
+ *     maximum.
+ *   Why nothing overflows: each bound above is below 2^32 (64-bit values:
+ *     below 2^63), exponent lanes stay in [0, 2^10), and every shift count
+ *     is clamped to [0, 31]; the brackets in the body give each one.
+ * Measured (e: the larger of the test's and the 2e7 run's, at its argmax;
+ * LSB where v 2^frac < 2^10 and relative where v 2^frac >= 2^15: the
+ * test's):
+ *   kernel                 e      LSB    rel       argmax (raw inputs)
+ *   noh_from_dots          0.538  0.509  -         (137, 879, -15701)
+ *   loh_from_dots          0.490  0.489  -         (-32755)
+ *   fresnel_schlick        0.501  0.500  -         (706, 26184)
+ *   ggx_d                  0.514  0.510  2^-15.15  (16701, 16432)
+ *   smith_g1               0.536  0.536  -         (126, 8227)
+ *   smith_g2               0.536  0.526  -         (32744, 128, 8281)
+ *   smith_g2_uncorrelated  0.544  0.539  -         (16617, 139, 8637)
+ *   smith_vis              0.054  0.000  2^-14.24  (32739, 181, 16531)
+ *   smith_g1_hammon        0.514  0.511  -         (61, 4096)
+ *   smith_g2_hammon        0.514  0.509  -         (169, 13161, 10510)
+ *   smith_vis_hammon       0.037  0.000  2^-15.38  (32762, 31510, 9047)
+ *   diffuse_hammon         0.552  0.517  2^-14.55  (134, 142, -32768, 40, 10500)
+ *   brdf_hammon            0.646  0.646  2^-13.20  (32768, 128, 129, 1000, 32, 0)
+ * (Q15 outputs never reach 2^15 LSB but at 1: no relative column.) */
+#define FACET_FX_FAST_TOL_REL 0.0009765625 /* 2^-10 */
+#define FACET_FX_FAST_ERR_NOH_FROM_DOTS         0.538
+#define FACET_FX_FAST_ERR_LOH_FROM_DOTS         0.490
+#define FACET_FX_FAST_ERR_FRESNEL_SCHLICK       0.501
+#define FACET_FX_FAST_ERR_GGX_D                 0.514
+#define FACET_FX_FAST_ERR_SMITH_G1              0.536
+#define FACET_FX_FAST_ERR_SMITH_G2              0.536
+#define FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED 0.544
+#define FACET_FX_FAST_ERR_SMITH_VIS             0.054
+#define FACET_FX_FAST_ERR_SMITH_G1_HAMMON       0.514
+#define FACET_FX_FAST_ERR_SMITH_G2_HAMMON       0.514
+#define FACET_FX_FAST_ERR_SMITH_VIS_HAMMON      0.037
+#define FACET_FX_FAST_ERR_DIFFUSE_HAMMON        0.552
+#define FACET_FX_FAST_ERR_BRDF_HAMMON           0.646
+
+/* N.H = s / sqrt(2t) (1 at or past N.H = 1); domain and Q15 output as
+ * facet_noh_from_dots_fx.  One sqrt, one 1/x.
+ * Error: FACET_FX_FAST_ERR_NOH_FROM_DOTS.  Cost: 73 / 147 (181 / 1076). */
+int32_t facet_noh_from_dots_fx_fast(int32_t nol, int32_t nov, int32_t lov);
+/* L.H = sqrt((1 + L.V) / 2), Q15 (L.V = -1 gives 0).  One sqrt.
+ * Error: FACET_FX_FAST_ERR_LOH_FROM_DOTS.  Cost: 37 / 58 (84 / 416). */
+int32_t facet_loh_from_dots_fx_fast(int32_t lov);
+/* Schlick f0 + (1 - f0)(1 - cos)^5, Q15; F(f0, 1) = f0, F(f0, 0) = 1
+ * exactly.  1 mul, 3 high-word products; the error is the final rounding.
+ * Error: FACET_FX_FAST_ERR_FRESNEL_SCHLICK.  Cost: 23 / 63 (21 / 106). */
+int32_t facet_fresnel_schlick_fx_fast(int32_t f0, int32_t cos_theta);
+/* GGX D = alpha^2 / (pi d^2), d = (1 - n)(1 + n) + (n alpha)^2 exact in
+ * 64 bits; UQ19.13, max 2^20/pi.  One 1/x.
+ * Error: FACET_FX_FAST_ERR_GGX_D.  Cost: 73 / 217 (109 / 652). */
+uint32_t facet_ggx_d_fx_fast(int32_t noh, int32_t alpha);
+/* Smith G1 (exact GGX) = 2n / (n + sqrt(a^2 + (1 - a^2) n^2)), Q15.
+ * w exact in 64 bits, one sqrt, one 1/x.
+ * Error: FACET_FX_FAST_ERR_SMITH_G1.  Cost: 91 / 229 (198 / 1063). */
+int32_t facet_smith_g1_fx_fast(int32_t nov, int32_t alpha);
+/* Smith G2 height-correlated, Q15.  Two sqrt, one 1/x.
+ * Error: FACET_FX_FAST_ERR_SMITH_G2.  Cost: 136 / 418 (352 / 1715). */
+int32_t facet_smith_g2_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+/* G1(N.L) G1(N.V), Q15.  Two sqrt, one 1/x.
+ * Error: FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED.  Cost: 131 / 420 (366 / 1727). */
+int32_t facet_smith_g2_uncorrelated_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+/* Vis = 0.5 / (nv r(nl) + nl r(nv)), UQ16.16.  Two sqrt, one 1/x.
+ * Error: FACET_FX_FAST_ERR_SMITH_VIS.  Cost: 115 / 374 (340 / 1674). */
+uint32_t facet_smith_vis_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+/* Hammon G1 = 2n / (n (2 - a) + a), the denominator exact; Q15.  One 1/x.
+ * Error: FACET_FX_FAST_ERR_SMITH_G1_HAMMON.  Cost: 54 / 115 (62 / 508). */
+int32_t facet_smith_g1_hammon_fx_fast(int32_t nov, int32_t alpha);
+/* Hammon G2 = 2 nl nv / m, m exact in 64 bits; Q15.  One 1/x.
+ * Error: FACET_FX_FAST_ERR_SMITH_G2_HAMMON.  Cost: 77 / 180 (101 / 600). */
+int32_t facet_smith_g2_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+/* Hammon Vis = 0.5 / m; UQ16.16, max 13117.  One 1/x.
+ * Error: FACET_FX_FAST_ERR_SMITH_VIS_HAMMON.  Cost: 66 / 143 (87 / 558). */
+uint32_t facet_smith_vis_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+/* Hammon's diffuse (facet.h's formula and raise); UQ8.24, max 20.65.
+ * 32-bit stages: P(x) = x (1 + y + ... + y^4), the sum from a table; the
+ * bracket in Q25 [< 2^31.02], times albedo / pi; one sqrt, one 1/x.
+ * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON.  Cost: 121 / 414 (494 / 1960). */
+uint32_t facet_diffuse_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
+                                      int32_t albedo);
+/* The whole model D Vis_hammon F(f0, L.H) + diffuse from the dots (N.H
+ * never formed, the peak's cancellation exact); UQ40.24, max 4.38e9.  One
+ * sqrt, three 1/x, 26 high-word products; spec and diffuse added in Q29
+ * (64 bits) and rounded once.
+ * Error: FACET_FX_FAST_ERR_BRDF_HAMMON (relative 2^-13.2 above 2^15 LSB).
+ * Cost: 275 / 1060 (1051 / 4221). */
+uint64_t facet_brdf_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
+                                   int32_t f0, int32_t albedo);
+
 /* ---- the shared primitives (exposed for the tests) ---------------------- */
 /* floor((2^64 - 1) / d) - 2^32, d in [2^31, 2^32) */
 uint32_t facet_fx_rcp32(uint32_t d);

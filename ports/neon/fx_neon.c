@@ -35,6 +35,35 @@ static inline fxv_u32 fxv_lo(fxv_u64 a) { return vandq_u64(a, vdupq_n_u64(0xFFFF
 static inline fxv_u32 fxv_hi(fxv_u64 a) { return vshrq_n_u64(a, 32); }
 static inline fxv_u32 fxv_narrow(fxv_u64 a) { return a; }
 
+/* the fast tier's ops (src/fx_body.h's list; src/fx_fast_body.h): values
+ * below 2^32 in 64-bit lanes; a left shift is masked back to 32 bits (mod
+ * 2^32, as the scalar ops); clz is the 32-bit clz of each lane's low word */
+#define FXV_M32_ vdupq_n_u64(0xFFFFFFFFu)
+/* not instantiated yet (the batches are wired separately): unused is fine */
+#define FXV_FAST_ static inline __attribute__((unused))
+FXV_FAST_ fxv_u32 fxv_shr(fxv_u32 a, int k) { return vshlq_u64(a, vdupq_n_s64(-k)); }
+FXV_FAST_ fxv_u32 fxv_shl(fxv_u32 a, int k) { return vandq_u64(vshlq_u64(a, vdupq_n_s64(k)), FXV_M32_); }
+FXV_FAST_ fxv_u32 fxv_shrv(fxv_u32 a, fxv_u32 n) { return vshlq_u64(a, vnegq_s64(vreinterpretq_s64_u64(n))); }
+FXV_FAST_ fxv_u32 fxv_shlv(fxv_u32 a, fxv_u32 n) { return vandq_u64(vshlq_u64(a, vreinterpretq_s64_u64(n)), FXV_M32_); }
+FXV_FAST_ fxv_u32 fxv_lt(fxv_u32 a, fxv_u32 b) { return vcltq_u64(a, b); }
+FXV_FAST_ fxv_u32 fxv_sel(fxv_u32 m, fxv_u32 a, fxv_u32 b) { return vbslq_u64(m, a, b); }
+FXV_FAST_ fxv_u32 fxv_min(fxv_u32 a, fxv_u32 b) { return vbslq_u64(vcltq_u64(a, b), a, b); }
+FXV_FAST_ fxv_u32 fxv_max(fxv_u32 a, fxv_u32 b) { return vbslq_u64(vcltq_u64(a, b), b, a); }
+FXV_FAST_ fxv_u32 fxv_and(fxv_u32 a, fxv_u32 b) { return vandq_u64(a, b); }
+FXV_FAST_ fxv_u32 fxv_or(fxv_u32 a, fxv_u32 b) { return vorrq_u64(a, b); }
+FXV_FAST_ fxv_u32 fxv_not(fxv_u32 a) { return veorq_u64(a, FXV_M32_); }
+FXV_FAST_ fxv_u32 fxv_clz(fxv_u32 a) { return vmovl_u32(vclz_u32(vmovn_u64(a))); }
+FXV_FAST_ fxv_u32 fxv_clamp_off(fxv_i32 x, int32_t lo, int32_t hi)
+{
+    int32x2_t c = vmin_s32(vmax_s32(x, vdup_n_s32(lo)), vdup_n_s32(hi));
+    return vmovl_u32(vreinterpret_u32_s32(vsub_s32(c, vdup_n_s32(lo))));
+}
+FXV_FAST_ fxv_u32 fxv_lut(const uint32_t *t, fxv_u32 i)
+{
+    uint64x2_t r = vdupq_n_u64(t[vgetq_lane_u64(i, 0)]);
+    return vsetq_lane_u64(t[vgetq_lane_u64(i, 1)], r, 1);
+}
+
 static inline fxv_i32 fxv_load(const int32_t *p) { return vld1_s32(p); }
 /* macros, not functions: a port need not use every output type (clang
  * warns about an unused static function) */

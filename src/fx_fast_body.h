@@ -1,0 +1,523 @@
+/* fx_fast_body.h - the fx_fast tier (facet/fx.h "fast tier"), written once
+ * over the lane op layer of src/fx_body.h: the scalar specification
+ * (src/fx_fast.c over src/fx_ops_scalar.h) and the SIMD ports (the ops are
+ * in ports/avx2/fx_avx2.c and ports/neon/fx_neon.c) instantiate these same
+ * bodies.  Branch-free (selects, min/max, per-lane shifts, table lookups),
+ * integer only.
+ *
+ * The datapath (facet/fx.h's "datapath" paragraph says it in short):
+ *   - raw Q15 inputs are clamped to the domain first;
+ *   - products of small operands are 16 x 16 -> 32 bit (fxv_mul32: the
+ *     operands and the product below 2^32 as the brackets show), wider
+ *     ones the high word of one 32 x 32 -> 64 product (fxw_mulhi); a chain
+ *     of high words keeps every factor >= 2^21, so no renormalisation is
+ *     needed inside it and each truncation is <= 2^-21 relative;
+ *   - the quantities exact in 64 bits (d of D, w of the Smith roots, e and
+ *     the Smith denominators) give their top 32 bits (fxw_top: one clz);
+ *   - each value carries a scale 2^-E, E a constant or, where the range is
+ *     wide, an exponent lane (a sum of clz counts and constants);
+ *   - 1/x and sqrt(x): 129- and 97-entry Q20 tables of the function on the
+ *     normalised mantissa, 7 index bits, 15 bits of linear interpolation
+ *     (one multiply): 1/x to 2^-16, sqrt to 2^-15 relative; no iteration
+ *     (and a 257-entry table of the diffuse's 1 + y + ... + y^4);
+ *   - every rounding is a truncation (floor) except the final one of each
+ *     kernel (round to nearest, ties up) and the few marked "+ half";
+ *     results saturate at the format's maximum (fxr_div).
+ * Bounds in brackets say why a value fits its 32 (or 64) bits. */
+#ifndef FACET_FX_FAST_BODY_H
+#define FACET_FX_FAST_BODY_H
+
+#define FXF_ONE 32768u
+
+/* the bodies are meant to be one straight-line sequence per kernel */
+#if defined(__GNUC__)
+#define FXF_INLINE static inline __attribute__((always_inline))
+#else
+#define FXF_INLINE static inline
+#endif
+
+/* floor(a b / 2^32): one UMULL's high word (four 16x16 MULS on ARMv6-M) */
+FXF_INLINE fxv_u32 fxw_mulhi(fxv_u32 a, fxv_u32 b) { return fxv_hi(fxv_mulw(a, b)); }
+
+/* 1 / x on [1, 2): fxf_rcp_tab[i] = round(2^35 / (2^15 + 2^8 i)), i = 0..128,
+ * the first (2^20) held at 2^20 - 1 so every result is below 2^20 */
+static const uint32_t fxf_rcp_tab[129] = {
+    1048575, 1040448, 1032444, 1024563, 1016801, 1009156, 1001625, 994205, 986895, 979691,
+    972592, 965595, 958698, 951899, 945195, 938586, 932068, 925640, 919300, 913046, 906877,
+    900790, 894785, 888859, 883011, 877240, 871544, 865921, 860370, 854890, 849479, 844137,
+    838861, 833650, 828504, 823422, 818401, 813441, 808541, 803699, 798915, 794188, 789516,
+    784899, 780336, 775825, 771366, 766958, 762601, 758292, 754032, 749820, 745654, 741534,
+    737460, 733430, 729444, 725501, 721601, 717742, 713924, 710147, 706409, 702711, 699051,
+    695429, 691844, 688296, 684784, 681308, 677867, 674461, 671089, 667750, 664444, 661171,
+    657930, 654721, 651542, 648395, 645278, 642190, 639132, 636103, 633102, 630130, 627186,
+    624269, 621378, 618515, 615678, 612866, 610081, 607320, 604584, 601873, 599186, 596523,
+    593884, 591268, 588674, 586104, 583555, 581029, 578525, 576042, 573580, 571139, 568719,
+    566320, 563940, 561580, 559241, 556920, 554619, 552336, 550073, 547827, 545601, 543392,
+    541201, 539027, 536871, 534732, 532610, 530505, 528416, 526344, 524288,
+};
+
+/* sqrt on [1/4, 1]: fxf_sqrt_tab[j] = round(2^20 sqrt((32 + j) / 128)), j = 0..96,
+ * the last (2^20) held at 2^20 - 1 so every result is below 2^20 */
+static const uint32_t fxf_sqrt_tab[97] = {
+    524288, 532417, 540424, 548314, 556091, 563762, 571330, 578798, 586172, 593454, 600647,
+    607756, 614782, 621729, 628599, 635395, 642119, 648773, 655360, 661881, 668339, 674734,
+    681070, 687347, 693568, 699733, 705844, 711903, 717911, 723869, 729778, 735640, 741455,
+    747225, 752951, 758634, 764275, 769874, 775432, 780952, 786432, 791875, 797280, 802649,
+    807982, 813280, 818544, 823775, 828972, 834137, 839270, 844372, 849444, 854485, 859497,
+    864479, 869433, 874359, 879258, 884129, 888974, 893792, 898584, 903351, 908093, 912811,
+    917504, 922173, 926819, 931442, 936041, 940619, 945174, 949707, 954219, 958709, 963179,
+    967627, 972056, 976464, 980853, 985222, 989572, 993903, 998215, 1002508, 1006783,
+    1011040, 1015279, 1019501, 1023705, 1027892, 1032062, 1036215, 1040352, 1044472,
+    1048575,
+};
+
+/* r ~ 2^51 / m for m in [2^31, 2^32): r in [2^19, 2^20).  The top 7 bits
+ * below the leading one index the table, the next 15 interpolate linearly
+ * [(R[i] - R[i+1]) < 2^13, f < 2^15: the product < 2^28]; relative error
+ * <= 2^-16 (interpolation h^2/8 max|f''| = 2^-16 absolute at 1/x ~ 1,
+ * table and step roundings 2^-21; measured 2^-15.95). */
+FXF_INLINE fxv_u32 fxf_rcp20(fxv_u32 m)
+{
+    fxv_u32 i = fxv_sub32(fxv_shr(m, 24), fxv_k32(128)), f = fxv_and(fxv_shr(m, 9), fxv_k32(0x7FFF));
+    fxv_u32 r0 = fxv_lut(fxf_rcp_tab, i), r1 = fxv_lut(fxf_rcp_tab, fxv_add32(i, fxv_k32(1)));
+    return fxv_sub32(r0, fxv_shr(fxv_add32(fxv_mul32(fxv_sub32(r0, r1), f), fxv_k32(1u << 14)), 15));
+}
+
+/* s ~ 2^20 sqrt(x / 2^32) for x in [2^30, 2^32): s in [2^19, 2^20).  7
+ * index bits, 15 interpolation bits [(S[j+1] - S[j]) < 2^13]; relative
+ * error <= 2^-15 (h^2/8 max|f''| at 1/4: 2^-16 absolute on sqrt = 1/2;
+ * measured 2^-14.98). */
+FXF_INLINE fxv_u32 fxf_sqrt20(fxv_u32 x)
+{
+    fxv_u32 j = fxv_sub32(fxv_shr(x, 25), fxv_k32(32)), f = fxv_and(fxv_shr(x, 10), fxv_k32(0x7FFF));
+    fxv_u32 s0 = fxv_lut(fxf_sqrt_tab, j), s1 = fxv_lut(fxf_sqrt_tab, fxv_add32(j, fxv_k32(1)));
+    return fxv_add32(s0, fxv_shr(fxv_add32(fxv_mul32(fxv_sub32(s1, s0), f), fxv_k32(1u << 14)), 15));
+}
+
+/* ---- shared pieces ---------------------------------------------------------- */
+/* the two-cosine clamp and S = NL + NV in [256, 2^16] */
+FXF_INLINE fxv_u32 fxf_cos(fxv_i32 x) { return fxv_clamp(x, FACET_FX_COS_MIN, FACET_FX_ONE); }
+FXF_INLINE fxv_u32 fxf_unit(fxv_i32 x) { return fxv_clamp(x, 0, FACET_FX_ONE); }
+FXF_INLINE fxv_u32 fxf_alpha(fxv_i32 x) { return fxv_clamp(x, FACET_FX_ALPHA_MIN, FACET_FX_ONE); }
+
+/* The dot triple.  With S = NL + NV and lov clamped to [-32767, 32768]
+ * (L.V = -1 and -1 + 2^-15 give the same raised t: s^2/2 >= 2^-15):
+ *   P = (2^16 - S)(2^16 + S)  = (4 - s^2) 2^30            [<= 2^32 - 2^16]
+ *   Q = (2^15 - LOV) 2^16     = (4 - 2t) 2^30             [<= 2^32 - 2^16]
+ *   u = min(P, Q)             = (4 - 2 t_r) 2^30, t_r = max(t, s^2/2), the
+ *                               facet.h raise, exact
+ *   w = P - u                 = (2 t_r - s^2) 2^30, exact (the peak's
+ *                               cancellation without rounding)
+ *   c = ~u = 2^32 - 1 - u     = (t_r / 2) 2^32 - 1 = L.H^2 2^32 - 1
+ *                               [c >= 2^16 - 1: t_r >= s^2/2 >= 2^-15] */
+typedef struct { fxv_u32 s, u, w, c; } fxf_dots;
+
+FXF_INLINE fxf_dots fxf_dots_of(fxv_u32 nl, fxv_u32 nv, fxv_i32 lov)
+{
+    fxf_dots g;
+    fxv_u32 t = fxv_clamp_off(lov, -FACET_FX_ONE + 1, FACET_FX_ONE); /* LOV + 32767 */
+    fxv_u32 p, q;
+    g.s = fxv_add32(nl, nv);
+    p = fxv_mul32(fxv_sub32(fxv_k32(65536), g.s), fxv_add32(fxv_k32(65536), g.s));
+    q = fxv_shl(fxv_sub32(fxv_k32(65535), t), 16); /* 2^15 - LOV in [0, 65535] */
+    g.u = fxv_min(p, q);
+    g.w = fxv_sub32(p, g.u);
+    g.c = fxv_not(g.u);
+    return g;
+}
+
+/* sqrt(c 2^-32) for c in [2^16 - 1, 2^32): an even normalising shift 2h
+ * [h <= 8], the table: sqrt = s 2^-(20 + h), s in [2^19, 2^20) */
+typedef struct { fxv_u32 s, h; } fxf_root;
+
+FXF_INLINE fxf_root fxf_sqrt32(fxv_u32 c)
+{
+    fxf_root r;
+    fxv_u32 k = fxv_and(fxv_clz(c), fxv_k32(30));
+    r.s = fxf_sqrt20(fxv_shlv(c, k));
+    r.h = fxv_shr(k, 1);
+    return r;
+}
+
+/* ---- loh_from_dots ------------------------------------------------------------
+ * L.H = sqrt(T / 2^16), T = 2^15 + LOV: c = T 2^16 - 1 (exact for T >= 1,
+ * [(T - 1) 2^16 <= 2^32 - 2^16]), raw = round(s / 2^(5 + h)); T = 0 gives 0. */
+FXF_INLINE fxv_u32 fxf_fast_loh_from_dots(fxv_i32 lov)
+{
+    fxv_u32 t = fxv_clamp_off(lov, -FACET_FX_ONE, FACET_FX_ONE);
+    fxv_u32 c = fxv_add32(fxv_shl(fxv_sub32(fxv_max(t, fxv_k32(1)), fxv_k32(1)), 16), fxv_k32(0xFFFF));
+    fxf_root r = fxf_sqrt32(c);
+    fxv_u32 v = fxv_shr(fxv_add32(fxv_shrv(r.s, fxv_add32(r.h, fxv_k32(4))), fxv_k32(1)), 1);
+    return fxv_sel(fxv_lt(t, fxv_k32(1)), fxv_k32(0), v);
+}
+
+/* ---- noh_from_dots ------------------------------------------------------------
+ * N.H = s / sqrt(2 t_r) = s / (2 L.H) = S 2^(4 + h) / s_c; with r =
+ * rcp20(s_c 2^12) ~ 2^39 / s_c: x = hi(S 2^15, r 2^12) = S r 2^-5 [S 2^15
+ * <= 2^31], raw = round(x / 2^(15 - h)), at most 2^15; w = 0 (at or past
+ * N.H = 1) gives 2^15. */
+FXF_INLINE fxv_u32 fxf_fast_noh_from_dots(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov)
+{
+    fxf_dots g = fxf_dots_of(fxf_cos(nol), fxf_cos(nov), lov);
+    fxf_root r = fxf_sqrt32(g.c);
+    fxv_u32 x = fxw_mulhi(fxv_shl(g.s, 15), fxv_shl(fxf_rcp20(fxv_shl(r.s, 12)), 12));
+    fxv_u32 v = fxv_shr(fxv_add32(fxv_shrv(x, fxv_sub32(fxv_k32(14), r.h)), fxv_k32(1)), 1);
+    v = fxv_min(v, fxv_k32(FXF_ONE));
+    return fxv_sel(fxv_lt(g.w, fxv_k32(1)), fxv_k32(FXF_ONE), v);
+}
+
+/* ---- 32-bit fixed helpers ---------------------------------------------------
+ * (fxw_mulhi: at the top.) */
+
+/* the top 32 bits of a 64-bit x with 2^26 <= x < 2^63: top = floor(x /
+ * 2^(32 - kk)), kk = min(clz(hi), 31) in [1, 31], so top >= 2^31 when x >=
+ * 2^32 and top = floor(x / 2) >= 2^25 below (every user normalises again,
+ * or squares it: >= 2^18); x ~ top 2^(32 - e), truncated <= 2^-25 */
+FXF_INLINE fxv_u32 fxw_top(fxv_u64 v, fxv_u32 *e)
+{
+    fxv_u32 hi = fxv_hi(v), kk = fxv_min(fxv_clz(hi), fxv_k32(31));
+    *e = kk;
+    return fxv_or(fxv_shlv(hi, kk), fxv_shrv(fxv_lo(v), fxv_sub32(fxv_k32(32), kk)));
+}
+
+/* round(n / d 2^s) (ties up), saturated at max, with s given biased as the
+ * lane b = 95 - s (so a per-lane s works too); n < 2^32 (0 gives 0), d >= 1:
+ *   kn, kd normalise n and d; r = rcp20(d 2^kd) ~ 2^51 / (d 2^kd);
+ *   q = hi(n 2^kn, r 2^12) ~ n / d 2^(31 + kn - kd), in [2^30, 2^32) for n > 0
+ *   (relative error <= 2^-15.9: the table, the truncations), then shifted
+ *   by kq = 1 - (bit 31 of q) into [2^31, 2^32);
+ *   the result q 2^-sr, sr = 31 + kn - kd + kq - s: a rounded right shift;
+ *   sr < 0 means >= 2^32 and saturates, sr > 32 gives 0 [every shift count
+ *   in [0, 31]]. */
+FXF_INLINE fxv_u32 fxr_divb(fxv_u32 n, fxv_u32 d, fxv_u32 b, uint32_t max)
+{
+    fxv_u32 kn = fxv_min(fxv_clz(n), fxv_k32(31)), kd = fxv_clz(d);
+    fxv_u32 q = fxw_mulhi(fxv_shlv(n, kn), fxv_shl(fxf_rcp20(fxv_shlv(d, kd)), 12));
+    fxv_u32 kq = fxv_sub32(fxv_k32(1), fxv_shr(q, 31)); /* q 2^kq in [2^31, 2^32) */
+    fxv_u32 srb = fxv_add32(fxv_sub32(fxv_add32(b, kn), kd), kq); /* sr + 64 */
+    q = fxv_shlv(q, kq);
+    fxv_u32 t = fxv_shrv(q, fxv_min(fxv_sub32(fxv_max(srb, fxv_k32(65)), fxv_k32(65)), fxv_k32(31)));
+    fxv_u32 v = fxv_sel(fxv_lt(srb, fxv_k32(65)), t, fxv_shr(fxv_add32(t, fxv_k32(1)), 1));
+    v = fxv_sel(fxv_lt(srb, fxv_k32(64)), fxv_k32(max), fxv_sel(fxv_lt(srb, fxv_k32(97)), v, fxv_k32(0)));
+    return fxv_min(v, fxv_k32(max));
+}
+#define fxr_div(n, d, s, max) fxr_divb(n, d, fxv_k32(95u - (s)), max)
+
+/* ---- Fresnel ------------------------------------------------------------------
+ * F = f0 + (1 - f0) y^5, Y = 2^15 - C (Q15), hi = fxw_mulhi:
+ *   y2 = Y^2                            Q30 exact   [<= 2^30]
+ *   y4 = hi(2 y2, 2 y2)                 Q30         [<= 2^30]
+ *   y5 = hi(2 y4, Y 2^16)               Q30         [<= 2^30]
+ *   F30 = F0 2^15 + hi(2 y5, (2^15 - F0) 2^16)    Q30 [<= 2^30]
+ *   raw = round(F30 / 2^15).
+ * Every operand <= 2^31; truncations <= 2^-30 each, so the error is the
+ * final rounding; F(f0, 1) = f0 and F(f0, 0) = 1 exactly. */
+FXF_INLINE fxv_u32 fxf_fast_fresnel_schlick(fxv_i32 f0_in, fxv_i32 cos_in)
+{
+    fxv_u32 f0 = fxf_unit(f0_in), y = fxv_sub32(fxv_k32(FXF_ONE), fxf_unit(cos_in));
+    fxv_u32 y2 = fxv_shl(fxv_mul32(y, y), 1);
+    fxv_u32 y4 = fxw_mulhi(y2, y2);
+    fxv_u32 y5 = fxw_mulhi(fxv_shl(y4, 1), fxv_shl(y, 16));
+    fxv_u32 t = fxw_mulhi(fxv_shl(y5, 1), fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), f0), 16));
+    return fxv_shr(fxv_add32(fxv_add32(fxv_shl(f0, 15), t), fxv_k32(1u << 14)), 15);
+}
+
+/* ---- GGX D ----------------------------------------------------------------------
+ * d = (1 - n)(1 + n) + (n a)^2: d60 = (2^15 - N)(2^15 + N) 2^30 + (N A)^2 Q60
+ * exact [<= 2^60, >= a^2 2^60 >= 2^40]; its top 32 bits dt (fxw_top, d =
+ * dt 2^-(28 + e)); pi d^2 = pd 2^-(22 + 2e), pd = hi(hi(dt, dt), pi 2^30)
+ * [>= 2^29.6]; D 2^13 = A^2 / pd 2^(5 + 2e), one fxr_div. */
+#define FXF_PI_30 3373259426u /* round(pi 2^30) */
+
+FXF_INLINE fxv_u32 fxf_fast_ggx_d(fxv_i32 noh, fxv_i32 alpha)
+{
+    fxv_u32 n = fxf_unit(noh), a = fxf_alpha(alpha), na = fxv_mul32(n, a), e;
+    fxv_u64 d60 = fxv_add64(fxv_mulw(fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), n), fxv_add32(fxv_k32(FXF_ONE), n)),
+                                     fxv_k32(1u << 30)),
+                            fxv_mulw(na, na));
+    fxv_u32 dt = fxw_top(d60, &e);
+    fxv_u32 pd = fxw_mulhi(fxw_mulhi(dt, dt), fxv_k32(FXF_PI_30));
+    return fxr_divb(fxv_mul32(a, a), pd, fxv_sub32(fxv_k32(90), fxv_shl(e, 1)), FACET_FX_MAX_D);
+}
+
+/* ---- Smith, exact ------------------------------------------------------------
+ * r(x) = sqrt(w), w = a^2 (1 - x)(1 + x) + x^2: w60 = A^2 (2^15 - X)(2^15 + X)
+ * + X^2 2^30 Q60 exact [<= 2^60, >= a^2 2^60 >= 2^40]; its top 32 bits
+ * (w = top 2^-E, E = 28 + e in [31, 52]); the exponent made even by
+ * top >> (E & 1), the table: r = sq 2^-(4 + H), H = E >> 1 in [15, 26],
+ * sq in [2^19, 2^20); returned as Q30: sq 2^(26 - H) [r <= 1: <= 2^30;
+ * r >= alpha >= 2^-10: >= 2^20]. */
+FXF_INLINE fxv_u32 fxw_smith_r30(fxv_u32 x, fxv_u32 a2)
+{
+    fxv_u32 e, top, ee, hh;
+    top = fxw_top(fxv_add64(fxv_mulw(a2, fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), x), fxv_add32(fxv_k32(FXF_ONE), x))),
+                            fxv_mulw(fxv_mul32(x, x), fxv_k32(1u << 30))), &e);
+    ee = fxv_add32(e, fxv_k32(28));
+    hh = fxv_shr(ee, 1);
+    return fxv_shlv(fxf_sqrt20(fxv_shrv(top, fxv_and(ee, fxv_k32(1)))), fxv_sub32(fxv_k32(26), hh));
+}
+
+/* G1 = 2 n / (n + r(n)): den30 = N 2^15 + r30 [<= 2^31]; G1 2^15 = 2N 2^30 /
+ * den30, one fxr_div.  G1(0) = 0, G1(1) = 1. */
+FXF_INLINE fxv_u32 fxf_fast_smith_g1(fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 n = fxf_unit(nov), a = fxf_alpha(alpha);
+    fxv_u32 den = fxv_add32(fxv_shl(n, 15), fxw_smith_r30(n, fxv_mul32(a, a)));
+    return fxr_div(fxv_shl(n, 1), den, 30, FXF_ONE);
+}
+
+/* nv r(nl) + nl r(nv) in Q45, in 64 bits [< 2^46, >= 2^28], top 32 bits:
+ * ~ dt 2^(32 - e) */
+FXF_INLINE fxv_u32 fxf_g2_den(fxv_u32 nl, fxv_u32 nv, fxv_u32 a2, fxv_u32 *e)
+{
+    return fxw_top(fxv_add64(fxv_mulw(nv, fxw_smith_r30(nl, a2)), fxv_mulw(nl, fxw_smith_r30(nv, a2))), e);
+}
+
+/* G2 = 2 nl nv / den: G2 2^15 = 2 NL NV 2^30 / den45 = NL NV / dt 2^(e - 1) */
+FXF_INLINE fxv_u32 fxf_fast_smith_g2(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha), e;
+    fxv_u32 dt = fxf_g2_den(nl, nv, fxv_mul32(a, a), &e);
+    return fxr_divb(fxv_mul32(nl, nv), dt, fxv_sub32(fxv_k32(96), e), FXF_ONE);
+}
+
+/* Vis = 0.5 / den: Vis 2^16 = 2^60 / den45 = 2^31 / dt 2^(e - 3) [< 2^30] */
+FXF_INLINE fxv_u32 fxf_fast_smith_vis(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha), e;
+    fxv_u32 dt = fxf_g2_den(nl, nv, fxv_mul32(a, a), &e);
+    return fxr_divb(fxv_k32(1u << 31), dt, fxv_sub32(fxv_k32(98), e), FACET_FX_MAX_VIS);
+}
+
+/* G1(nl) G1(nv) = 4 nl nv / ((nl + r(nl)) (nv + r(nv))): the two sums Q30
+ * [<= 2^31], their product Q60 [<= 2^62] ~ pt 2^(32 - e);
+ * G 2^15 = NL NV 2^47 / prod = NL NV / pt 2^(15 + e) */
+FXF_INLINE fxv_u32 fxf_fast_smith_g2_uncorrelated(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha), a2 = fxv_mul32(a, a), e;
+    fxv_u32 dl = fxv_add32(fxv_shl(nl, 15), fxw_smith_r30(nl, a2));
+    fxv_u32 dv = fxv_add32(fxv_shl(nv, 15), fxw_smith_r30(nv, a2));
+    fxv_u32 pt = fxw_top(fxv_mulw(dl, dv), &e);
+    return fxr_divb(fxv_mul32(nl, nv), pt, fxv_sub32(fxv_k32(80), e), FXF_ONE);
+}
+
+/* ---- Smith, Hammon ------------------------------------------------------------
+ * G1 ~ 2 n / (n (2 - a) + a): den30 = N (2^16 - A) + A 2^15 exact [2^20 ..
+ * 2^31]; G1 2^15 = 2N 2^30 / den30, one fxr_div. */
+FXF_INLINE fxv_u32 fxf_fast_smith_g1_hammon(fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 n = fxf_unit(nov), a = fxf_alpha(alpha);
+    fxv_u32 den = fxv_add32(fxv_mul32(n, fxv_sub32(fxv_k32(65536), a)), fxv_shl(a, 15));
+    return fxr_div(fxv_shl(n, 1), den, 30, FXF_ONE);
+}
+
+/* m = (1 - a) 2 nl nv + a (nl + nv): m45 = 2 NL NV (2^15 - A) + A S 2^15
+ * Q45 exact [< 2^47, >= a s 2^45 >= 2^28], its top 32 bits mt:
+ * m45 ~ mt 2^(32 - e). */
+FXF_INLINE fxv_u32 fxf_hammon_m(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 nlnv, fxv_u32 *e)
+{
+    return fxw_top(fxv_add64(fxv_mulw(fxv_shl(nlnv, 1), fxv_sub32(fxv_k32(FXF_ONE), a)),
+                             fxv_mulw(fxv_mul32(a, fxv_add32(nl, nv)), fxv_k32(1u << 15))), e);
+}
+
+/* G2 2^15 = 2 NL NV 2^30 / m45 = NL NV / mt 2^(e - 1) */
+FXF_INLINE fxv_u32 fxf_fast_smith_g2_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha), p = fxv_mul32(nl, nv), e;
+    fxv_u32 mt = fxf_hammon_m(nl, nv, a, p, &e);
+    return fxr_divb(p, mt, fxv_sub32(fxv_k32(96), e), FXF_ONE);
+}
+
+/* Vis 2^16 = 0.5 2^16 2^45 / m45 = 2^31 / mt 2^(e - 3) [< 2^30] */
+FXF_INLINE fxv_u32 fxf_fast_smith_vis_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha), e;
+    fxv_u32 mt = fxf_hammon_m(nl, nv, a, fxv_mul32(nl, nv), &e);
+    return fxr_divb(fxv_k32(1u << 31), mt, fxv_sub32(fxv_k32(98), e), FACET_FX_MAX_VIS);
+}
+
+/* ---- Hammon's diffuse and the whole model: 32-bit fixed stages -----------------
+ * Here every stage is a 32-bit value x with a scale 2^-E, E a compile-time
+ * constant or an exponent lane; a product is the high word of one 32x32->64
+ * multiply (fxw_mulhi, one UMULL on Cortex-M3/M4), and a chain of such
+ * products needs no renormalisation as long as each factor keeps >= 2^21
+ * (the bounds in brackets); clz-normalisations only where a range is wide.
+ * Truncations are absolute (<= 2^-E) and small against the bound. */
+
+/* 1 - (1 - x)^5 = x (1 + y + y^2 + y^3 + y^4), y = 1 - x (no cancellation at
+ * grazing): the sum from a table of it on x = i/256, fxf_p5_tab[i] =
+ * round(2^16 sum), i = 0..256 (and a copy of the last), linearly
+ * interpolated by the 7 bits of X below the index [steps < 2^12: the
+ * product < 2^19]; error h^2/8 max|sum''| = 2^-16.7 on a sum >= 1 (the
+ * chord of a convex function: never below it), with the roundings
+ * 2^-15.8 relative (measured).  P = X sum Q31 [x sum = P
+ * <= 1, the chord's excess < 2^-16: < 2^31 + 2^15]. */
+static const uint32_t fxf_p5_tab[258] = {
+    327680, 325130, 322600, 320089, 317599, 315128, 312676, 310243, 307830, 305436, 303061,
+    300704, 298367, 296048, 293747, 291465, 289201, 286955, 284728, 282518, 280326, 278152,
+    275996, 273857, 271735, 269631, 267544, 265474, 263421, 261384, 259365, 257362, 255376,
+    253406, 251453, 249515, 247594, 245689, 243800, 241927, 240069, 238227, 236400, 234589,
+    232793, 231013, 229247, 227497, 225761, 224040, 222334, 220642, 218965, 217303, 215654,
+    214020, 212400, 210794, 209202, 207624, 206059, 204508, 202971, 201447, 199936, 198439,
+    196954, 195483, 194025, 192580, 191147, 189727, 188320, 186925, 185543, 184173, 182815,
+    181470, 180136, 178815, 177505, 176207, 174921, 173646, 172383, 171132, 169892, 168663,
+    167445, 166238, 165043, 163858, 162684, 161521, 160369, 159227, 158096, 156975, 155865,
+    154765, 153675, 152595, 151525, 150465, 149415, 148375, 147344, 146323, 145312, 144310,
+    143318, 142335, 141361, 140396, 139441, 138494, 137557, 136628, 135708, 134797, 133894,
+    133000, 132115, 131237, 130369, 129508, 128656, 127812, 126976, 126148, 125328, 124516,
+    123711, 122915, 122125, 121344, 120570, 119804, 119044, 118293, 117548, 116811, 116080,
+    115357, 114641, 113932, 113229, 112534, 111845, 111162, 110487, 109818, 109155, 108499,
+    107849, 107205, 106568, 105937, 105312, 104693, 104080, 103473, 102872, 102276, 101687,
+    101103, 100525, 99952, 99385, 98823, 98267, 97716, 97171, 96631, 96096, 95566, 95041,
+    94521, 94007, 93497, 92992, 92492, 91996, 91506, 91020, 90539, 90062, 89590, 89123,
+    88659, 88201, 87746, 87296, 86850, 86408, 85971, 85538, 85108, 84683, 84261, 83844,
+    83431, 83021, 82615, 82213, 81814, 81420, 81029, 80641, 80257, 79877, 79500, 79126,
+    78756, 78389, 78025, 77665, 77308, 76954, 76603, 76256, 75911, 75570, 75231, 74896,
+    74563, 74234, 73907, 73583, 73262, 72944, 72628, 72315, 72005, 71697, 71392, 71090,
+    70790, 70492, 70197, 69905, 69615, 69327, 69042, 68759, 68478, 68200, 67924, 67650,
+    67378, 67109, 66841, 66576, 66313, 66052, 65793, 65536, 65536,
+};
+
+FXF_INLINE fxv_u32 fxf_p5(fxv_u32 x)
+{
+    fxv_u32 i = fxv_shr(x, 7), f = fxv_and(x, fxv_k32(127));
+    fxv_u32 t0 = fxv_lut(fxf_p5_tab, i), t1 = fxv_lut(fxf_p5_tab, fxv_add32(i, fxv_k32(1)));
+    return fxv_mul32(x, fxv_sub32(t0, fxv_shr(fxv_add32(fxv_mul32(fxv_sub32(t0, t1), f), fxv_k32(64)), 7)));
+}
+
+#define FXW_C105     34406u      /* round(1.05 2^15) */
+#define FXW_TENTH    104857u     /* floor(2^20 / 10) */
+#define FXW_MULTI    1563843070u /* round(0.1159 pi 2^32) */
+#define FXW_INV_PI   83443u      /* round(2^18 / pi) */
+#define FXW_INV_2PI  683565276u  /* round(2^32 / (2 pi)) */
+
+/* The diffuse bracket B = (1 - a) 1.05 P(nl) P(nv) + a rough + albedo a
+ * 0.1159 pi in Q25 [B <= 64.9: < 2^31.02], times albedo / pi (Q33): Q26
+ * [<= 20.65: < 2^30.4].
+ * With t = t_r = x 2^-(31 + k) (x = c 2^k in [2^30, 2^32), the sqrt's
+ * normalised c) and L.H = ls 2^-(20 + h):
+ *   rough = t (4.5 - t) / 10 (1 + L.H / s)
+ *   t (4.5 - t) = mh 2^-(28 + k), mh = hi(x t45), t45 = (4.5 - t) Q29
+ *                 [2.5 2^29 .. 4.5 2^29; mh >= 2^28.3]
+ *   1 / s = rS 2^(kS - 36), kS = clz(S) in [15, 23], rS = rcp20(S 2^kS)
+ *   q = 1 + L.H / s  Q24 = 2^24 + hi(ls 2^12, rS 2^12) >> (24 + h - kS)  [shift 1..17;
+ *                 L.H / s <= 128: q < 2^31.01]
+ *   a rough = x2 2^-(24 + k), x2 = hi(2 hi(mh, A floor(2^20/10)), q), to Q25.
+ * Each term's relative error <= 2^-14.8 (the P sums), its truncations
+ * <= 2^-25 absolute: below the output's LSB (2^-24) even at albedo = 1. */
+FXF_INLINE fxv_u32 fxw_diffuse26(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 alb, fxv_u32 s,
+                                    fxv_u32 c, fxv_u32 x, fxv_u32 k, fxf_root lh)
+{
+    fxv_u32 pp = fxw_mulhi(fxf_p5(nl), fxf_p5(nv));                                   /* Q30 */
+    fxv_u32 k1 = fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), a), fxv_k32(FXW_C105));       /* Q30 <= 2^30.07 */
+    fxv_u32 smooth = fxw_mulhi(pp, fxv_shl(k1, 1));                                   /* Q29 */
+    fxv_u32 t45 = fxv_sub32(fxv_k32(9u << 28), fxv_shr(c, 2));                       /* Q29 */
+    fxv_u32 mh = fxw_mulhi(x, t45);
+    fxv_u32 ks = fxv_clz(s), rs = fxf_rcp20(fxv_shlv(s, ks));
+    fxv_u32 q = fxv_add32(fxv_k32(1u << 24), fxv_shrv(fxw_mulhi(fxv_shl(lh.s, 12), fxv_shl(rs, 12)),
+                                                      fxv_sub32(fxv_add32(lh.h, fxv_k32(24)), ks)));
+    /* a t (4.5 - t) / 10 = x1 2^-(31 + k) [mh < 4.5 2^29: t < 2^(1 - k);
+     * A floor(2^20 / 10) < 2^31.68: x1 < 2^30.85]; a rough = x2 2^-(24 + k),
+     * x2 = hi(2 x1, q); Q25: 2 x2 >> k [a rough 2^(25 + k) < 2^31.9: rough
+     * <= 0.45 t (1 + 128 sqrt(t/2)) with t < 2^(1 - k)] */
+    fxv_u32 x1 = fxw_mulhi(mh, fxv_mul32(a, fxv_k32(FXW_TENTH)));
+    fxv_u32 rough = fxv_shrv(fxv_shl(fxw_mulhi(fxv_shl(x1, 1), q), 1), k);
+    fxv_u32 multi = fxw_mulhi(fxv_shl(fxv_mul32(alb, a), 1), fxv_k32(FXW_MULTI));    /* Q31 */
+    fxv_u32 b = fxv_add32(fxv_add32(fxv_shr(fxv_add32(smooth, fxv_k32(8)), 4), rough),
+                          fxv_shr(fxv_add32(multi, fxv_k32(32)), 6));
+    return fxw_mulhi(b, fxv_mul32(alb, fxv_k32(FXW_INV_PI)));                         /* alb/pi Q33 -> Q26 */
+}
+
+FXF_INLINE fxv_u32 fxf_fast_diffuse_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
+                                              fxv_i32 albedo)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov);
+    fxf_dots g = fxf_dots_of(nl, nv, lov);
+    fxf_root lh = fxf_sqrt32(g.c);
+    fxv_u32 k = fxv_shl(lh.h, 1);
+    fxv_u32 d = fxw_diffuse26(nl, nv, fxf_alpha(alpha), fxf_unit(albedo), g.s, g.c, fxv_shlv(g.c, k), k, lh);
+    return fxv_shr(fxv_add32(fxv_shl(d, 1), fxv_k32(5)), 3); /* (d + 2.5) / 4: + half the mean floor */
+}
+
+/* ---- the whole model ------------------------------------------------------------
+ * brdf = spec + diffuse, spec = (a 2t)^2 F / (2 pi e^2 m) (fx_kernels.c):
+ *   y = 1 - L.H = u 2^-32 / (1 + L.H): (1 + L.H) Q31 is a normalised
+ *     mantissa [2^31, 2^32), r1 = rcp20 ~ 2^20 / (1 + L.H); u 2^ku in
+ *     [2^31, 2^32) (u = 0 read as 1: y ~ 2^-32, its y^5 vanishes);
+ *     y = ym 2^-(32 + ku), y^5 = y5 2^-(32 + 5 ku) [ym >= 2^30, y5 >= 2^22]
+ *   F = f0 + (1 - f0) y^5 = Fs 2^-(30 + j), j = min(5 ku, clz(F0) - 16)
+ *     [F0 2^(15 + j) < 2^31, the tail < 2^30], then normalised (kF); f0 = 0
+ *     gives j <= 16: F to 2^-46 absolute, which is what the output needs,
+ *     since F < 2^-16 means L.H ~ 1, so H ~ L ~ V off grazing: D Vis <=
+ *     2^16.3 and the error D Vis 2^-46 < 2^-29
+ *   a 2t = hi(A 2^ka, x) 2^-(13 + ka + k)   [>= 2^29], squared [>= 2^26]
+ *   e60 = (A S)^2 + w 2^30 (exact, < 2^63): its top 32 bits [>= 2^25]
+ *   m30 = (1 - a) 2 nl nv 2^30 + A S [<= 2^31, >= 2^15], normalised
+ *   1 / (e^2 m): rcp20 of the normalised product [>= 2^29 before]
+ *   spec = sp 2^-Es, Es an exponent lane (biased by 256; spec < 2^33)
+ * brdf Q29 in 64 bits = spec sp 2^(29 - Es) (one 32x32->64 product by a
+ * power of two <= 2^31) + diffuse Q26 2^3, rounded once to UQ40.24. */
+FXF_INLINE fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
+                                           fxv_i32 f0_in, fxv_i32 albedo)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha), f0 = fxf_unit(f0_in);
+    fxf_dots g = fxf_dots_of(nl, nv, lov);
+    fxf_root lh = fxf_sqrt32(g.c);
+    fxv_u32 k = fxv_shl(lh.h, 1), x = fxv_shlv(g.c, k);             /* 2t = x 2^-(30 + k) */
+    fxv_u32 r1, uu, ku, ym, y2, y4, y5, k5, kf, jj, ft, fs, kF, ka, a2t, g2, num;
+    fxv_u32 as, ee, em, etop, mtop, e2, dm, kd, rd, sp, ks, es, sl, sr;
+    fxv_u64 spec, d64;
+    /* Fresnel */
+    r1 = fxf_rcp20(fxv_add32(fxv_k32(1u << 31), fxv_shlv(lh.s, fxv_sub32(fxv_k32(11), lh.h)))); /* (1 + L.H) Q31 */
+    uu = fxv_max(g.u, fxv_k32(1));
+    ku = fxv_clz(uu);
+    ym = fxw_mulhi(fxv_shlv(uu, ku), fxv_shl(r1, 12));
+    y2 = fxw_mulhi(ym, ym);
+    y4 = fxw_mulhi(y2, y2);
+    y5 = fxw_mulhi(y4, ym);
+    k5 = fxv_add32(fxv_shl(ku, 2), ku);
+    kf = fxv_sub32(fxv_clz(f0), fxv_k32(16));            /* f0 = 0: 16 */
+    jj = fxv_min(k5, kf);
+    ft = fxw_mulhi(y5, fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), f0), 16));
+    fs = fxv_add32(fxv_shlv(f0, fxv_add32(jj, fxv_k32(15))),
+                   fxv_shrv(ft, fxv_min(fxv_sub32(fxv_add32(k5, fxv_k32(1)), jj), fxv_k32(31))));
+    kF = fxv_min(fxv_clz(fs), fxv_k32(31)); /* fs = 0 (F < 2^-46): spec 0 */
+    /* (a 2t)^2 F */
+    ka = fxv_clz(a);
+    a2t = fxw_mulhi(fxv_shlv(a, ka), x);
+    g2 = fxw_mulhi(a2t, a2t);
+    num = fxw_mulhi(g2, fxv_shlv(fs, kF));              /* 2^-(2ka + 2k + jj + kF - 8) */
+    /* e^2 m */
+    as = fxv_mul32(a, g.s);
+    etop = fxw_top(fxv_add64(fxv_mulw(as, as), fxv_mulw(g.w, fxv_k32(1u << 30))), &ee);
+    /* m30 = (1 - a) 2 nl nv 2^30 + A S = hi(2 NL NV, (2^15 - A) 2^17) + A S
+     * [(2^15 - 32) 2^17 < 2^32; m <= 2: m30 <= 2^31; m >= 2^-15: m30 >= 2^15,
+     * truncation <= 2^-15 relative], normalised: m = mtop 2^-(30 + km) */
+    mtop = fxv_add32(fxw_mulhi(fxv_shl(fxv_mul32(nl, nv), 1), fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), a), 17)), as);
+    em = fxv_clz(mtop);
+    mtop = fxv_shlv(mtop, em);
+    em = fxv_add32(em, fxv_k32(17));
+    /* e = etop 2^-(28 + ee), m = mtop 2^-(13 + em) */
+    e2 = fxw_mulhi(etop, etop);                        /* 2^-(24 + 2 ee) */
+    dm = fxw_mulhi(e2, mtop);                          /* 2^-(5 + 2 ee + em) [>= 2^29] */
+    kd = fxv_clz(dm);
+    rd = fxf_rcp20(fxv_shlv(dm, kd));     /* 1/(e^2 m) = rd 2^(2ee + em + kd - 46) */
+    sp = fxw_mulhi(fxw_mulhi(num, fxv_shl(rd, 12)), fxv_k32(FXW_INV_2PI));
+    /* spec = sp 2^-Es, Es = 2ka + 2k + jj + kF + 18 - 2ee - em - kd [sp >=
+     * 2^21], normalised: + ks, held biased by 256 [Es >= -2: spec < 2^33];
+     * Q29: sp 2^(29 - Es) < 2^62, a left shift sl <= 30 or a right one */
+    ks = fxv_min(fxv_clz(sp), fxv_k32(31));
+    sp = fxv_shlv(sp, ks);
+    es = fxv_sub32(fxv_add32(fxv_add32(fxv_add32(fxv_shl(fxv_add32(ka, k), 1), jj), fxv_add32(kF, ks)),
+                             fxv_k32(274)),
+                   fxv_add32(fxv_add32(fxv_shl(ee, 1), em), kd));
+    sl = fxv_sub32(fxv_k32(285), fxv_min(es, fxv_k32(285)));
+    sr = fxv_min(fxv_sub32(fxv_max(es, fxv_k32(285)), fxv_k32(285)), fxv_k32(31));
+    spec = fxv_mulw(fxv_shrv(sp, sr), fxv_shlv(fxv_k32(1), sl));
+    /* diffuse Q26 to Q29 plus half a Q26 unit: the mean of its last floor */
+    d64 = fxv_mulw(fxv_add32(fxv_shl(fxw_diffuse26(nl, nv, a, fxf_unit(albedo), g.s, g.c, x, k, lh), 1), fxv_k32(1)),
+                   fxv_k32(4));
+    return fxb_rshr64(fxv_add64(spec, d64), 5);
+}
+
+#endif
