@@ -31,7 +31,7 @@
 
 typedef struct port_entry {
     const facet_f32_port *f32, *f32_fast;
-    const facet_fx_port *fx; /* NULL: the scalar fx loops for every kernel */
+    const facet_fx_port *fx, *fx_fast; /* NULL: the tier's scalar loops for every kernel */
     int (*supported)(void);
 } port_entry;
 
@@ -45,19 +45,22 @@ static int avx512_and_avx2(void) { return facet_cpu_avx512f() && facet_cpu_avx2_
 static const port_entry ports[] = {
 #if FACET_X86
 #if defined(__x86_64__)
-    { &facet_port_avx512_f32, &facet_port_avx512_f32_fast, &facet_fx_port_avx2, avx512_and_avx2 },
+    { &facet_port_avx512_f32, &facet_port_avx512_f32_fast, &facet_fx_port_avx2, &facet_fx_fast_port_avx2,
+      avx512_and_avx2 },
 #endif
-    { &facet_port_avx2_f32, &facet_port_avx2_f32_fast, &facet_fx_port_avx2, facet_cpu_avx2_fma },
-    { &facet_port_sse2_f32, &facet_port_sse2_f32_fast, NULL, facet_cpu_sse2 },
+    { &facet_port_avx2_f32, &facet_port_avx2_f32_fast, &facet_fx_port_avx2, &facet_fx_fast_port_avx2,
+      facet_cpu_avx2_fma },
+    { &facet_port_sse2_f32, &facet_port_sse2_f32_fast, NULL, NULL, facet_cpu_sse2 },
 #endif
 #if FACET_ARM
 #if defined(__aarch64__)
-    { &facet_port_neon_f32, &facet_port_neon_f32_fast, &facet_fx_port_neon, facet_cpu_neon },
+    { &facet_port_neon_f32, &facet_port_neon_f32_fast, &facet_fx_port_neon, &facet_fx_fast_port_neon,
+      facet_cpu_neon },
 #else
-    { &facet_port_neon_f32, &facet_port_neon_f32_fast, NULL, facet_cpu_neon }, /* armv7: see ports/neon/fx_neon.c */
+    { &facet_port_neon_f32, &facet_port_neon_f32_fast, NULL, NULL, facet_cpu_neon }, /* armv7: see ports/neon/fx_neon.c */
 #endif
 #endif
-    { &facet_port_scalar_f32, &facet_port_scalar_f32_fast, NULL, always },
+    { &facet_port_scalar_f32, &facet_port_scalar_f32_fast, NULL, NULL, always },
 };
 #define N_PORTS (sizeof ports / sizeof ports[0])
 #define SCALAR_PORT (&ports[N_PORTS - 1])
@@ -116,7 +119,7 @@ int facet_set_port(const char *name)
 
 const char *facet_port_name(void) { return port()->f32->name; }
 
-const char *facet_fx_port_name(void) { return facet_fx_active_port()->name; }
+const char *facet_fx_port_name(void) { return facet_fx_active_port(0)->name; }
 
 size_t facet_port_count(void) { return N_PORTS; }
 
@@ -155,8 +158,10 @@ int facet_port_supported(const char *name)
 #undef FACET_KERNEL
 
 /* the fx batch entry points (src/fx_batch.c) ask here */
-const facet_fx_port *facet_fx_active_port(void)
+const facet_fx_port *facet_fx_active_port(int fast)
 {
-    const facet_fx_port *fx = port()->fx;
-    return fx ? fx : &facet_fx_port_scalar;
+    const port_entry *p = port();
+    if (fast)
+        return p->fx_fast ? p->fx_fast : &facet_fx_fast_port_scalar;
+    return p->fx ? p->fx : &facet_fx_port_scalar;
 }

@@ -1,7 +1,7 @@
-/* fx_batch.c - the public facet_<kernel>_fx_batch entry points: the active
- * port's own fixed-point code for the kernel where it has some, the scalar
- * loop (src/fx_kernels.c) otherwise.  Bit-identical either way.
- * Names generated here from src/kernels.def: one entry point per
+/* fx_batch.c - the public facet_<kernel>_fx_batch and _fx_fast_batch entry
+ * points: the active port's own code for the kernel and tier where it has
+ * some, the tier's scalar loop otherwise.  Bit-identical either way.
+ * Names generated here from src/kernels.def: two entry points per
  * fixed-point kernel. */
 #include "facet/fx.h"
 #include "port.h"
@@ -11,8 +11,13 @@
 #define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type,                  \
     void facet_##name##_fx_batch(fx_type *out, FACET_EACH_INPUT(n, PARAM_), size_t count) \
     {                                                                                   \
-        const facet_fx_port *fx = facet_fx_active_port();                               \
+        const facet_fx_port *fx = facet_fx_active_port(0);                              \
         (fx->name ? fx->name : facet_fx_port_scalar.name)(out, FACET_EACH_INPUT(n, ARG_), count); \
+    }                                                                                   \
+    void facet_##name##_fx_fast_batch(fx_type *out, FACET_EACH_INPUT(n, PARAM_), size_t count) \
+    {                                                                                   \
+        const facet_fx_port *fx = facet_fx_active_port(1);                              \
+        (fx->name ? fx->name : facet_fx_fast_port_scalar.name)(out, FACET_EACH_INPUT(n, ARG_), count); \
     })
 #include "kernels.def"
 #undef FACET_KERNEL

@@ -290,27 +290,7 @@ uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alp
     return fxf_fixed(r, FACET_FX_BRDF_FRAC, FACET_FX_MAX_BRDF);
 }
 
-/* ---- the scalar port's batches ------------------------------------------
- * The public facet_<kernel>_fx_batch entry points are in src/dispatch.c;
- * they run these loops unless the active port has code of its own for the
- * kernel (ports/<isa>/fx_<isa>.c), which gives the same bits.  Each element
- * is read before its output is written, so out may be the same array as an
- * input.  Names generated here from src/kernels.def: one loop per kernel. */
-#define PARAM_(q) const int32_t *x##q
-#define AT_(q) x##q[i]
-#define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type,              \
-    static void scalar_##name(fx_type *out, FACET_EACH_INPUT(n, PARAM_), size_t count) \
-    {                                                                               \
-        size_t i;                                                                   \
-        for (i = 0; i < count; i++)                                                 \
-            out[i] = facet_##name##_fx(FACET_EACH_INPUT(n, AT_));                   \
-    })
-#include "kernels.def"
-#undef FACET_KERNEL
-
-const facet_fx_port facet_fx_port_scalar = {
-    "scalar", 1,
-#define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type, scalar_##name,)
-#include "kernels.def"
-#undef FACET_KERNEL
-};
+/* ---- the scalar port's batches: src/fx_scalar_loops.h ----------------- */
+#define FX_TIER fx
+#define FX_SCALAR_VAR facet_fx_port_scalar
+#include "fx_scalar_loops.h"

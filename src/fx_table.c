@@ -1,8 +1,8 @@
 /* fx_table.c - the fixed-point kernel table behind facet_fx_kernel_at/find:
  * the kernels of src/kernels.def that have a fixed-point version, in its
  * order, with each input's raw Q15 domain and the output format.
- * Names generated here from src/kernels.def: one table row and its two
- * array-argument wrappers per fixed-point kernel. */
+ * Names generated here from src/kernels.def: one table row and its four
+ * array-argument wrappers (both tiers) per fixed-point kernel. */
 #include <string.h>
 #include "facet/fx.h"
 #include "kernel_list.h"
@@ -16,6 +16,14 @@
     static void batch_##name(void *out, const int32_t *const *in, size_t count)            \
     {                                                                                      \
         facet_##name##_fx_batch((fx_type *)out, FACET_EACH_INPUT(n, SAMPLE_), count);      \
+    }                                                                                      \
+    static uint64_t fx_fast_##name(const int32_t *in)                                      \
+    {                                                                                      \
+        return (uint64_t)(fx_type)facet_##name##_fx_fast(FACET_EACH_INPUT(n, SAMPLE_)) & FX_MASK_##fx_type; \
+    }                                                                                      \
+    static void batch_fast_##name(void *out, const int32_t *const *in, size_t count)       \
+    {                                                                                      \
+        facet_##name##_fx_fast_batch((fx_type *)out, FACET_EACH_INPUT(n, SAMPLE_), count); \
     })
 /* a raw output widened: the container's bits (Q15 outputs are >= 0) */
 #define FX_MASK_int32_t 0xFFFFFFFFu
@@ -29,7 +37,8 @@ static const facet_fx_kernel table[] = {
     { #name, n, { FACET_MAP_INPUTS(n, FACET_IN_NAME, __VA_ARGS__) },                              \
       { FACET_MAP_INPUTS(n, FACET_IN_LO, __VA_ARGS__) },                                          \
       { FACET_MAP_INPUTS(n, FACET_IN_HI, __VA_ARGS__) }, fx_frac, (int)(8 * sizeof(fx_type)),      \
-      fx_format, fx_max, fx_##name, batch_##name, FACET_FX_ERR_##NAME },)
+      fx_format, fx_max, fx_##name, batch_##name, FACET_FX_ERR_##NAME,                             \
+      fx_fast_##name, batch_fast_##name, FACET_FX_FAST_ERR_##NAME },)
 #include "kernels.def"
 #undef FACET_KERNEL
 };

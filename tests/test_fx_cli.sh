@@ -1,7 +1,8 @@
 #!/bin/sh
 # test_fx_cli.sh BUILD_DIR - the fixed-point face of the facet command:
-# eval --format fx [--raw], vectors --format fx [--count] [--seed] [--hex],
-# agreement between the two, and the error exits.  FACET_EXEC runs the
+# eval --format fx|fx_fast [--raw], vectors --format fx|fx_fast [--count]
+# [--seed] [--hex], agreement between the two, list --formats, and the
+# error exits.  FACET_EXEC runs the
 # binary under an emulator (qemu-user) when set.
 facet="${FACET_EXEC:+$FACET_EXEC }${1:-build}/facet"
 pass=0 fail=0
@@ -38,6 +39,13 @@ while read -r name rest; do
     grep -v '^#' "$tmp/v" | awk '{ print $NF }' > "$tmp/want"
     $facet eval "$name" --format fx --raw < "$tmp/in" > "$tmp/got"
     cmp -s "$tmp/want" "$tmp/got" && ok || bad "vectors $name disagree with eval --raw"
+    # the fast tier: the same input vectors, its outputs agree with its eval
+    $facet vectors "$name" --format fx_fast --count 50 --seed 7 > "$tmp/vf" || bad "vectors $name --format fx_fast exit $?"
+    expect "vectors $name fx_fast: the same inputs as fx" "$(awk '!/^#/ { $NF = ""; print }' "$tmp/v")" \
+        "$(awk '!/^#/ { $NF = ""; print }' "$tmp/vf")"
+    grep -v '^#' "$tmp/vf" | awk '{ print $NF }' > "$tmp/wantf"
+    $facet eval "$name" --format fx_fast --raw < "$tmp/in" > "$tmp/gotf"
+    cmp -s "$tmp/wantf" "$tmp/gotf" && ok || bad "vectors $name --format fx_fast disagree with eval --format fx_fast --raw"
     $facet vectors "$name" --format fx --count 5 --hex > "$tmp/h"
     width=$(( 8 * (n + 1) )); [ "$name" = brdf_hammon ] && width=$((width + 8))
     expect "hex $name width" "" "$(grep -v '^//' "$tmp/h" | awk -v w=$width 'length($0) != w || $0 !~ /^[0-9a-f]+$/')"
@@ -53,6 +61,12 @@ printf '0.5 0.5\n0.5 x\n' | $facet eval ggx_d --format fx > /dev/null 2> "$tmp/e
 grep -q 'line 2' "$tmp/err" && ok || bad "malformed: stderr lacks 'line 2'"
 $facet vectors ggx_d > /dev/null 2>&1; expect "vectors without --format (fx is the default)" 0 $?
 $facet vectors ggx_d --format f32 > /dev/null 2>&1; expect "vectors --format f32" 2 $?
+$facet vectors ggx_d --format fx_fast --count 0 | head -1 > "$tmp/hdr"
+grep -q 'fx_fast output' "$tmp/hdr" && ok || bad "vectors --format fx_fast header does not name the tier: $(cat "$tmp/hdr")"
+expect "list --formats: fixed-point kernels" "brdf_hammon f32 f32_fast fx fx_fast" "$($facet list --formats | grep '^brdf_hammon ')"
+expect "list --formats: lambert" "lambert f32 f32_fast" "$($facet list --formats | grep '^lambert ')"
+expect "eval --format f32_fast" 1 "$(echo '0.5 0.25' | $facet eval ggx_d --format f32_fast | grep -cE '^0\.0339[0-9]+$')"
+echo '0.5 0.25' | $facet eval ggx_d --format fx_slow > /dev/null 2>&1; expect "eval unknown format" 2 $?
 $facet vectors nope --format fx > /dev/null 2>&1; expect "vectors unknown kernel" 2 $?
 $facet vectors ggx_d --format fx --count -1 > /dev/null 2>&1; expect "vectors bad count" 2 $?
 $facet eval ggx_d --format fx --bogus < /dev/null > /dev/null 2>&1; expect "eval fx bad option" 2 $?

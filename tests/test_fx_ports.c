@@ -16,6 +16,7 @@
 #include "facet.h"
 #include "facet/fx.h"
 #include "fx_test.h"
+#define FXH_FAST /* the fx_fast pinned hashes too */
 #include "fx_hash.h"
 #if defined(__x86_64__) || defined(__i386__)
 #include <x86intrin.h>
@@ -23,10 +24,13 @@
 
 #define MAXLANES 16 /* tails 0 .. 3 * MAXLANES + 1 cover every port's width */
 
-/* the public batch entry point of k; out holds out_bits/8-byte elements */
+static int fast_tier; /* 0: fx, 1: fx_fast */
+
+/* the public batch entry point of k in the tier under test; out holds
+ * out_bits/8-byte elements */
 static void batch(const facet_fx_kernel *k, void *out, int32_t *const *in, size_t n)
 {
-    k->fx_batch(out, (const int32_t *const *)in, n);
+    (fast_tier ? k->fx_fast_batch : k->fx_batch)(out, (const int32_t *const *)in, n);
 }
 
 static uint64_t get(const facet_fx_kernel *k, const void *out, size_t i)
@@ -74,7 +78,7 @@ static void make_set(const facet_fx_kernel *k, size_t n, uint64_t seed)
         int32_t t[FACET_FX_MAX_INPUTS];
         for (i = 0; i < k->n_inputs; i++)
             t[i] = in_[i][j] = gen(&r, k, i);
-        ref_[j] = k->fx(t);
+        ref_[j] = (fast_tier ? k->fx_fast : k->fx)(t);
     }
 }
 
@@ -165,18 +169,21 @@ static void collect(const int32_t *t, void *ctx)
     c->n++;
 }
 
+/* the pinned hashes of the tier under test, through its batch API */
 static void test_hash(const char *port)
 {
-    size_t pi;
-    for (pi = 0; pi < FXH_N_PINNED; pi++) {
-        const facet_fx_kernel *k = facet_fx_kernel_find(fxh_pinned[pi].name);
+    size_t pi, np = fast_tier ? FXH_N_PINNED_FAST : FXH_N_PINNED;
+    for (pi = 0; pi < np; pi++) {
+        const char *name = fast_tier ? fxh_pinned_fast[pi].name : fxh_pinned[pi].name;
+        uint64_t pinned = fast_tier ? fxh_pinned_fast[pi].hash : fxh_pinned[pi].hash;
+        const facet_fx_kernel *k = facet_fx_kernel_find(name);
         struct col c;
         uint64_t h = FXH_INIT;
         size_t j, cap = 80001 + 131 * 131 + 3000;
         void *o;
         int i;
         if (!k) {
-            CHECK(0, "%s: not in the fx table", fxh_pinned[pi].name);
+            CHECK(0, "%s: not in the fx table", name);
             continue;
         }
         c.n = 0;
@@ -188,10 +195,9 @@ static void test_hash(const char *port)
         batch(k, o, c.in, c.n);
         for (j = 0; j < c.n; j++)
             fxh_feed(&h, get(k, o, j), k->out_bits / 8);
-        CHECK(h == fxh_pinned[pi].hash, "%s/%s: batch hash %08lx%08lx, pinned %08lx%08lx", port,
-              k->name, (unsigned long)(h >> 32), (unsigned long)(h & 0xFFFFFFFFu),
-              (unsigned long)(fxh_pinned[pi].hash >> 32),
-              (unsigned long)(fxh_pinned[pi].hash & 0xFFFFFFFFu));
+        CHECK(h == pinned, "%s/%s%s: batch hash %08lx%08lx, pinned %08lx%08lx", port, k->name,
+              fast_tier ? " (fx_fast)" : "", (unsigned long)(h >> 32), (unsigned long)(h & 0xFFFFFFFFu),
+              (unsigned long)(pinned >> 32), (unsigned long)(pinned & 0xFFFFFFFFu));
         free(o);
         for (i = 0; i < k->n_inputs; i++)
             free(c.in[i]);
@@ -242,10 +248,11 @@ int main(void)
                "ns",
 #endif
                (unsigned long)n);
+    for (fast_tier = 0; fast_tier < 2; fast_tier++)
     for (ki = 0; ki < facet_fx_kernel_count(); ki++) {
         const facet_fx_kernel *k = facet_fx_kernel_at(ki);
         double t_scalar = 0;
-        make_set(k, n, 0xF00D + ki);
+        make_set(k, n, 0xF00D + ki); /* the reference: the tier's scalar kernel */
         for (pi = 0; pi < facet_port_count(); pi++) {
             int sup;
             const char *pn = facet_port_at(pi, &sup, NULL), *fxn;
@@ -260,7 +267,7 @@ int main(void)
                 double t = time_batch(k);
                 if (!strcmp(fxn, "scalar") && !strcmp(pn, "scalar"))
                     t_scalar = t;
-                printf("  %-22s %-7s (fx %-6s) %9.1f", k->name, pn, fxn, t);
+                printf("  %-22s %-7s %-7s (fx %-6s) %9.1f", k->name, fast_tier ? "fx_fast" : "fx", pn, fxn, t);
                 if (t_scalar > 0)
                     printf("  x%.2f", t_scalar / t);
                 printf("\n");
@@ -284,7 +291,8 @@ int main(void)
         if (!strcmp(pn, "neon"))
             CHECK(!strcmp(facet_fx_port_name(), "scalar"), "armv7 neon: the scalar fx loops run");
 #endif
-        test_hash(pn);
+        for (fast_tier = 0; fast_tier < 2; fast_tier++)
+            test_hash(pn);
     }
     facet_set_port("auto");
     printf("fx_ports: %ld random outputs compared bit for bit (%lu per kernel and port)\n",

@@ -338,6 +338,39 @@ uint32_t facet_diffuse_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int
 uint64_t facet_brdf_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                    int32_t f0, int32_t albedo);
 
+/* ---- fast tier batches: out[i] = facet_<kernel>_fx_fast(in1[i], ...) ---
+ * Dispatched like the precise batches (one port choice for every format):
+ * the active port's code (avx2 and avx512: AVX2 lanes; aarch64 neon: NEON
+ * lanes; the fast body, src/fx_fast_body.h, instantiated on each), the
+ * scalar loop elsewhere.  Bit-identical to the scalar kernels for every
+ * int32 input, n, alignment and tail; out may be the very same array as an
+ * input (32-bit outputs); no other overlap. */
+void facet_noh_from_dots_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                  const int32_t *lov, size_t n);
+void facet_loh_from_dots_fx_fast_batch(int32_t *out, const int32_t *lov, size_t n);
+void facet_fresnel_schlick_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *cos_theta,
+                                    size_t n);
+void facet_ggx_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
+void facet_smith_g1_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
+void facet_smith_g2_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                             const int32_t *alpha, size_t n);
+void facet_smith_g2_uncorrelated_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                          const int32_t *alpha, size_t n);
+void facet_smith_vis_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                              const int32_t *alpha, size_t n);
+void facet_smith_g1_hammon_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
+                                    size_t n);
+void facet_smith_g2_hammon_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                    const int32_t *alpha, size_t n);
+void facet_smith_vis_hammon_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                     const int32_t *alpha, size_t n);
+void facet_diffuse_hammon_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                   const int32_t *lov, const int32_t *alpha,
+                                   const int32_t *albedo, size_t n);
+void facet_brdf_hammon_fx_fast_batch(uint64_t *out, const int32_t *nol, const int32_t *nov,
+                                const int32_t *lov, const int32_t *alpha, const int32_t *f0,
+                                const int32_t *albedo, size_t n);
+
 /* ---- the shared primitives (exposed for the tests) ---------------------- */
 /* floor((2^64 - 1) / d) - 2^32, d in [2^31, 2^32) */
 uint32_t facet_fx_rcp32(uint32_t d);
@@ -366,6 +399,11 @@ typedef struct facet_fx_kernel {
      * array of the output container (out_bits) */
     void (*fx_batch)(void *out, const int32_t *const *in, size_t n);
     double err_lsb;                         /* FACET_FX_ERR_<NAME>: max |error| in LSB */
+    /* the fast tier: same inputs, format and saturation */
+    uint64_t (*fx_fast)(const int32_t *in);
+    void (*fx_fast_batch)(void *out, const int32_t *const *in, size_t n);
+    double err_fast;                        /* FACET_FX_FAST_ERR_<NAME>: max of
+                                             * |error| / max(1 LSB, 2^-10 |value|) */
 } facet_fx_kernel;
 
 size_t facet_fx_kernel_count(void);

@@ -1,13 +1,14 @@
 /* facet - the command-line face of the library.
  *   facet list | ports
- *   facet eval KERNEL [--format f32|fx] [--oracle] [--port P]
- *   facet vectors KERNEL [--format fx] [--count N] [--seed S] [--hex]
+ *   facet eval KERNEL [--format f32|f32_fast|fx|fx_fast] [--oracle] [--port P]
+ *   facet vectors KERNEL [--format fx|fx_fast] [--count N] [--seed S] [--hex]
  * Input rules and exit statuses: src/cli/cli.h (0 success, 1 I/O error,
  * 2 usage error or malformed input), the same for every verb. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "facet.h"
+#include "facet/fx.h"
 #include "cli.h"
 
 #define CHUNK 1024 /* samples per batch call */
@@ -39,7 +40,7 @@ static void usage_main(FILE *f)
             "  ports                the ports compiled in, which this CPU runs, and\n"
             "                       which one 'auto' picks\n"
             "  eval KERNEL          evaluate KERNEL on samples read from stdin\n"
-            "                       (--format f32|fx, --oracle, --port P)\n"
+            "                       (--format f32|f32_fast|fx|fx_fast, --oracle, --port P)\n"
             "  vectors KERNEL       golden input/output vectors of a fixed-point kernel\n"
             "  --version            the library version\n"
             "Run '%s <verb> --help' for a verb's options.\n%s",
@@ -48,9 +49,11 @@ static void usage_main(FILE *f)
 
 static void usage_list(FILE *f)
 {
-    fprintf(f, "usage: %s list\n"
+    fprintf(f, "usage: %s list [--formats]\n"
                "Prints one line per kernel: its name, then the names of its inputs in the\n"
-               "order 'eval' reads them.\n%s", prog, facet_cli_exit_help);
+               "order 'eval' reads them.  With --formats: its name, then the formats it\n"
+               "comes in (f32 f32_fast, and fx fx_fast where it has a fixed-point form).\n%s",
+            prog, facet_cli_exit_help);
 }
 
 static void usage_ports(FILE *f)
@@ -68,11 +71,13 @@ static void usage_ports(FILE *f)
 static void usage_eval(FILE *f)
 {
     fprintf(f,
-            "usage: %s eval KERNEL [--format f32|fx] [--oracle] [--port P]\n"
+            "usage: %s eval KERNEL [--format f32|f32_fast|fx|fx_fast] [--oracle] [--port P]\n"
             "Evaluates KERNEL on the samples read from stdin, one output line per sample.\n"
             "  --format f32     the float kernels (default): each input rounded once to\n"
             "                   the nearest float; output printed with %%.9g (round-trips)\n"
-            "  --format fx      the fixed-point kernels ('%s eval --format fx --help')\n"
+            "  --format f32_fast  the fast f32 tier (facet_<kernel>_f32_fast_batch)\n"
+            "  --format fx      the fixed-point kernels ('%s eval --format fx --help');\n"
+            "                   fx_fast their fast tier\n"
             "  --oracle         the double-precision oracle instead (facet/oracle.h):\n"
             "                   each input rounded once to the nearest double (give\n"
             "                   float values to judge --format f32); output with %%.17g\n"
@@ -111,7 +116,7 @@ static int cmd_list(int argc, char **argv)
         usage_list(stdout);
         return facet_cli_finish("list");
     }
-    if (argc > 1) {
+    if (argc > 2 || (argc == 2 && strcmp(argv[1], "--formats"))) {
         fprintf(stderr, "%s list: unexpected argument '%s'\n", prog, argv[1]);
         usage_list(stderr);
         return FACET_EXIT_USAGE;
@@ -119,8 +124,11 @@ static int cmd_list(int argc, char **argv)
     for (i = 0; i < facet_kernel_count(); i++) {
         const facet_kernel *k = facet_kernel_at(i);
         printf("%s", k->name);
-        for (j = 0; j < k->n_inputs; j++)
-            printf(" %s", k->inputs[j]);
+        if (argc == 2)
+            printf(" f32 f32_fast%s", facet_fx_kernel_find(k->name) ? " fx fx_fast" : "");
+        else
+            for (j = 0; j < k->n_inputs; j++)
+                printf(" %s", k->inputs[j]);
         printf("\n");
     }
     return facet_cli_finish("list");
@@ -234,7 +242,7 @@ static int cmd_eval(int argc, char **argv)
     int i, oracle = 0, got = 1;
 
     for (i = 1; i + 1 < argc; i++) /* fx has its own options: src/cli/fx.c */
-        if (!strcmp(argv[i], "--format") && !strcmp(argv[i + 1], "fx"))
+        if (!strcmp(argv[i], "--format") && (!strcmp(argv[i + 1], "fx") || !strcmp(argv[i + 1], "fx_fast")))
             return facet_cli_fx_eval(argc, argv);
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -266,8 +274,8 @@ static int cmd_eval(int argc, char **argv)
         usage_eval(stderr);
         return FACET_EXIT_USAGE;
     }
-    if (strcmp(format, "f32")) {
-        fprintf(stderr, "%s eval: unknown format '%s' (known: f32, fx)\n", prog, format);
+    if (strcmp(format, "f32") && strcmp(format, "f32_fast")) {
+        fprintf(stderr, "%s eval: unknown format '%s' (known: f32, f32_fast, fx, fx_fast)\n", prog, format);
         return FACET_EXIT_USAGE;
     }
     if (oracle)
@@ -305,7 +313,7 @@ static int cmd_eval(int argc, char **argv)
             const float *ptr[FACET_MAX_INPUTS];
             for (i = 0; i < FACET_MAX_INPUTS; i++)
                 ptr[i] = cols[i];
-            k->f32_batch(out, ptr, (size_t)n);
+            (strcmp(format, "f32") ? k->f32_fast_batch : k->f32_batch)(out, ptr, (size_t)n);
             for (i = 0; i < n; i++)
                 printf("%.9g\n", out[i]);
             if (ferror(stdout))

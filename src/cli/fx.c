@@ -1,6 +1,6 @@
 /* fx.c - the fixed-point face of the facet command:
- *   facet eval KERNEL --format fx [--raw]
- *   facet vectors KERNEL [--format fx] [--count N] [--seed S] [--hex]
+ *   facet eval KERNEL --format fx|fx_fast [--raw]
+ *   facet vectors KERNEL [--format fx|fx_fast] [--count N] [--seed S] [--hex]
  * Inputs given as decimals are rounded to Q15 exactly from their digits
  * (floor(x 32768 + 1/2), saturated to int32: src/cli/parse.c); outputs
  * print exactly (every Q value has a finite decimal expansion) or as raw
@@ -23,7 +23,7 @@ extern const char facet_cli_input_help[], facet_cli_exit_help[];               /
 static void usage_eval(FILE *f)
 {
     fprintf(f,
-            "usage: facet eval KERNEL --format fx [--raw]\n"
+            "usage: facet eval KERNEL --format fx|fx_fast [--raw]\n"
             "Evaluates the fixed-point KERNEL on the samples read from stdin.  Each\n"
             "input is rounded to Q15 once, exactly from its decimal digits: raw =\n"
             "floor(x * 32768 + 1/2) (nearest, ties up), saturated to int32 for any\n"
@@ -37,13 +37,13 @@ static void usage_eval(FILE *f)
 static void usage_vectors(FILE *f)
 {
     fprintf(f,
-            "usage: facet vectors KERNEL [--format fx] [--count N] [--seed S] [--hex]\n"
+            "usage: facet vectors KERNEL [--format fx|fx_fast] [--count N] [--seed S] [--hex]\n"
             "Writes golden vectors of a fixed-point kernel: first the edge cases (every\n"
             "input at its domain ends, their neighbours, out-of-domain values and the\n"
             "key points; each distinct vector once), then N pseudo-random in-domain\n"
             "samples from seed S.  One vector per line: the raw inputs (int32, Q15,\n"
             "1.0 = 32768) in 'facet list' order, then the raw output.\n"
-            "  --format fx  the only vector format (the default)\n"
+            "  --format fx  the fixed-point kernels (the default); fx_fast their fast tier\n"
             "  --count N    decimal digits only, 0 <= N <= %llu (default 1000)\n"
             "  --seed S     decimal digits only, 0 <= S <= 18446744073709551615\n"
             "               (2^64 - 1; default 1)\n"
@@ -87,13 +87,14 @@ int facet_cli_fx_eval(int argc, char **argv)
     const facet_fx_kernel *k = NULL;
     facet_cli_reader r;
     const char *err = NULL;
-    int i, raw = 0, got;
+    int i, raw = 0, got, fast = 0;
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             usage_eval(stdout);
             return facet_cli_finish("eval");
         } else if (!strcmp(argv[i], "--format") && i + 1 < argc) {
-            if (strcmp(argv[++i], "fx")) {
+            fast = !strcmp(argv[++i], "fx_fast");
+            if (strcmp(argv[i], "fx") && !fast) {
                 fprintf(stderr, "facet eval: unknown format '%s'\n", argv[i]);
                 return FACET_EXIT_USAGE;
             }
@@ -134,7 +135,7 @@ int facet_cli_fx_eval(int argc, char **argv)
             got = -1;
             break;
         }
-        out = k->fx(in);
+        out = (fast ? k->fx_fast : k->fx)(in);
         if (raw)
             printf("%llu\n", (unsigned long long)out);
         else
@@ -165,9 +166,11 @@ static uint64_t rng_next(uint64_t *s) /* splitmix64 */
     return z ^ (z >> 31);
 }
 
+static int vectors_fast; /* vectors --format fx_fast */
+
 static void put_vector(const facet_fx_kernel *k, const int32_t *in, int hex)
 {
-    uint64_t out = k->fx(in);
+    uint64_t out = (vectors_fast ? k->fx_fast : k->fx)(in);
     int i;
     for (i = 0; i < k->n_inputs; i++) {
         if (hex)
@@ -259,15 +262,16 @@ int facet_cli_vectors(int argc, char **argv)
         usage_vectors(stderr);
         return FACET_EXIT_USAGE;
     }
-    if (strcmp(format, "fx")) {
-        fprintf(stderr, "facet vectors: unknown format '%s' (fx is the only vector format)\n", format);
+    vectors_fast = !strcmp(format, "fx_fast");
+    if (strcmp(format, "fx") && !vectors_fast) {
+        fprintf(stderr, "facet vectors: unknown format '%s' (known: fx, fx_fast)\n", format);
         return FACET_EXIT_USAGE;
     }
     seed = seed_arg;
     printf("%s %s: inputs", hex ? "//" : "#", k->name);
     for (i = 0; i < k->n_inputs; i++)
         printf(" %s", k->inputs[i]);
-    printf(" (int32 Q15), output %s in %s%d bits; seed %llu, %llu random\n", k->out_format,
+    printf(" (int32 Q15), %soutput %s in %s%d bits; seed %llu, %llu random\n", vectors_fast ? "fx_fast " : "", k->out_format,
            hex ? "" : "u", k->out_bits, seed_arg, count);
     {
         /* edges: each input in turn at its special values, the others mid-domain */

@@ -5,4 +5,7 @@
  * libfacet, whose dispatcher defines this function (src/dispatch.c). */
 #include "../port.h"
 
-const facet_fx_port *facet_fx_active_port(void) { return &facet_fx_port_scalar; }
+const facet_fx_port *facet_fx_active_port(int fast)
+{
+    return fast ? &facet_fx_fast_port_scalar : &facet_fx_port_scalar;
+}

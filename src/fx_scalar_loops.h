@@ -1,0 +1,32 @@
+/* fx_scalar_loops.h - a fixed-point tier's scalar port: one loop per kernel
+ * over facet_<kernel>_<FX_TIER> and the tier's port table.  Included once
+ * by the file of each tier's scalar kernels (src/fx_kernels.c: fx,
+ * src/fx_fast.c: fx_fast) with
+ *   FX_TIER        the tier token (fx, fx_fast)
+ *   FX_SCALAR_VAR  the table variable (facet_fx_port_scalar, ...)
+ * Names generated here from src/kernels.def: one loop per fixed-point
+ * kernel.  Each element is read before its output is written, so out may
+ * be the same array as an input. */
+#include "port.h"
+
+#define FXSL_CAT_(a, b, c) a##b##c
+#define FXSL_CAT(a, b, c) FXSL_CAT_(a, b, c)
+#define FXSL_PARAM_(q) const int32_t *x##q
+#define FXSL_AT_(q) x##q[i]
+#define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type,                  \
+    static void FXSL_CAT(scalar_, name, _loop)(fx_type *out, FACET_EACH_INPUT(n, FXSL_PARAM_), \
+                                               size_t count)                         \
+    {                                                                                \
+        size_t i;                                                                    \
+        for (i = 0; i < count; i++)                                                  \
+            out[i] = FXSL_CAT(facet_##name##_, FX_TIER, )(FACET_EACH_INPUT(n, FXSL_AT_)); \
+    })
+#include "kernels.def"
+#undef FACET_KERNEL
+
+const facet_fx_port FX_SCALAR_VAR = {
+    "scalar", 1,
+#define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type, FXSL_CAT(scalar_, name, _loop),)
+#include "kernels.def"
+#undef FACET_KERNEL
+};
