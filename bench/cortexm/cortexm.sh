@@ -23,7 +23,8 @@
 #   <fmt>-taken   taken branches, calls and returns per call (from the
 #                 trace): each costs a pipeline refill (1-3 cycles on M4)
 #                 that llvm-mca does not add
-# <fmt> is fx or f32soft.  Builds: cortex-m0 (ARMv6-M code, run on
+# <fmt> is fx, fxfast (the fast tier), f32soft (soft float) or f32fpu (the
+# core's FPU, hard-float ABI; not on M0).  Builds: cortex-m0 (ARMv6-M code, run on
 # mps2-an385, a Cortex-M3 model: the executed path is ISA-determined),
 # cortex-m4 (mps2-an386), cortex-m7 (mps2-an500), cortex-m33 (ARMv8-M
 # mainline code run on the mps2-an386 Cortex-M4 model; our startup does
@@ -48,8 +49,11 @@ fi
 echo "# what kernel cpu value source" > "$tsv"
 link="--specs=rdimon.specs -nostartfiles -T tests/cortexm/mps2.ld tests/cortexm/startup.c"
 cflags="-mthumb -O2 -std=c99 -Wall -Wextra -Werror -Iinclude"
-for fmt in fx f32soft; do
+for fmt in fx fxfast f32soft f32fpu; do
     for cpu in cortex-m0 cortex-m4 cortex-m7 cortex-m33; do
+        # f32fpu: not on M0 (no FPU) nor M33 (its code runs on the M4 model,
+        # which has no FPv5)
+        [ $fmt = f32fpu ] && { [ $cpu = cortex-m0 ] || [ $cpu = cortex-m33 ]; } && continue
         case $cpu in
         cortex-m0) mach=mps2-an385 triple=thumbv6m-none-eabi ;;
         cortex-m7) mach=mps2-an500 triple=thumbv7em-none-eabi ;;
@@ -59,13 +63,17 @@ for fmt in fx f32soft; do
         b=$dir/${fmt}_$cpu
         rm -rf "$b.d"
         mkdir -p "$b.d"
-        if [ $fmt = fx ]; then
-            src="-DBENCH_FX src/fx_core.c src/fx_kernels.c"
-            pat='^facet_.*_fx$'
-        else
-            src="-mfloat-abi=soft"
-            pat='^bench_f32_'
-        fi
+        case $fmt in
+        fx) src="-DBENCH_FX src/fx_core.c src/fx_kernels.c"; pat='^facet_.*_fx$' ;;
+        fxfast) src="-DBENCH_FX -DBENCH_FX_FAST src/fx_core.c src/fx_kernels.c src/fx_fast.c"; pat='^facet_.*_fx_fast$' ;;
+        f32soft) src="-mfloat-abi=soft"; pat='^bench_f32_' ;;
+        *) case $cpu in # the core's single-precision FPU, hard-float ABI
+           cortex-m4) src="-mfloat-abi=hard -mfpu=fpv4-sp-d16" ;;
+           cortex-m7) src="-mfloat-abi=hard -mfpu=fpv5-d16" ;;
+           *) src="-mfloat-abi=hard -mfpu=fpv5-sp-d16" ;;
+           esac
+           pat='^bench_f32_' ;;
+        esac
         # shellcheck disable=SC2086
         if ! arm-none-eabi-gcc -mcpu=$cpu $cflags $link $src bench/cortexm/cortexm_main.c -o "$b.elf" 2>"$b.log"; then
             echo "cortexm: $fmt $cpu: build failed (see $b.log)"
@@ -73,7 +81,7 @@ for fmt in fx f32soft; do
         fi
         arm-none-eabi-objdump -d "$b.elf" > "$b.dis"
         arm-none-eabi-nm "$b.elf" | awk -v p="$pat" '$2 ~ /^[Tt]$/ && $3 ~ p { print $1, $3 }' |
-            sed -e 's/ facet_\(.*\)_fx$/ \1/' -e 's/ bench_f32_/ /' > "$b.sym"
+            sed -e 's/ facet_\(.*\)_fx_fast$/ \1/' -e 's/ facet_\(.*\)_fx$/ \1/' -e 's/ bench_f32_/ /' > "$b.sym"
         if ! timeout 120 qemu-system-arm -M $mach -nographic -semihosting-config enable=on,target=native \
                 -kernel "$b.elf" -singlestep -d exec,nochain -D "$b.trace" >/dev/null 2>&1; then
             echo "cortexm: $fmt $cpu: qemu run failed"

@@ -4,9 +4,11 @@
  * script can cut out each call's executed instructions: from the kernel's
  * first instruction to its return, callees and libgcc helpers included, the
  * caller's argument set-up and the call instruction not.
- *   -DBENCH_FX      the fixed-point kernels facet_<kernel>_fx (src/fx_*.c)
+ *   -DBENCH_FX      the fixed-point kernels facet_<kernel>_fx (src/fx_*.c);
+ *                   with -DBENCH_FX_FAST their fast tier facet_<kernel>_fx_fast
  *   otherwise       the f32 scalar kernels of facet/scalar.h built for the
- *                   same core (soft float where the core or ABI has no FPU),
+ *                   same core (soft float, or the core's FPU with a
+ *                   hard-float build),
  *                   each behind a noinline wrapper bench_f32_<kernel>
  * The inputs are compile-time constants (no float arithmetic outside the
  * kernels); the results go to a volatile sink. */
@@ -48,8 +50,13 @@ volatile uint64_t bench_sink;
 static const int32_t in[N_PTS][8] = { QP_(PT0), QP_(PT1), QP_(PT2), QP_(PT3) };
 typedef int32_t T;
 /* Names generated here from src/kernels.def: one call per fixed-point kernel */
+#ifdef BENCH_FX_FAST
+#define BENCH_TIER_(name) facet_##name##_fx_fast
+#else
+#define BENCH_TIER_(name) facet_##name##_fx
+#endif
 #define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...) \
-    FACET_IF_FX(fx_type, bench_sink = (uint64_t)facet_##name##_fx(FACET_MAP_INPUTS(n, INPUT_, __VA_ARGS__));)
+    FACET_IF_FX(fx_type, bench_sink = (uint64_t)BENCH_TIER_(name)(FACET_MAP_INPUTS(n, INPUT_, __VA_ARGS__));)
 #else
 #define FP(a, b, c, d, e, f, g, h) { a, b, c, d, e, f, g, h }
 #define FP_(p) FP(p)

@@ -336,7 +336,10 @@ typedef struct fxdata {
     void *out;                      /* n raw outputs (64-bit slots: fits every container) */
 } fxdata;
 
-static void fx_err(bench_err *e, const bench_fx *fx, const kdata *d, const fxdata *x)
+/* fx: LSB against round(oracle 2^frac) (brdf_hammon >= 16: relative);
+ * fx_fast: the tier's measure |raw - v 2^frac| / max(1, 2^-10 v 2^frac),
+ * bounded by FACET_FX_FAST_ERR_* (<= 1) */
+static void fx_err(bench_err *e, const bench_fx *fx, const kdata *d, const fxdata *x, int fast)
 {
     size_t i;
     double sum = 0, suml = 0, lsb_v = ldexp(1.0, -fx->fk->out_frac);
@@ -352,10 +355,14 @@ static void fx_err(bench_err *e, const bench_fx *fx, const kdata *d, const fxdat
         double scaled = floor(ldexp(x->want[i], fx->fk->out_frac) + 0.5);
         double lsb = fabs(ldexp(got, fx->fk->out_frac) - scaled);
         double rel = fabs(got - x->want[i]) / fmax(fabs(x->want[i]), lsb_v);
+        if (fast) {
+            double v = ldexp(x->want[i], fx->fk->out_frac);
+            lsb = fabs(ldexp(got, fx->fk->out_frac) - v) / fmax(1.0, ldexp(v, -10));
+        }
         sum += rel;
         if (rel > e->max_rel)
             e->max_rel = rel;
-        if (fx->fk->out_bits == 64 && x->want[i] >= 16.0) {
+        if (!fast && fx->fk->out_bits == 64 && x->want[i] >= 16.0) {
             if (rel > e->big_rel)
                 e->big_rel = rel;
             continue;
@@ -392,15 +399,18 @@ static cyc_stat fx_time(bench_fx_fn fn, const fxdata *x, const kdata *d, const b
     return time_work(&w, (double)w.n, o);
 }
 
-static void fx_row(bench_row *r, const bench_fx *fx, const kdata *d, const char *port, const char *path)
+static void fx_row(bench_row *r, const bench_fx *fx, const kdata *d, const char *port, const char *path,
+                   int fast)
 {
-    row_init(r, d, "fx", port, path, 1);
-    r->bound = fx->fk->err_lsb;
+    row_init(r, d, fast ? "fx_fast" : "fx", port, path, 1);
+    r->bound = fast ? fx->fk->err_fast : fx->fk->err_lsb;
 }
 
 static void run_fx(const bench_fx *fx, const kdata *d, const bench_opts *o, bench_sink sink,
-                   void *ctx, int *count)
+                   void *ctx, int *count, int fast)
 {
+    bench_fx_fn fbatch = fast ? fx->fast_batch : fx->batch, fcall = fast ? fx->fast_call : fx->call;
+    bench_fx_fn fchain = fast ? fx->fast_chain : fx->chain;
     fxdata x;
     size_t i, p;
     int j;
@@ -427,11 +437,12 @@ static void run_fx(const bench_fx *fx, const kdata *d, const bench_opts *o, benc
         const char *pn = facet_port_at(p, &sup, NULL);
         if (!sup || !want_port(o, pn) || facet_set_port(pn) != 0)
             continue;
-        fx_row(&row, fx, d, pn, "batch");
-        row.note = "facet_<kernel>_fx_batch with facet_set_port(port) active";
-        fx_run_all(fx->batch, d, &x);
-        fx_err(&row.err, fx, d, &x);
-        row.thr = fx_time(fx->batch, &x, d, o);
+        fx_row(&row, fx, d, pn, "batch", fast);
+        row.note = fast ? "facet_<kernel>_fx_fast_batch with facet_set_port(port) active"
+                        : "facet_<kernel>_fx_batch with facet_set_port(port) active";
+        fx_run_all(fbatch, d, &x);
+        fx_err(&row.err, fx, d, &x, fast);
+        row.thr = fx_time(fbatch, &x, d, o);
         finish(&row, o, sink, ctx, count);
     }
     facet_set_port(saved_port ? saved_port : "auto");
@@ -439,18 +450,18 @@ static void run_fx(const bench_fx *fx, const kdata *d, const bench_opts *o, benc
     if (want_port(o, "scalar")) {
         work w;
         cyc_stat base;
-        fx_row(&row, fx, d, "scalar", "call");
-        row.note = "facet_<kernel>_fx per sample";
-        fx_run_all(fx->call, d, &x);
-        fx_err(&row.err, fx, d, &x);
-        row.thr = fx_time(fx->call, &x, d, o);
+        fx_row(&row, fx, d, "scalar", "call", fast);
+        row.note = fast ? "facet_<kernel>_fx_fast per sample" : "facet_<kernel>_fx per sample";
+        fx_run_all(fcall, d, &x);
+        fx_err(&row.err, fx, d, &x, fast);
+        row.thr = fx_time(fcall, &x, d, o);
         memset(&w, 0, sizeof w);
         w.fxout = x.out;
         w.fxin = (const int32_t *const *)x.q;
         w.n = o->n_time < d->n ? o->n_time : d->n;
         w.fx = bench_fx_identity_chain;
         base = time_work(&w, (double)w.n, o);
-        w.fx = fx->chain;
+        w.fx = fchain;
         row.lat = stat_minus(time_work(&w, (double)w.n, o), base.median);
         row.has_lat = 1;
         finish(&row, o, sink, ctx, count);
@@ -473,7 +484,8 @@ int bench_run(const bench_opts *o, bench_sink sink, void *ctx)
 
     if (o->kernel && !facet_kernel_find(o->kernel))
         return -1;
-    if (o->format && strcmp(o->format, "f32") && strcmp(o->format, "f32_fast") && strcmp(o->format, "fx"))
+    if (o->format && strcmp(o->format, "f32") && strcmp(o->format, "f32_fast") && strcmp(o->format, "fx") &&
+        strcmp(o->format, "fx_fast"))
         return -1;
     if (o->port) {
         int known = 0;
@@ -566,10 +578,10 @@ int bench_run(const bench_opts *o, bench_sink sink, void *ctx)
                     run_brdf_peers(&d, o, sink, ctx, &count);
             }
         }
-        if (!o->format || !strcmp(o->format, "fx")) {
+        for (tier = 0; tier < 2; tier++) {
             const bench_fx *fx = bench_fx_find(k->name);
-            if (fx)
-                run_fx(fx, &d, o, sink, ctx, &count);
+            if (fx && (!o->format || !strcmp(o->format, tier ? "fx_fast" : "fx")))
+                run_fx(fx, &d, o, sink, ctx, &count, tier);
         }
         kdata_free(&d);
     }

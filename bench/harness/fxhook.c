@@ -11,28 +11,30 @@ static volatile int32_t opaque_zero; /* always 0; the compiler cannot know */
 #define CHAINED_(q) (q == 0 ? in[0][i] + (int32_t)(uint32_t)y * z : in[q][i])
 
 /* Names generated here from src/kernels.def: three loops per fixed-point
- * kernel and the table. */
-#define FACET_KERNEL(name, NAME, n, T, ...) FACET_IF_FX(T,                                          \
-    static void batch_##name(void *out, const int32_t *const *in, size_t n_)                       \
+ * kernel and tier, and the table. */
+#define FX_LOOPS(name, T, tier, suffix, n)                                                         \
+    static void batch_##name##suffix(void *out, const int32_t *const *in, size_t n_)               \
     {                                                                                              \
-        facet_##name##_fx_batch((T *)out, FACET_EACH_INPUT(n, COL_), n_);                          \
+        facet_##name##_##tier##_batch((T *)out, FACET_EACH_INPUT(n, COL_), n_);                    \
     }                                                                                              \
-    static void call_##name(void *out, const int32_t *const *in, size_t n_)                        \
+    static void call_##name##suffix(void *out, const int32_t *const *in, size_t n_)                \
     {                                                                                              \
         T *o = (T *)out;                                                                           \
         size_t i;                                                                                  \
         for (i = 0; i < n_; i++)                                                                   \
-            o[i] = facet_##name##_fx(FACET_EACH_INPUT(n, ROW_));                                   \
+            o[i] = facet_##name##_##tier(FACET_EACH_INPUT(n, ROW_));                               \
     }                                                                                              \
-    static void chain_##name(void *out, const int32_t *const *in, size_t n_)                       \
+    static void chain_##name##suffix(void *out, const int32_t *const *in, size_t n_)               \
     {                                                                                              \
         T y = 0;                                                                                   \
         int32_t z = opaque_zero;                                                                   \
         size_t i;                                                                                  \
         for (i = 0; i < n_; i++)                                                                   \
-            y = facet_##name##_fx(FACET_EACH_INPUT(n, CHAINED_));                                  \
+            y = facet_##name##_##tier(FACET_EACH_INPUT(n, CHAINED_));                              \
         *(T *)out = y;                                                                             \
-    })
+    }
+#define FACET_KERNEL(name, NAME, n, T, ...) \
+    FACET_IF_FX(T, FX_LOOPS(name, T, fx, , n) FX_LOOPS(name, T, fx_fast, _fast, n))
 #include "src/kernels.def"
 #undef FACET_KERNEL
 
@@ -46,7 +48,8 @@ void bench_fx_identity_chain(void *out, const int32_t *const *in, size_t n_)
 }
 
 static bench_fx table[] = {
-#define FACET_KERNEL(name, NAME, n, T, ...) FACET_IF_FX(T, { #name, NULL, batch_##name, call_##name, chain_##name },)
+#define FACET_KERNEL(name, NAME, n, T, ...) FACET_IF_FX(T, { #name, NULL, batch_##name, call_##name, chain_##name, \
+                                                           batch_##name##_fast, call_##name##_fast, chain_##name##_fast },)
 #include "src/kernels.def"
 #undef FACET_KERNEL
 };

@@ -29,6 +29,7 @@ typedef struct bench_fx {
     const char *kernel;
     const facet_fx_kernel *fk;   /* the fx table entry: domain, format, bound */
     bench_fx_fn batch, call, chain;
+    bench_fx_fn fast_batch, fast_call, fast_chain; /* the same, facet_<kernel>_fx_fast */
 } bench_fx;
 
 const bench_fx *bench_fx_find(const char *kernel);

@@ -791,6 +791,31 @@ static void section_arm(void)
         cells[11] = f0c > 0 && s0c > 0 ? fmt(b[11], sizeof b[11], "%.1fx", s0c / f0c) : "-";
         trow(cells);
     }
+    tend();    para("The fast tiers against the precise fixed point and the core's FPU: <b>fx_fast</b> "
+         "(facet_KERNEL_fx_fast, src/fx_fast.c) and the precise f32 kernel built for the core's FPU "
+         "(<b>f32 FPU</b>: -mfloat-abi=hard, -mfpu=fpv4-sp-d16 on M4, fpv5-d16 on M7), measured the same way.");
+    thead(9, "kernel", "fx_fast M0 insns", "fx_fast M0 cyc (TRM)", "fx_fast M4 insns", "fx_fast M4 / M7 / M33 mca",
+          "fx M4 insns", "f32 FPU M4 insns", "f32 FPU M4 / M7 mca", "fx/fx_fast M4 (mca)");
+    for (ki = 0; ki < facet_kernel_count(); ki++) {
+        const char *kn = facet_kernel_at(ki)->name;
+        char b[9][96];
+        const char *cells[9];
+        double q4 = armv("fxfast-mca", kn, "cortex-m4"), p4 = armv("fx-mca", kn, "cortex-m4");
+        double h4 = armv("f32fpu-mca", kn, "cortex-m4");
+        if (armv("fxfast-insns", kn, "cortex-m4") < 0 && armv("f32fpu-insns", kn, "cortex-m4") < 0)
+            continue;
+        cells[0] = kn;
+        cells[1] = armcell(b[1], sizeof b[1], armv("fxfast-insns", kn, "cortex-m0"));
+        cells[2] = armcell(b[2], sizeof b[2], armv("fxfast-m0cyc", kn, "cortex-m0"));
+        cells[3] = armcell(b[3], sizeof b[3], armv("fxfast-insns", kn, "cortex-m4"));
+        cells[4] = q4 < 0 ? "-" : fmt(b[4], sizeof b[4], "%.0f / %.0f / %.0f", q4, armv("fxfast-mca", kn, "cortex-m7"),
+                                      armv("fxfast-mca", kn, "cortex-m33"));
+        cells[5] = armcell(b[5], sizeof b[5], armv("fx-insns", kn, "cortex-m4"));
+        cells[6] = armcell(b[6], sizeof b[6], armv("f32fpu-insns", kn, "cortex-m4"));
+        cells[7] = h4 < 0 ? "-" : fmt(b[7], sizeof b[7], "%.0f / %.0f", h4, armv("f32fpu-mca", kn, "cortex-m7"));
+        cells[8] = q4 > 0 && p4 > 0 ? fmt(b[8], sizeof b[8], "%.1fx", p4 / q4) : "-";
+        trow(cells);
+    }
     tend();
 }
 

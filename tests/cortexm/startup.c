@@ -20,6 +20,12 @@ __attribute__((section(".vectors"), used)) static void (*const vectors[16])(void
 void reset_handler(void)
 {
     uint32_t *p;
+#if defined(__ARM_FP) && __ARM_FP
+    /* a hard-float build: CP10 and CP11 full access (CPACR), before any FPU
+     * instruction; the reset value faults on them */
+    *(volatile uint32_t *)0xE000ED88u |= 0xFu << 20;
+    __asm__ volatile("dsb\n\tisb" ::: "memory");
+#endif
     for (p = __bss_start__; p < __bss_end__; p++)
         *p = 0;
     initialise_monitor_handles();
