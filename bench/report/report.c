@@ -155,7 +155,7 @@ static void picture(const pic *p, const char *name)
 
 typedef struct row {
     bench_row r;
-    char kernel[32], format[16], port[16], path[16];
+    char kernel[32], format[16], port[32], path[16];
 } row;
 
 static row *rows;
@@ -812,11 +812,65 @@ static void section_arm(void)
                                       armv("fxfast-mca", kn, "cortex-m33"));
         cells[5] = armcell(b[5], sizeof b[5], armv("fx-insns", kn, "cortex-m4"));
         cells[6] = armcell(b[6], sizeof b[6], armv("f32fpu-insns", kn, "cortex-m4"));
-        cells[7] = h4 < 0 ? "-" : fmt(b[7], sizeof b[7], "%.0f / %.0f", h4, armv("f32fpu-mca", kn, "cortex-m7"));
+        {
+            char m7[16];
+            cells[7] = h4 < 0 ? "-" : fmt(b[7], sizeof b[7], "%.0f / %s", h4,
+                                          armcell(m7, sizeof m7, armv("f32fpu-mca", kn, "cortex-m7")));
+        }
         cells[8] = q4 > 0 && p4 > 0 ? fmt(b[8], sizeof b[8], "%.1fx", p4 / q4) : "-";
         trow(cells);
     }
     tend();
+}
+
+/* the precision tiers' targets: each tier's brdf_hammon batch against the
+ * fast-math shader peer built for the same width, and the fast fixed point
+ * on the Cortex-M cores */
+static void target_tiers(void)
+{
+    static const char *const widths[] = { "avx2", "avx512" };
+    static const struct { const char *format; double want; } tiers[] = { { "f32_fast", 1.5 }, { "f32", 1.0 } };
+    char b[4][400], peer[32];
+    const char *cells[4];
+    size_t w, t;
+    for (w = 0; w < 2; w++)
+        for (t = 0; t < 2; t++) {
+            const row *x = find_row("brdf_hammon", tiers[t].format, widths[w], "batch"), *p;
+            snprintf(peer, sizeof peer, "shader_%s_fm", widths[w]);
+            p = find_row("brdf_hammon", "f32", peer, "peer");
+            cells[0] = fmt(b[0], sizeof b[0], "%s brdf_hammon %s batch >= %.1fx the fast-math shader peer at the same width",
+                           widths[w], tiers[t].format, tiers[t].want);
+            if (x && p) {
+                double r = p->r.thr.median / x->r.thr.median;
+                cells[1] = fmt(b[1], sizeof b[1], "%.2fx (%.2f vs %.2f est. cycles/sample); max err %.3g vs bound %.3g",
+                               r, est(x->r.thr.median), est(p->r.thr.median), x->r.err.max_rel, x->r.bound);
+                cells[2] = r >= tiers[t].want && x->r.within ? "yes" : "**no**";
+                cells[3] = "ratio within one run; the peer (-march of the same width, -ffast-math) computes the "
+                           "exact-Vis model from vectors, max error ~0.3 at the peak";
+            } else {
+                cells[1] = "-";
+                cells[2] = "n/a";
+                cells[3] = "this CPU does not run that width";
+            }
+            trow(cells);
+        }
+    {
+        double m4 = armv("fxfast-insns", "brdf_hammon", "cortex-m4"), m0 = armv("fxfast-insns", "brdf_hammon", "cortex-m0");
+        double fpu = armv("f32fpu-insns", "brdf_hammon", "cortex-m4"), m4mca = armv("fxfast-mca", "brdf_hammon", "cortex-m4");
+        cells[0] = "fx_fast brdf_hammon <= 150 executed instructions per call on Cortex-M4, <= 450 on Cortex-M0, "
+                   "fewer than the f32 kernel on the M4's FPU";
+        if (m4 > 0 && m0 > 0) {
+            cells[1] = fmt(b[1], sizeof b[1], "M4 %.0f (llvm-mca %.0f cycles), M0 %.0f, f32 FPU M4 %.0f", m4, m4mca, m0, fpu);
+            cells[2] = m4 <= 150 && m0 <= 450 && (fpu < 0 || m4 < fpu) ? "yes" : "**no**";
+            cells[3] = "instructions MEASURED under qemu (bench/cortexm); bound: ~26 high-word 32x32 products, "
+                       "4 table functions, 9 clz, 6 clamps at 2^-10 (README fixed point, fast tier)";
+        } else {
+            cells[1] = "-";
+            cells[2] = "n/a";
+            cells[3] = "no Cortex-M figures in this build";
+        }
+        trow(cells);
+    }
 }
 
 static void section_targets(void)
@@ -925,6 +979,7 @@ static void section_targets(void)
         cells[3] = "";
     }
     trow(cells);
+    target_tiers();
     tend();
 }
 
