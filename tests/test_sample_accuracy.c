@@ -143,7 +143,7 @@ int main(int argc, char **argv)
                         if (is_sampler(k)) {
                             if (fabs(sqrt(l2) - 1) > max_len)
                                 max_len = fabs(sqrt(l2) - 1);
-                            if (fabs(sqrt(l2) - 1) > (tier ? 0x1p-13 : 0x1p-22))
+                            if (fabs(sqrt(l2) - 1) > 0x1p-22)
                                 bad_unit++;
                             if (!(out[2][j] > 0))
                                 bad_z++;
