@@ -26,7 +26,7 @@ CLI_SRC  := $(wildcard src/cli/*.c)
 CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_SRC := $(wildcard tests/test_*.c)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
-HEADERS  := $(wildcard include/*.h include/facet/*.h include/facet/detail/*.h) src/kernels.def
+HEADERS  := $(wildcard include/*.h include/facet/*.h include/facet/detail/*.h) src/kernels.def src/sample_kernels.def
 
 # Parts add their own rules here (ports/<isa>/port.mk, tests/*.mk, bench/*.mk);
 # they may append to LIB_OBJ, CLI_OBJ, TEST_BIN and EXTRA_TESTS.
