@@ -28,7 +28,7 @@
 /* Gauss-Legendre panels per bin and dimension: the VNDF pdf has a kink
  * (max(0, V.H)) crossing the bins, which near-grazing views put where the
  * mass is, so those get finer panels */
-#define PANELS(c) ((c)->theta_v >= 85 ? 12 : 3)
+#define PANELS(c) ((c)->theta_v >= 85 ? 8 : 3)
 
 enum { S_D, S_D_ANISO, S_VNDF, S_VNDF_ANISO, S_GTR1, S_HEITZ };
 static const char *const kind_name[] = { "ggx_sample_d", "ggx_sample_d_aniso", "ggx_sample_vndf",
@@ -310,7 +310,7 @@ static void moment_config(const config *c, long n, float *h[3], float *buf[8])
     float vf[3];
     long j;
     int iq, ip, i, k;
-    const int NW = 400, NF = 64;
+    const int NW = 200, NF = 32;
     view_of(c, v);
     vf[0] = (float)v[0]; vf[1] = (float)v[1]; vf[2] = (float)v[2];
     draw(c, n, 0xabcd0000u + (uint64_t)c->kind * 977u + (uint64_t)(c->ax * 1e5), h, buf);
