@@ -1,7 +1,8 @@
 /* test_sample_ports.c - the samplers' batch API on every port this CPU runs,
  * both tiers: the bad-input contract (NaN, Inf, out-of-range and denormal
  * inputs give finite results; every sampled h is unit with h.z > 0; pdfs
- * are finite and >= 0; u = 0 and u just below 1 included), v below the
+ * are finite and >= 0; u = 0 and u just below 1 included; each result
+ * equals the sampler at the documented substitute, to the bit), v below the
  * horizon sampled as v.z = 0 (to the bit), gamma NaN as gamma = 2, lane
  * independence, every tail length, unaligned buffers and outputs aliasing
  * inputs (all to the bit). */
@@ -57,6 +58,30 @@ static float bad_value(smp_rng *r)
     return -(float)NAN;
 }
 
+/* the documented substitute of input i's value x (facet.h): u to
+ * [0, 1 - 2^-24], alpha to [alpha_min, 1], gamma to 1 or 2, dots and the z
+ * of v and h (but in reflect) to [0, 1], other components to [-1, 1]; NaN
+ * to the low end (gamma NaN to 2) */
+static float substitute(const facet_sampler *k, int i, float x)
+{
+    const char *n = k->inputs[i];
+    float lo = -1.0f, hi = 1.0f;
+    if (!strcmp(n, "gamma"))
+        return x < 1.5f ? 1.0f : 2.0f;
+    if (n[0] == 'u') {
+        lo = 0.0f;
+        hi = 0x1.fffffep-1f;
+    } else if (!strncmp(n, "alpha", 5)) {
+        lo = FACET_ALPHA_MIN;
+    } else if (!strcmp(n, "nov") || !strcmp(n, "noh") || !strcmp(n, "voh") ||
+               (n[1] == 'z' && strcmp(k->name, "reflect"))) {
+        lo = 0.0f;
+    }
+    if (!(x > lo))
+        return lo;
+    return x < hi ? x : hi;
+}
+
 static void test_port(const char *port, int lanes)
 {
     static float src[NIN][MAXN], ref[NOUT][MAXN], out[NOUT][MAXN];
@@ -64,7 +89,7 @@ static void test_port(const char *port, int lanes)
     for (ki = 0; ki < facet_sampler_count(); ki++) {
         const facet_sampler *k = facet_sampler_at(ki);
         smp_rng rng = { 4242 + ki };
-        long bad_fin = 0, bad_unit = 0, bad_z = 0, bad_neg = 0, bad_lane = 0, bad_tail = 0,
+        long bad_fin = 0, bad_unit = 0, bad_z = 0, bad_neg = 0, bad_sub = 0, bad_lane = 0, bad_tail = 0,
              bad_align = 0, bad_alias = 0, rep;
         int i, j, n, o;
         /* the bad-input contract: 64 batches of mixed special and valid values */
@@ -89,10 +114,20 @@ static void test_port(const char *port, int lanes)
                 if (k->n_outputs == 1)
                     bad_neg += !(out[0][j] >= 0);
             }
+            /* ... and each equals the sampler at the documented substitute, to the bit */
+            for (j = 0; j < MAXN; j++)
+                for (i = 0; i < k->n_inputs; i++)
+                    src[i][j] = substitute(k, i, src[i][j]);
+            run(k, src, 0, MAXN, 0, 0, ref);
+            for (j = 0; j < MAXN; j++)
+                for (o = 0; o < k->n_outputs; o++)
+                    bad_sub += !same(out[o][j], ref[o][j]);
         }
         CHECK(bad_fin == 0 && bad_unit == 0 && bad_z == 0 && bad_neg == 0,
               "%s%s on %s, bad inputs: %ld not finite, %ld not unit, %ld with h.z <= 0, %ld negative",
               k->name, tier ? " (fast)" : "", port, bad_fin, bad_unit, bad_z, bad_neg);
+        CHECK(bad_sub == 0, "%s%s on %s: %ld bad-input results differ from the substitute's", k->name,
+              tier ? " (fast)" : "", port, bad_sub);
 
         /* in-domain samples for the batch mechanics */
         for (j = 0; j < MAXN; j++) {
