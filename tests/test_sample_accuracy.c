@@ -3,7 +3,8 @@
  * every port this CPU runs, both tiers: sampled vectors by Euclidean
  * distance, pdfs by relative error.  Also: every sampled h is unit with
  * h.z > 0; the scalar entry points equal the scalar port's batch; pdf_d is
- * ggx_d * N.H to the bit; gtr with gamma = 2 is ggx_sample_d to the bit.
+ * ggx_d * N.H to the bit; gtr with gamma = 2 is ggx_sample_d to the bit;
+ * pdf_vndf agrees with G1 D V.H / N.V from facet's smith_g1 and ggx_d.
  * Prints the measured table.  FACET_TEST_QUICK=1 cuts the sample count. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -226,6 +227,43 @@ int main(int argc, char **argv)
             CHECK(bad_pdf == 0, "%s%s: ggx_pdf_d != ggx_d * noh in %ld cases", pn, tier ? " fast" : "", bad_pdf);
             CHECK(bad_gtr == 0, "%s%s: gtr_sample_d(gamma 2) != ggx_sample_d in %ld cases", pn, tier ? " fast" : "", bad_gtr);
             CHECK(bad_scalar == 0, "%s%s: scalar entry points != scalar batch in %ld cases", pn, tier ? " fast" : "", bad_scalar);
+        }
+    }
+    /* pdf_vndf = G1 D V.H / N.V from facet's own smith_g1 and ggx_d, within
+     * the sum of the three bounds, every port and tier (N.V >= 2^-20: below
+     * that G1 / N.V is formed from G1's rounding, the pdf from the limit) */
+    for (pi = 0; pi < n_ports; pi++) {
+        int sup, tier;
+        const char *pn = facet_port_at(pi, &sup, NULL);
+        enum { M = 20000 };
+        static float nv[M], nh[M], vh[M], al[M], p[M], g1[M], d[M];
+        smp_rng rng = { 31337 };
+        int j;
+        if (!sup)
+            continue;
+        facet_set_port(pn);
+        for (j = 0; j < M; j++) {
+            nv[j] = (float)((j & 3) ? smp_u01(&rng) : smp_log2u(&rng, -20, 0));
+            nh[j] = (j & 1) ? smp_unit(&rng) : (float)(1.0 - smp_log2u(&rng, -24, -4));
+            vh[j] = (float)smp_u01(&rng);
+            al[j] = smp_alpha(&rng);
+        }
+        for (tier = 0; tier < 2; tier++) {
+            double worst = 0, bound = tier ? FACET_ERR_GGX_PDF_VNDF_F32_FAST + FACET_ERR_SMITH_G1_F32_FAST + FACET_ERR_GGX_D_F32_FAST
+                                           : FACET_ERR_GGX_PDF_VNDF_F32 + FACET_ERR_SMITH_G1_F32 + FACET_ERR_GGX_D_F32;
+            (tier ? facet_ggx_pdf_vndf_f32_fast_batch : facet_ggx_pdf_vndf_f32_batch)(p, nv, nh, vh, al, M);
+            (tier ? facet_smith_g1_f32_fast_batch : facet_smith_g1_f32_batch)(g1, nv, al, M);
+            (tier ? facet_ggx_d_f32_fast_batch : facet_ggx_d_f32_batch)(d, nh, al, M);
+            for (j = 0; j < M; j++) {
+                double want = (double)g1[j] * d[j] * vh[j] / nv[j];
+                double e = want > 0 ? fabs(p[j] - want) / want : fabs(p[j]);
+                if (e > worst)
+                    worst = e;
+            }
+            printf("pdf_vndf vs smith_g1 * ggx_d * voh / nov on %-7s %-4s: max relative difference 2^%.2f\n", pn,
+                   tier ? "fast" : "f32", log2(worst));
+            CHECK(worst <= bound, "%s%s: pdf_vndf differs from G1 D V.H / N.V by 2^%.2f (bound 2^%.2f)", pn,
+                  tier ? " fast" : "", log2(worst), log2(bound));
         }
     }
     (void)smp_inputs;
