@@ -27,7 +27,8 @@ static void fit(const char*name, LD(*f)(LD), LD a, LD b, int n, float *out){
   LD mx=0; for(i=0;i<=200000;i++){LD x=a+(b-a)*i/200000.0L; LD p=0; for(j=n;j>=0;j--) p=p*x+out[j];
     LD e=fabsl(p/f(x)-1); if(e>mx) mx=e;}
   printf("%s deg %d: maxrel %.3Le (2^%.2f)\n  ", name, n, mx, (double)log2l(mx));
-  for(k=0;k<=n;k++) printf("%.9ef, ", out[k]); printf("\n");
+  for(k=0;k<=n;k++) printf("%.9ef, ", out[k]);
+  printf("\n");
 }
 int main(void){ float c[12];
   fit("S",fS,0,1.0L/64,3,c); fit("S",fS,0,1.0L/64,4,c);
