@@ -2,8 +2,12 @@
 #   make            build/libfacet.a, build/libfacet.so, build/facet
 #   make check      every test (gcc, clang, sanitizers, cross ports); closing
 #                   line "N passed, N failed, N skipped"
-#   make report     accuracy sweep (+ bench) -> build/report/
-#   make install PREFIX=/usr/local
+#   make report     accuracy sweep (+ bench, build/facet-bench) -> build/report/
+#   make fuzz       libFuzzer targets, FUZZ_SECONDS (300) each (tests/fuzz.mk;
+#                   the one recursive make: an instrumented libfacet)
+#   make install PREFIX=/usr/local   (headers, libraries, pkg-config, bin/facet)
+#   make fx-sources  the C files a firmware build compiles for the fixed-point
+#                   kernels (no f32 code, no dispatcher, no oracle, no libm)
 # Variables: CC, BUILD (output dir), CFLAGS (optimisation/debug/sanitizers).
 
 CC      ?= cc
@@ -27,17 +31,21 @@ CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_SRC := $(wildcard tests/test_*.c)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 HEADERS  := $(wildcard include/*.h include/facet/*.h include/facet/detail/*.h) src/kernels.def src/sample_kernels.def
+# The fixed-point kernels on their own (firmware): the kernels, their batch
+# API on the scalar loop, the kernel table.  Compile with -Iinclude.
+FX_SOURCES := src/fx_core.c src/fx_kernels.c src/fx_batch.c src/fx_table.c \
+              src/fx_only/fx_active_scalar.c
 
 # Parts add their own rules here (ports/<isa>/port.mk, tests/*.mk, bench/*.mk);
 # they may append to LIB_OBJ, CLI_OBJ, TEST_BIN and EXTRA_TESTS.
 EXTRA_TESTS :=
 -include $(sort $(wildcard ports/*/port.mk tests/*.mk bench/*.mk))
 
-.PHONY: all lib tests check report install clean
+.PHONY: all lib tests check report install clean fx-sources
 all: lib $(BUILD)/facet
 lib: $(BUILD)/libfacet.a $(BUILD)/libfacet.so
 
-$(BUILD)/src/%.o: src/%.c $(HEADERS) $(wildcard src/*.h)
+$(BUILD)/src/%.o: src/%.c $(HEADERS) $(wildcard src/*.h src/cli/*.h)
 	@mkdir -p $(dir $@)
 	$(CC) $(BASEFLAGS) $(PICFLAGS) -c $< -o $@
 
@@ -60,11 +68,15 @@ tests: $(TEST_BIN) $(BUILD)/facet $(EXTRA_TESTS)
 check:
 	@tests/check.sh
 
+fx-sources:
+	@echo $(FX_SOURCES)
+
 report: all
 	@tests/report.sh $(BUILD)
 
-install: lib
-	install -d $(DESTDIR)$(PREFIX)/include/facet/detail $(DESTDIR)$(PREFIX)/lib/pkgconfig
+install: lib $(BUILD)/facet
+	install -d $(DESTDIR)$(PREFIX)/include/facet/detail $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
+	install -m 755 $(BUILD)/facet $(DESTDIR)$(PREFIX)/bin/
 	install -m 644 include/facet.h $(DESTDIR)$(PREFIX)/include/
 	install -m 644 include/facet/*.h $(DESTDIR)$(PREFIX)/include/facet/
 	install -m 644 include/facet/detail/*.h $(DESTDIR)$(PREFIX)/include/facet/detail/

@@ -7,9 +7,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "../tests/harness.h"
-#include "png.h"
-#include "raster.h"
+#include "tests/harness.h"
+#include "report/png.h"
+#include "raster/raster.h"
 
 static uint32_t get32(const unsigned char *p)
 {

@@ -195,7 +195,10 @@ float facet_lambert_f32(float albedo);
 /* ---- batch API -------------------------------------------------------------
  * facet_<kernel>_f32_batch(out, in1, ..., n): out[i] = kernel(in1[i], ...)
  * for i < n, structure-of-arrays, inputs in the order above.  Any n (tails
- * are handled), no alignment requirement, out may alias any input.  Runs on
+ * are handled), no alignment requirement.  out may be exactly the same array
+ * as any input (out == in: each element is read before it is written); no
+ * other overlap (out shifted against an input gives results that depend on
+ * the port's vector width).  Runs on
  * the best port for this CPU, chosen once and thread-safely on first use:
  * avx512 > avx2 > sse2 on x86, neon on ARM, else scalar.  Every port meets the
  * bounds above (tests/test_f32_accuracy.c runs each kernel on each port);
@@ -301,8 +304,11 @@ void facet_lambert_f32_fast_batch(float *out, const float *albedo, size_t n);
  * "scalar", "sse2", "avx2", "avx512", "neon", or "auto" (the automatic choice).  Returns
  * 0 on success, 1 for a name not compiled into this build, 2 for a port this
  * CPU cannot run (the active port is then unchanged).  The environment
- * variable FACET_PORT names the initial choice the same way (an unknown or
- * unsupported name there falls back to auto; facet_port_name() tells).
+ * variable FACET_PORT names the initial choice the same way; an unknown or
+ * unsupported name there is not an error for the library: it falls back to
+ * auto, and facet_port_name() tells which port runs.  (The facet command is
+ * stricter: its f32 eval refuses such a FACET_PORT with exit status 2, and
+ * `facet ports` says which case applies.)
  * facet_port_at(i, &supported, &lanes) lists the ports compiled in, best
  * first (NULL past the end). */
 int facet_set_port(const char *name);

@@ -1,11 +1,12 @@
 # fx.mk - cross and bare-metal builds of the fixed-point kernels (included
 # by the Makefile; driven by tests/suites/50-fx-targets.sh).  Every build
-# compiles only src/fx_core.c, src/fx_kernels.c (and the table for tests),
-# so nothing else of the library has to port.
+# compiles only the Makefile's FX_SOURCES (`make fx-sources`: the kernels,
+# their batch API on the scalar loop, the table), so nothing else of the
+# library has to port, and the firmware list is what these targets test.
 #   $(BUILD)/fx/<target>/test_fx_hash[.elf]   the pinned-hash test per target
 #   $(BUILD)/fx/<cpu>/fx_kernels.o            Cortex-M objects for the size table
 #   $(BUILD)/fx/rv32/fx.elf                   freestanding RV32IMC link check
-FX_KSRC   := src/fx_core.c src/fx_kernels.c src/fx_batch.c src/fx_only/fx_active_scalar.c
+FX_KSRC   := $(filter-out src/fx_table.c,$(FX_SOURCES)) # the Makefile's firmware list
 FX_TSRC   := $(FX_KSRC) src/fx_table.c
 FX_HDRS   := include/facet/fx.h $(wildcard src/fx_*.h) src/port.h src/kernel_list.h src/kernels.def \
              tests/harness.h tests/fx_hash.h

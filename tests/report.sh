@@ -26,9 +26,9 @@ echo "report: f32 accuracy sweep, $n random samples per kernel + grids + edges .
     cat "$out/accuracy_f32.md"
 } > "$out/report.md"
 # ---- bench: benchmarks, plots, rasterizer (bench/) ------------------------
-# (owned by bench/: appends bench.md to report.md and writes index.html)
-if [ -f bench/report.sh ]; then
-    MAKE=${MAKE:-make} sh bench/report.sh "$build" || { echo "report: bench part FAILED"; exit 1; }
+# (owned by bench/report/: appends bench.md to report.md and writes index.html)
+if [ -f bench/report/report.sh ]; then
+    MAKE=${MAKE:-make} sh bench/report/report.sh "$build" || { echo "report: bench part FAILED"; exit 1; }
     cat "$out/bench.md" >> "$out/report.md"
     echo "report: wrote $out/index.html"
 fi

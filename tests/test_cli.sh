@@ -48,13 +48,80 @@ grep -q 'line 2' "$tmp/err" && ok || bad "malformed: stderr lacks 'line 2': $(ca
 printf '0.5\n' | "$facet" eval ggx_d > /dev/null 2> "$tmp/err"; expect "too few exit" 2 $?
 grep -q 'line 1: too few' "$tmp/err" && ok || bad "too few: $(cat "$tmp/err")"
 printf '0.5 0.5 0.5\n' | "$facet" eval ggx_d > /dev/null 2>&1; expect "too many exit" 2 $?
-printf '\n' | "$facet" eval ggx_d > /dev/null 2>&1; expect "empty line exit" 2 $?
 printf '0.5 0.5x\n' | "$facet" eval ggx_d > /dev/null 2>&1; expect "trailing junk exit" 2 $?
 "$facet" eval no_such_kernel < /dev/null > /dev/null 2>&1; expect "unknown kernel exit" 2 $?
 "$facet" eval ggx_d --port no_such_port < /dev/null > /dev/null 2>&1; expect "unknown port exit" 2 $?
 "$facet" eval ggx_d --format q99 < /dev/null > /dev/null 2>&1; expect "unknown format exit" 2 $?
 "$facet" frobnicate > /dev/null 2>&1; expect "unknown verb exit" 2 $?
 "$facet" > /dev/null 2>&1; expect "no verb exit" 2 $?
+
+# input rules (src/cli/cli.h): blank and '#' lines skipped, VT/FF are white space
+expect "blank and comment lines skipped" "0.0339389108" \
+    "$(printf '# noh alpha\n\n  \t\n   # indented comment\n0.5 0.25\n\n' | "$facet" eval ggx_d)"
+printf '\n\n' | "$facet" eval ggx_d > "$tmp/out" 2>&1; expect "only blank lines: exit" 0 $?
+expect "only blank lines: no output" "" "$(cat "$tmp/out")"
+expect "VT and FF are white space" "0.0339389108" "$(printf '\v0.5\f0.25\v\r\n' | "$facet" eval ggx_d)"
+# a NUL byte is reported as such, on any line, newline or not
+printf '0.5 0.25\0garbage' | "$facet" eval ggx_d > /dev/null 2> "$tmp/err"; expect "NUL, last line exit" 2 $?
+grep -q 'line 1: contains a NUL byte' "$tmp/err" && ok || bad "NUL on a last line: $(cat "$tmp/err")"
+printf '0.5 0.25\n0.5\0 0.25\n' | "$facet" eval ggx_d > /dev/null 2> "$tmp/err"; expect "NUL exit" 2 $?
+grep -q 'line 2: contains a NUL byte' "$tmp/err" && ok || bad "NUL: $(cat "$tmp/err")"
+printf '# a\0comment\n0.5 0.25\n' | "$facet" eval ggx_d > /dev/null 2> "$tmp/err"; expect "NUL in a comment exit" 2 $?
+head -c 5000 /dev/zero | tr '\0' 1 | "$facet" eval lambert > /dev/null 2> "$tmp/err"; expect "long line exit" 2 $?
+grep -q 'line 1: longer than 4094 characters' "$tmp/err" && ok || bad "long line: $(cat "$tmp/err")"
+# decimal only; one rounding to float (0.5 + 2^-25 + 10^-31 is above the tie: 0.5 + 2^-24)
+echo "0x1p-1 0.5" | "$facet" eval ggx_d > /dev/null 2>&1; expect "hex float exit" 2 $?
+expect "decimal rounded once to float" "$(echo 0.50000006 | "$facet" eval lambert)" \
+    "$(echo 0.5000000298023223876953125000001 | "$facet" eval lambert)"
+expect "finite beyond float range is +Inf: clamps" "$(echo '1 1' | "$facet" eval ggx_d)" "$(echo '1e999 1e400' | "$facet" eval ggx_d)"
+# a malformed line: the lines before it are printed, then the error, exit 2
+yes '0.5 0.25' | head -n 1500 > "$tmp/in"; echo '0.5 x' >> "$tmp/in"; echo '0.5 0.25' >> "$tmp/in"
+"$facet" eval ggx_d < "$tmp/in" > "$tmp/out" 2> "$tmp/err"; expect "malformed line 1501 exit" 2 $?
+expect "malformed line 1501: lines before it printed" 1500 "$(wc -l < "$tmp/out")"
+grep -q 'line 1501: not a decimal number' "$tmp/err" && ok || bad "malformed line 1501: $(cat "$tmp/err")"
+"$facet" eval ggx_d --format fx < "$tmp/in" > "$tmp/out" 2> /dev/null; expect "fx malformed line 1501 exit" 2 $?
+expect "fx malformed line 1501: lines before it printed" 1500 "$(wc -l < "$tmp/out")"
+"$facet" eval ggx_d --oracle < "$tmp/in" > "$tmp/out" 2> /dev/null; expect "oracle malformed line 1501 exit" 2 $?
+expect "oracle malformed line 1501: lines before it printed" 1500 "$(wc -l < "$tmp/out")"
+
+# exit status 1 for an I/O error, the same for every verb
+if [ -w /dev/full ]; then
+    for v in "list" "ports" "--version" "--help" "list --help" "eval --help" "vectors --help" \
+             "vectors ggx_d" "vectors ggx_d --count 1000000000"; do
+        "$facet" $v < /dev/null > /dev/full 2>/dev/null; expect "'$v' > /dev/full exit" 1 $?
+    done
+    for f in f32 fx; do
+        echo "0.5 0.25" | "$facet" eval ggx_d --format $f > /dev/full 2>/dev/null; expect "eval $f > /dev/full exit" 1 $?
+    done
+    echo "0.5 0.25" | "$facet" eval ggx_d --oracle > /dev/full 2>/dev/null; expect "eval --oracle > /dev/full exit" 1 $?
+else
+    echo "SKIP cli: /dev/full not writable here"
+fi
+
+# the oracle: %.17g of the double oracle at double inputs
+expect "eval --oracle lambert 1 = 1/pi" "0.31830988618379069" "$(echo 1 | "$facet" eval lambert --oracle)"
+o=$(echo "0.6 0.7 0.5 0.1 0.04 0.5" | "$facet" eval brdf_hammon --oracle)
+f=$(echo "0.6 0.7 0.5 0.1 0.04 0.5" | "$facet" eval brdf_hammon)
+awk -v a="$f" -v b="$o" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 3e-6 * b) }' && ok || bad "oracle $o vs f32 $f"
+expect "oracle accepts nan (clamped)" "0" "$(echo nan | "$facet" eval lambert --oracle)"
+
+# unknown kernels: a hint when one is close
+"$facet" eval ggx_dd < /dev/null > /dev/null 2> "$tmp/err"; expect "typo kernel exit" 2 $?
+grep -q "did you mean 'ggx_d'" "$tmp/err" && ok || bad "typo kernel: $(cat "$tmp/err")"
+"$facet" eval brdf < /dev/null > /dev/null 2> "$tmp/err"
+grep -q "did you mean 'brdf_hammon'" "$tmp/err" && ok || bad "partial kernel: $(cat "$tmp/err")"
+
+# ports: one line per port compiled in, 'auto' on exactly one, FACET_PORT explained
+"$facet" ports > "$tmp/ports"; expect "ports exit" 0 $?
+expect "ports: one line each" "$("$facet" eval --help | sed -n 's/^ports compiled in://p' | sed 's/ (not on this CPU)//g' | wc -w)" \
+    "$(wc -l < "$tmp/ports")"
+expect "ports: one auto" 1 "$(grep -c ' auto$' "$tmp/ports")"
+expect "ports: auto is the first this CPU runs" "$(grep -m1 'runs on this CPU' "$tmp/ports" | awk '{ print $1 }')" \
+    "$(grep ' auto$' "$tmp/ports" | awk '{ print $1 }')"
+FACET_PORT=no_such_port "$facet" ports > "$tmp/ports"; expect "ports with a bogus FACET_PORT exit" 0 $?
+grep -q '^FACET_PORT=no_such_port: not a port compiled in; the library ignores it' "$tmp/ports" && ok ||
+    bad "ports does not explain a bogus FACET_PORT: $(cat "$tmp/ports")"
+"$facet" ports extra > /dev/null 2>&1; expect "ports extra argument exit" 2 $?
 
 # ports: every port compiled in evaluates through the batch path and agrees
 # with the scalar port to within the kernel's bound; others are refused
@@ -77,7 +144,7 @@ grep -q "unknown port" "$tmp/err" && ok || bad "bogus port: $(cat "$tmp/err")"
 echo "0.5 0.5" | FACET_PORT=no_such_port "$facet" eval ggx_d > /dev/null 2>&1; expect "bogus FACET_PORT exit" 2 $?
 
 # help for each verb
-for v in "" "list" "eval"; do
+for v in "" "list" "eval" "ports"; do
     "$facet" $v --help > "$tmp/help"; expect "help '$v' exit" 0 $?
     grep -q usage "$tmp/help" && ok || bad "help '$v' has no usage line"
 done

@@ -26,9 +26,14 @@ while read -r name rest; do
     out=$(echo "$line" | $facet eval "$name" --format fx); rc=$?
     expect "eval $name exit" 0 $rc
     echo "$out" | grep -qE '^[0-9]+(\.[0-9]+)?$' && ok || bad "eval $name --format fx printed '$out'"
-    # vectors: header + 6*(n + 8) + 2 edge vectors + count random, each eval-consistent
+    # vectors: header + the distinct edge vectors + count random, each eval-consistent
     $facet vectors "$name" --format fx --count 50 --seed 7 > "$tmp/v" || bad "vectors $name exit $?"
-    expect "vectors $name lines" $((1 + n * 14 + 2 + 50)) "$(wc -l < "$tmp/v")"
+    $facet vectors "$name" --count 0 > "$tmp/v0" || bad "vectors $name --count 0 exit $?"
+    expect "vectors $name: edge vectors distinct" "" "$(grep -v '^#' "$tmp/v0" | sort | uniq -d)"
+    expect "vectors $name: every input takes the 8 special raw values" $((n * 8)) \
+        "$(grep -v '^#' "$tmp/v0" | awk -v n="$n" '{ for (i = 1; i <= n; i++) print i, $i }' | sort -u |
+           grep -cE ' (-2147483648|-1|0|1|32767|32768|32769|2147483647)$')"
+    expect "vectors $name lines" $(($(wc -l < "$tmp/v0") + 50)) "$(wc -l < "$tmp/v")"
     grep -v '^#' "$tmp/v" | awk -v n="$n" '{ s = ""; for (i = 1; i <= n; i++) s = s sprintf("%.17g ", $i / 32768); print s }' > "$tmp/in"
     grep -v '^#' "$tmp/v" | awk '{ print $NF }' > "$tmp/want"
     $facet eval "$name" --format fx --raw < "$tmp/in" > "$tmp/got"
@@ -37,16 +42,54 @@ while read -r name rest; do
     width=$(( 8 * (n + 1) )); [ "$name" = brdf_hammon ] && width=$((width + 8))
     expect "hex $name width" "" "$(grep -v '^//' "$tmp/h" | awk -v w=$width 'length($0) != w || $0 !~ /^[0-9a-f]+$/')"
 done < "$tmp/list"
+# ggx_d: 2 x 14 + 2 edge vectors, of which 9 repeat others (e.g. noh = 0 is
+# both the domain end and the special value 0)
+expect "ggx_d: 21 distinct edge vectors" 21 "$($facet vectors ggx_d --count 0 | grep -vc '^#')"
 expect "same seed, same vectors" "$($facet vectors smith_g2 --format fx --seed 3 --count 9 | md5sum)" \
        "$($facet vectors smith_g2 --format fx --seed 3 --count 9 | md5sum)"
 
 echo 'nan 0.5' | $facet eval ggx_d --format fx > /dev/null 2>&1; expect "nan exit" 2 $?
 printf '0.5 0.5\n0.5 x\n' | $facet eval ggx_d --format fx > /dev/null 2> "$tmp/err"; expect "malformed exit" 2 $?
 grep -q 'line 2' "$tmp/err" && ok || bad "malformed: stderr lacks 'line 2'"
-$facet vectors ggx_d > /dev/null 2>&1; expect "vectors without --format fx" 2 $?
+$facet vectors ggx_d > /dev/null 2>&1; expect "vectors without --format (fx is the default)" 0 $?
+$facet vectors ggx_d --format f32 > /dev/null 2>&1; expect "vectors --format f32" 2 $?
 $facet vectors nope --format fx > /dev/null 2>&1; expect "vectors unknown kernel" 2 $?
 $facet vectors ggx_d --format fx --count -1 > /dev/null 2>&1; expect "vectors bad count" 2 $?
 $facet eval ggx_d --format fx --bogus < /dev/null > /dev/null 2>&1; expect "eval fx bad option" 2 $?
+
+# decimal -> Q15 rounded once, exactly from the digits (not via double)
+expect "just below a tie rounds down" "16384" "$(echo '0.50001525878906249999999 1' | $facet eval fresnel_schlick --format fx --raw)"
+expect "a tie rounds up" "16385" "$(echo '0.500015258789062500 1' | $facet eval fresnel_schlick --format fx --raw)"
+expect "just above a tie rounds up" "16385" "$(echo '0.50001525878906250000001 1' | $facet eval fresnel_schlick --format fx --raw)"
+# finite values saturate, however large; only NaN and infinities are refused
+expect "1e301 saturates (clamps to 1)" "$(echo '1 0.5' | $facet eval ggx_d --format fx --raw)" \
+    "$(echo '1e301 0.5' | $facet eval ggx_d --format fx --raw 2>&1)"
+expect "-1e999999 saturates (clamps to 0)" "$(echo '0 0.5' | $facet eval ggx_d --format fx --raw)" \
+    "$(echo '-1e999999 0.5' | $facet eval ggx_d --format fx --raw 2>&1)"
+echo 'inf 0.5' | $facet eval ggx_d --format fx > /dev/null 2>&1; expect "inf exit" 2 $?
+echo '0.5 -Infinity' | $facet eval ggx_d --format fx > /dev/null 2>&1; expect "-Infinity exit" 2 $?
+# the input rules are those of --format f32
+expect "fx: blank and comment lines skipped" "1" "$(printf '# x\n\n1 0.3\n' | $facet eval smith_g1 --format fx)"
+printf '1 0.3\0junk' | $facet eval smith_g1 --format fx > /dev/null 2> "$tmp/err"; expect "fx NUL exit" 2 $?
+grep -q 'line 1: contains a NUL byte' "$tmp/err" && ok || bad "fx NUL: $(cat "$tmp/err")"
+$facet eval lambert --format fx < /dev/null > /dev/null 2> "$tmp/err"; expect "lambert fx exit" 2 $?
+grep -q 'no fixed-point form' "$tmp/err" && ok || bad "lambert fx: $(cat "$tmp/err")"
+$facet vectors smith_g11 < /dev/null > /dev/null 2> "$tmp/err"; expect "vectors typo exit" 2 $?
+grep -q "did you mean 'smith_g1'" "$tmp/err" && ok || bad "vectors typo: $(cat "$tmp/err")"
+
+# --count and --seed: decimal digits only, within the documented limits
+# (a refused value prints nothing; " -1" used to stream 2^64 - 1 vectors, hence head)
+for c in " -1" "-1" "+5" "010x" "0x10" " 5" "5 " "" "1000000001" "99999999999999999999999"; do
+    n=$({ $facet vectors ggx_d --format fx --count "$c" 2> /dev/null; echo $? > "$tmp/rc"; } | head -n 40 | wc -l)
+    expect "vectors --count '$c' exit" 2 "$(cat "$tmp/rc")"
+    expect "vectors --count '$c' prints nothing" 0 "$n"
+done
+expect "--count 010 is ten" "10" "$($facet vectors ggx_d --format fx --count 010 | head -n 1 | sed 's/.*, \([0-9]*\) random$/\1/')"
+for s in " -1" "-1" "0x10" "18446744073709551616" "1e3"; do
+    $facet vectors ggx_d --format fx --count 1 --seed "$s" > /dev/null 2>&1; expect "vectors --seed '$s'" 2 $?
+done
+$facet vectors ggx_d --count 1 --seed 18446744073709551615 > /dev/null 2>&1; expect "vectors --seed 2^64 - 1" 0 $?
+$facet vectors ggx_d --count 0 > /dev/null 2>&1; expect "vectors --count 0" 0 $?
 
 echo "fx_cli: $pass passed, $fail failed, 0 skipped"
 [ $fail -eq 0 ]

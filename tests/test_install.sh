@@ -1,7 +1,8 @@
 #!/bin/sh
 # test_install.sh BUILD_DIR - `make install` into a staging directory puts
-# the headers, both libraries and a pkg-config file where they belong, and a
-# program builds against the installed copy using what the .pc file says.
+# the headers, both libraries, a pkg-config file and the facet command where
+# they belong; the installed facet runs, and a program builds against the
+# installed copy using what the .pc file says.
 build=${1:-build}
 case "$build" in *asan*|*clang*) echo "install: 0 passed, 0 failed, 0 skipped"; exit 0 ;; esac
 pass=0 fail=0
@@ -15,9 +16,11 @@ if ${MAKE:-make} -s BUILD="$build" install DESTDIR="$stage" PREFIX="$prefix" > "
 rm -f "$stage.log"
 root=$stage$prefix
 for f in include/facet.h include/facet/scalar.h include/facet/oracle.h include/facet/common.h \
-         include/facet/detail/f32_body.h lib/libfacet.a lib/libfacet.so lib/pkgconfig/facet.pc; do
+         include/facet/detail/f32_body.h lib/libfacet.a lib/libfacet.so lib/pkgconfig/facet.pc bin/facet; do
     [ -e "$root/$f" ] && ok || bad "missing $f"
 done
+[ -e "$root/bin/facet-bench" ] && bad "bin/facet-bench installed (the bench is not)" || ok
+"$root/bin/facet" list 2>&1 | grep -q '^lambert albedo$' && ok || bad "installed facet list: $("$root/bin/facet" list 2>&1 | head -3)"
 pc=$root/lib/pkgconfig/facet.pc
 grep -q "^prefix=$prefix\$" "$pc" && ok || bad "facet.pc prefix: $(grep prefix= "$pc")"
 grep -qE '^Version: [0-9]+\.[0-9]+\.[0-9]+$' "$pc" && ok || bad "facet.pc version: $(grep Version "$pc")"

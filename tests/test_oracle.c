@@ -682,6 +682,22 @@ static ld ref_one_minus_pow5(ld x) /* 1 - (1 - x)^5 */
     return x * (1 + y * (1 + y * (1 + y * (1 + y))));
 }
 
+static ld ref_diffuse_g(const ref_geom *g, double nl, double nv, double alpha, double rho)
+{
+    ld a = alpha;
+    ld facing = g->t / 2;
+    ld rough = facing * (0.9L - 0.4L * facing) * (0.5L + g->n_h) / g->n_h;
+    ld smooth = 1.05L * ref_one_minus_pow5(nl) * ref_one_minus_pow5(nv);
+    ld single = ((1 - a) * smooth + a * rough) / PI_L;
+    return rho * (single + rho * 0.1159L * a);
+}
+
+static ld ref_diffuse(double nl, double nv, double lv, double alpha, double rho)
+{
+    ref_geom g = ref_geometry(nl, nv, lv);
+    return ref_diffuse_g(&g, nl, nv, alpha, rho);
+}
+
 static ld ref_brdf(double nl, double nv, double lv, double alpha, double f0, double rho)
 {
     ref_geom g = ref_geometry(nl, nv, lv);
@@ -689,11 +705,7 @@ static ld ref_brdf(double nl, double nv, double lv, double alpha, double f0, dou
     ld d = ref_d(g.tan2, a);
     ld vis = 0.5L / ((1 - a) * 2 * (ld)nl * nv + a * ((ld)nl + nv));
     ld f = f0 + (1 - (ld)f0) * y2 * y2 * g.y;
-    ld facing = g.t / 2;
-    ld rough = facing * (0.9L - 0.4L * facing) * (0.5L + g.n_h) / g.n_h;
-    ld smooth = 1.05L * ref_one_minus_pow5(nl) * ref_one_minus_pow5(nv);
-    ld single = ((1 - a) * smooth + a * rough) / PI_L;
-    return d * vis * f + rho * (single + rho * 0.1159L * a);
+    return d * vis * f + ref_diffuse_g(&g, nl, nv, alpha, rho);
 }
 
 /* Lambda = (sqrt(1 + x) - 1)/2 = x / (2 (1 + sqrt(1 + x))), x = a^2 tan^2 */
@@ -961,6 +973,82 @@ static void check_end_points(void)
            (int)(sizeof f0s / sizeof f0s[0]), agg_done(&ad));
 }
 
+/* ---- 10. L.V near -1 with tiny cosines --------------------------------------
+ * L nearly opposite V at grazing angles: t = 1 + L.V is tiny (down to
+ * (2 FACET_COS_MIN)^2 / 2 = 2^-39 after the raise), and the diffuse term's
+ * facing = t/2 is made of it alone, so t must keep its relative precision
+ * (as a double l_v = t - 1 it keeps only 2^-53 / t).  Consistent triples
+ * (t above (N.L + N.V)^2 / 2) and raised ones, against long double; the
+ * small albedos make the single-scattering part (rough, smooth) dominate
+ * the multiple-scattering constant. */
+#define TOL10 4e-15
+
+static void check_antipodal(void)
+{
+    static const double cs[] = {9.5367431640625e-07, 9.5370342954993248e-07 /* 2^-20 + 2^-35 */, 1e-6,
+                                0x1p-16, 1e-4, 1e-3, 0.01, 0.1};
+    static const double alphas[] = {0.0009765625, 0.03125, 0.5, 1.0};
+    static const double rhos[] = {1e-12, 1e-6, 0.5, 1.0};
+    size_t ia, ir;
+    int e;
+    long n_rand = quick ? 2000 : 20000, j;
+    agg adf, abr, at;
+    smp_rng rng;
+    /* the issue's example, against a 40-digit evaluation of facet.h's
+     * formula (mpmath: t = (N.L + N.V)^2 / 2, facing = t/2, N.H = 1/sqrt2);
+     * needs no long double, so it runs on every target */
+    {
+        double got = facet_oracle_diffuse_hammon(0x1p-20, 0x1p-20 + 0x1p-35, -1.0, 1.0, 1e-12);
+        double want = 5.067384864291308123600496955406599075155e-25;
+        CHECK(rel_err(got, want) <= TOL10, "diffuse_hammon(2^-20, 2^-20 + 2^-35, -1, 1, 1e-12) = %.17g, 40 digits "
+              "give %.17g: rel %.3g", got, want, rel_err(got, want));
+    }
+    if (!have_long_double("L.V near -1 vs long double"))
+        return;
+    agg_init(&adf, "diffuse_hammon near L.V = -1 at tiny cosines vs long double, rel", TOL10);
+    agg_init(&abr, "brdf_hammon near L.V = -1 at tiny cosines vs long double, rel", TOL10);
+    agg_init(&at, "geometry near L.V = -1: n_h and l_h vs long double, rel", TOL10);
+    rng.s = 0xa11;
+    for (j = 0; j < (long)(sizeof cs / sizeof cs[0] * sizeof cs / sizeof cs[0]) * 56 + n_rand; j++) {
+        double nl, nv, lv;
+        ref_geom r;
+        facet_oracle_geom g;
+        if (j < (long)(sizeof cs / sizeof cs[0] * sizeof cs / sizeof cs[0]) * 56) {
+            /* the grid: L.V = -1 + 2^-e, e = 0..54 (54: -1 itself) and -1.5 */
+            e = (int)(j % 56);
+            nl = cs[(j / 56) % (sizeof cs / sizeof cs[0])];
+            nv = cs[(j / 56) / (sizeof cs / sizeof cs[0])];
+            lv = e < 55 ? -1.0 + ldexp(1.0, -e) : -1.5;
+        } else {
+            nl = fmax(smp_log2u(&rng, -21, -3), FACET_COS_MIN);
+            nv = (smp_next(&rng) & 1) ? nl : fmax(smp_log2u(&rng, -21, -3), FACET_COS_MIN);
+            lv = -1.0 + smp_log2u(&rng, -54, -20);
+        }
+        g = facet_oracle_geometry(nl, nv, lv);
+        r = ref_geometry(nl, nv, fmax(lv, -1.0));
+        agg_add(&at, fmax(rel_err(g.n_h, (double)r.n_h), rel_err(g.l_h, (double)r.l_h)),
+                "(%.17g, %.17g, %.17g): n_h %.17g vs %.17Lg, l_h %.17g vs %.17Lg", nl, nv, lv, g.n_h, r.n_h, g.l_h,
+                r.l_h);
+        for (ia = 0; ia < sizeof alphas / sizeof alphas[0]; ia++)
+            for (ir = 0; ir < sizeof rhos / sizeof rhos[0]; ir++) {
+                double a = alphas[ia], rho = rhos[ir];
+                double got = facet_oracle_diffuse_hammon(nl, nv, lv, a, rho);
+                ld want = ref_diffuse(nl, nv, fmax(lv, -1.0), a, rho);
+                agg_add(&adf, (double)(fabsl(got - want) / want),
+                        "diffuse_hammon(%.17g, %.17g, %.17g, %g, %g) = %.17g vs %.17Lg", nl, nv, lv, a, rho, got,
+                        want);
+                got = facet_oracle_brdf_hammon(nl, nv, lv, a, 0.0, rho);
+                want = ref_brdf(nl, nv, fmax(lv, -1.0), a, 0.0, rho);
+                agg_add(&abr, (double)(fabsl(got - want) / want),
+                        "brdf_hammon(%.17g, %.17g, %.17g, %g, 0, %g) = %.17g vs %.17Lg", nl, nv, lv, a, rho, got,
+                        want);
+            }
+    }
+    printf("10. L.V near -1 at tiny cosines vs long double (tol %.0e), %ld triples:\n"
+           "   diffuse_hammon %.3g (worst at %s)\n   brdf_hammon %.3g, n_h and l_h %.3g\n",
+           TOL10, at.n, agg_done(&adf), adf.where, agg_done(&abr), agg_done(&at));
+}
+
 int main(void)
 {
     th_name = "oracle";
@@ -978,5 +1066,6 @@ int main(void)
     check_geometry();
     check_ill_conditioned();
     check_end_points();
+    check_antipodal();
     return th_done();
 }

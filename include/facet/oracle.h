@@ -4,11 +4,14 @@
  * L and V are built as unit vectors with the given dots and H = normalize(L+V)
  * (in double-double: the azimuth cancels where L is nearly opposite V at
  * grazing angles), D in its tan form, Smith G through Lambda, pow() for the
- * Fresnel and smooth-diffuse powers, plain divisions.  Two quantities the
- * kernels are most sensitive to are taken from exact geometric identities
- * evaluated in double-double instead of from the rounded vectors:
- * tan^2(theta_h) = |h_t|^2 / h_z^2 with |h|^2 = 2 + 2 L.V and h_z = N.L + N.V,
- * and 1 - L.H = (1 - L.H^2) / (1 + L.H) for the Fresnel tail.  It is
+ * Fresnel power, -expm1(5 log1p(-x)) for the smooth diffuse's 1 - (1 - x)^5
+ * (no cancellation at grazing angles), lerps as (1 - a) x + a y, plain
+ * divisions.  The quantities the kernels are most sensitive to are taken
+ * from exact geometric identities evaluated in double-double instead of from
+ * the rounded vectors: tan^2(theta_h) = |h_t|^2 / h_z^2 with |h|^2 = 2 + 2 L.V
+ * and h_z = N.L + N.V, 1 - L.H = (1 - L.H^2) / (1 + L.H) for the Fresnel
+ * tail, and t = 1 + L.V itself (never L.V = t - 1 rounded: near L.V = -1 t
+ * is tiny, and the diffuse's facing = t/2 is made of it).  It is
  * compiled with -ffp-contract=off, uses libm freely, and shares no code with
  * the kernels.  Its only common ground with them is the contract's domain
  * handling (clamping, and the identity extension for inconsistent dot
@@ -17,9 +20,10 @@
  * Accuracy: validated in tests/test_oracle.c, against quadrature
  * (normalisation of D, Lambda integrated from the slope distribution, the
  * Smith constraint, the 21/(20 pi) smooth-diffuse albedo), by symmetry, and
- * against an independent long-double vector evaluation at ill-conditioned
- * points (agreement 4e-15 relative); i.e. about 10^8 times below the f32
- * bounds it judges.
+ * against an independent long-double evaluation at ill-conditioned points:
+ * the specular peak, grazing angles, L.V near +-1, and L.V near -1 with
+ * cosines down to FACET_COS_MIN (agreement 4e-15 relative); i.e. about 10^8
+ * times below the f32 bounds it judges.
  */
 #ifndef FACET_ORACLE_H
 #define FACET_ORACLE_H
@@ -31,10 +35,14 @@ extern "C" {
 /* The geometry of an (N.L, N.V, L.V) triple after the domain rules.
  * consistent = 1 when unit vectors with these dots exist (then n_h, l_h,
  * l_v and tan2_h come from the vectors), 0 when the identity extension was
- * used.  tan2_h = tan^2 of the angle between N and H. */
+ * used.  tan2_h = tan^2 of the angle between N and H.  t = 1 + L.V (after
+ * the raise to (N.L + N.V)^2 / 2 for inconsistent triples) to full relative
+ * precision: near L.V = -1 it is tiny (down to 2^-39), and 1 + l_v would
+ * keep only 2^-53 of it absolutely. */
 typedef struct facet_oracle_geom {
     double n_l, n_v, l_v, n_h, l_h, tan2_h;
     int consistent;
+    double t;
 } facet_oracle_geom;
 
 facet_oracle_geom facet_oracle_geometry(double nol, double nov, double lov);

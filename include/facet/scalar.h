@@ -66,7 +66,7 @@ FACET_INLINE float facet_scalar_rcp(float x) { return 1.0f / x; }
  * y' = y + y(1 - x y^2)/2 maps a relative error e to about 1.5 e^2:
  * 3.5e-2 -> 1.8e-3 -> 4.9e-6 -> 3.6e-11, so three steps leave only the
  * rounding of the steps themselves (about 1 ulp). */
-FACET_INLINE float facet_scalar_rsqrt(float x)
+FACET_INLINE float facet_scalar_rsqrt_steps_(float x, int steps)
 {
     union { float f; uint32_t u; } b;
     float y, e;
@@ -74,12 +74,13 @@ FACET_INLINE float facet_scalar_rsqrt(float x)
     b.f = x;
     b.u = 0x5f375a86u - (b.u >> 1);
     y = b.f;
-    for (i = 0; i < 3; i++) {
+    for (i = 0; i < steps; i++) {
         e = facet_scalar_fnma(x * y, y, 1.0f);
         y = facet_scalar_fma(0.5f * y, e, y);
     }
     return y;
 }
+FACET_INLINE float facet_scalar_rsqrt(float x) { return facet_scalar_rsqrt_steps_(x, 3); }
 
 /* Exact a*a - p for p = fl(a*a) (no overflow/underflow in range).  Without
  * FMA: Dekker, splitting a by masking the low 12 significand bits, so the
@@ -102,20 +103,7 @@ FACET_INLINE float facet_scalar_sqr_err(float a, float p)
 /* The fast tier (f32_fast): the same division, and rsqrt with two Newton
  * steps instead of three (3.5e-2 -> 1.8e-3 -> 4.9e-6, about 2^-17.6). */
 FACET_INLINE float facet_scalar_rcp_fast(float x) { return 1.0f / x; }
-FACET_INLINE float facet_scalar_rsqrt_fast(float x)
-{
-    union { float f; uint32_t u; } b;
-    float y, e;
-    int i;
-    b.f = x;
-    b.u = 0x5f375a86u - (b.u >> 1);
-    y = b.f;
-    for (i = 0; i < 2; i++) {
-        e = facet_scalar_fnma(x * y, y, 1.0f);
-        y = facet_scalar_fma(0.5f * y, e, y);
-    }
-    return y;
-}
+FACET_INLINE float facet_scalar_rsqrt_fast(float x) { return facet_scalar_rsqrt_steps_(x, 2); }
 
 #define FACET_V float
 #define FACET_OP(op) facet_scalar_##op

@@ -1,14 +1,15 @@
 /* facet - the command-line face of the library.
- *   facet list
- *   facet eval KERNEL [--format f32] [--port auto|scalar|sse2|avx2|neon]
- * Exit status: 0 success, 2 usage error or malformed input, 1 I/O error. */
+ *   facet list | ports
+ *   facet eval KERNEL [--format f32|fx] [--oracle] [--port P]
+ *   facet vectors KERNEL [--format fx] [--count N] [--seed S] [--hex]
+ * Input rules and exit statuses: src/cli/cli.h (0 success, 1 I/O error,
+ * 2 usage error or malformed input), the same for every verb. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "facet.h"
 #include "cli.h"
 
-#define LINE_MAX_ 4096
 #define CHUNK 1024 /* samples per batch call */
 
 static const char *prog = "facet";
@@ -16,40 +17,74 @@ static const char *prog = "facet";
 int facet_cli_fx_eval(int argc, char **argv); /* src/cli/fx.c: eval --format fx */
 int facet_cli_vectors(int argc, char **argv);  /* src/cli/fx.c: vectors */
 
+/* the rules every verb shares, for the --help texts */
+const char facet_cli_input_help[] =
+    "Input: one sample per line, the kernel's inputs in 'facet list' order as\n"
+    "decimal numbers ([+-]digits[.digits][e[+-]digits]) separated by white space\n"
+    "(space, tab, CR, VT, FF).  Blank lines and lines whose first non-blank\n"
+    "character is '#' are skipped.  A line may have at most 4094 characters; a\n"
+    "NUL byte anywhere is an error.  A malformed line stops the run: every line\n"
+    "before it has been evaluated and printed, the error (with its line number)\n"
+    "goes to stderr, and the exit status is 2.\n";
+const char facet_cli_exit_help[] =
+    "Exit status (every verb): 0 success; 1 I/O error (reading stdin or writing\n"
+    "stdout failed, e.g. stdout is /dev/full); 2 usage error or malformed input.\n";
+
 static void usage_main(FILE *f)
 {
     fprintf(f,
             "usage: %s <verb> [options]\n"
             "verbs:\n"
             "  list                 one line per kernel: name, then its inputs in order\n"
+            "  ports                the ports compiled in, which this CPU runs, and\n"
+            "                       which one 'auto' picks\n"
             "  eval KERNEL          evaluate KERNEL on samples read from stdin\n"
-            "                       (--format f32|fx, --port P)\n"
+            "                       (--format f32|fx, --oracle, --port P)\n"
             "  vectors KERNEL       golden input/output vectors of a fixed-point kernel\n"
-            "  bench [KERNEL]       cycles per sample of every kernel, port and format\n"
-            "Run '%s <verb> --help' for a verb's options.\n",
-            prog, prog);
+            "  --version            the library version\n"
+            "Run '%s <verb> --help' for a verb's options.\n%s",
+            prog, prog, facet_cli_exit_help);
 }
 
 static void usage_list(FILE *f)
 {
     fprintf(f, "usage: %s list\n"
                "Prints one line per kernel: its name, then the names of its inputs in the\n"
-               "order 'eval' reads them.\n", prog);
+               "order 'eval' reads them.\n%s", prog, facet_cli_exit_help);
+}
+
+static void usage_ports(FILE *f)
+{
+    fprintf(f, "usage: %s ports\n"
+               "Prints one line per port compiled in, best first: its name, its lanes,\n"
+               "whether this CPU runs it, and 'auto' on the port the automatic choice\n"
+               "picks here.  With FACET_PORT set, a last line says what the library does\n"
+               "with it: a port this CPU runs is the library's initial port; any other\n"
+               "value is ignored by the library (it starts on auto; facet_port_name()\n"
+               "tells), whereas 'facet eval' (f32) refuses it (exit status 2).\n%s",
+            prog, facet_cli_exit_help);
 }
 
 static void usage_eval(FILE *f)
 {
     fprintf(f,
-            "usage: %s eval KERNEL [--format f32] [--port P]\n"
-            "Reads samples from stdin, one per line: the kernel's inputs as decimal\n"
-            "numbers separated by white space, in 'facet list' order.  Writes one line\n"
-            "per sample: the output, printed with %%.9g (round-trips the float).\n"
-            "A malformed line is an error naming its line number (exit status 2).\n"
-            "  --format f32     the float kernels (default)\n"
+            "usage: %s eval KERNEL [--format f32|fx] [--oracle] [--port P]\n"
+            "Evaluates KERNEL on the samples read from stdin, one output line per sample.\n"
+            "  --format f32     the float kernels (default): each input rounded once to\n"
+            "                   the nearest float; output printed with %%.9g (round-trips)\n"
+            "  --format fx      the fixed-point kernels ('%s eval --format fx --help')\n"
+            "  --oracle         the double-precision oracle instead (facet/oracle.h):\n"
+            "                   each input rounded once to the nearest double (give\n"
+            "                   float values to judge --format f32); output with %%.17g\n"
             "  --port P         port to run the batch kernels on: auto (default: the\n"
             "                   best this CPU runs, or $FACET_PORT), or one of the\n"
-            "                   ports compiled in (listed below)\n",
-            prog);
+            "                   ports compiled in (listed below; see '%s ports').  An\n"
+            "                   unknown port, or one this CPU cannot run, is an error\n"
+            "                   (exit status 2), from --port and from $FACET_PORT alike.\n"
+            "NaN and infinities are accepted by f32 and --oracle (the kernels clamp\n"
+            "them: NaN and -Inf to the low end of the domain, +Inf to the high end);\n"
+            "a finite value beyond float range becomes +-Inf, so it clamps too.\n%s%s",
+            prog, prog, prog, facet_cli_input_help, facet_cli_exit_help);
     {
         size_t i;
         fprintf(f, "ports compiled in:");
@@ -62,18 +97,24 @@ static void usage_eval(FILE *f)
     }
 }
 
+/* a verb given only --help / -h; 1 if it was (and the help is printed) */
+static int wants_help(int argc, char **argv)
+{
+    return argc == 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"));
+}
+
 static int cmd_list(int argc, char **argv)
 {
     size_t i;
     int j;
+    if (wants_help(argc, argv)) {
+        usage_list(stdout);
+        return facet_cli_finish("list");
+    }
     if (argc > 1) {
-        if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
-            usage_list(stdout);
-            return 0;
-        }
         fprintf(stderr, "%s list: unexpected argument '%s'\n", prog, argv[1]);
         usage_list(stderr);
-        return 2;
+        return FACET_EXIT_USAGE;
     }
     for (i = 0; i < facet_kernel_count(); i++) {
         const facet_kernel *k = facet_kernel_at(i);
@@ -82,28 +123,115 @@ static int cmd_list(int argc, char **argv)
             printf(" %s", k->inputs[j]);
         printf("\n");
     }
-    return 0;
+    return facet_cli_finish("list");
 }
 
-/* Parses exactly n numbers from line into floats; NULL or the error. */
-static const char *parse_line(const char *line, int n, float *in)
+static int cmd_ports(int argc, char **argv)
 {
-    double v[FACET_MAX_INPUTS];
-    const char *err = facet_cli_parse_numbers(line, n, v);
+    size_t i;
+    int picked = 0;
+    const char *env = getenv("FACET_PORT");
+    if (wants_help(argc, argv)) {
+        usage_ports(stdout);
+        return facet_cli_finish("ports");
+    }
+    if (argc > 1) {
+        fprintf(stderr, "%s ports: unexpected argument '%s'\n", prog, argv[1]);
+        usage_ports(stderr);
+        return FACET_EXIT_USAGE;
+    }
+    for (i = 0; i < facet_port_count(); i++) {
+        int sup, lanes;
+        const char *n = facet_port_at(i, &sup, &lanes);
+        printf("%-8s %2d lane%s  %s%s\n", n, lanes, lanes == 1 ? " " : "s",
+               sup ? "runs on this CPU" : "not on this CPU", sup && !picked ? "  auto" : "");
+        picked |= sup; /* best first: auto is the first one this CPU runs */
+    }
+    if (env && *env && strcmp(env, "auto")) {
+        int sup = 0, known = 0;
+        for (i = 0; i < facet_port_count(); i++)
+            if (!strcmp(env, facet_port_at(i, &sup, NULL))) {
+                known = 1;
+                break;
+            }
+        if (known && sup)
+            printf("FACET_PORT=%s: the library starts on %s\n", env, env);
+        else
+            printf("FACET_PORT=%s: %s; the library ignores it (starts on auto), "
+                   "'%s eval' (f32) refuses it\n", env, known ? "this CPU cannot run it" : "not a port compiled in",
+                   prog);
+    }
+    return facet_cli_finish("ports");
+}
+
+static void kernel_names(const char **names, size_t cap, size_t *n)
+{
+    size_t i;
+    *n = facet_kernel_count() < cap ? facet_kernel_count() : cap;
+    for (i = 0; i < *n; i++)
+        names[i] = facet_kernel_at(i)->name;
+}
+
+/* "unknown kernel" with a did-you-mean hint; shared with src/cli/fx.c */
+void facet_cli_unknown_kernel(const char *verb, const char *what, const char *name)
+{
+    const char *names[64];
+    size_t n;
+    const char *hint;
+    kernel_names(names, sizeof names / sizeof names[0], &n);
+    hint = facet_cli_suggest(name, names, n);
+    fprintf(stderr, "%s %s: unknown %s '%s'", prog, verb, what, name);
+    if (hint)
+        fprintf(stderr, "; did you mean '%s'?", hint);
+    fprintf(stderr, " (see '%s list')\n", prog);
+}
+
+static void report_line_error(const facet_kernel *k, const facet_cli_reader *r, const char *err)
+{
     int i;
-    for (i = 0; !err && i < n; i++)
-        in[i] = (float)v[i];
-    return err;
+    fprintf(stderr, "%s eval: line %ld: %s (expected %d numbers:", prog, r->lineno, err, k->n_inputs);
+    for (i = 0; i < k->n_inputs; i++)
+        fprintf(stderr, " %s", k->inputs[i]);
+    fprintf(stderr, ")\n");
+}
+
+/* the oracle, one line at a time */
+static int eval_oracle(const facet_kernel *k)
+{
+    facet_cli_reader r;
+    const char *err = NULL;
+    int got;
+    r.f = stdin;
+    r.lineno = 0;
+    while ((got = facet_cli_read_line(&r, &err)) == 1) {
+        double in[FACET_MAX_INPUTS];
+        err = facet_cli_parse_f64(r.buf, k->n_inputs, in);
+        if (err)
+            break;
+        printf("%.17g\n", k->oracle(in));
+        if (ferror(stdout))
+            return facet_cli_finish("eval");
+    }
+    if (got == -2) {
+        fprintf(stderr, "%s eval: error reading the input\n", prog);
+        return FACET_EXIT_IO;
+    }
+    if (got == -1 || err) {
+        int rc = facet_cli_finish("eval");
+        report_line_error(k, &r, err);
+        return rc ? rc : FACET_EXIT_USAGE;
+    }
+    return facet_cli_finish("eval");
 }
 
 static int cmd_eval(int argc, char **argv)
 {
     const facet_kernel *k = NULL;
     const char *format = "f32", *port = "auto";
-    char line[LINE_MAX_];
     static float cols[FACET_MAX_INPUTS][CHUNK], out[CHUNK];
-    long lineno = 0;
-    int i;
+    facet_cli_reader r;
+    const char *err = NULL;
+    int i, oracle = 0, got = 1;
 
     for (i = 1; i + 1 < argc; i++) /* fx has its own options: src/cli/fx.c */
         if (!strcmp(argv[i], "--format") && !strcmp(argv[i + 1], "fx"))
@@ -111,35 +239,39 @@ static int cmd_eval(int argc, char **argv)
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             usage_eval(stdout);
-            return 0;
+            return facet_cli_finish("eval");
         } else if (!strcmp(argv[i], "--format") && i + 1 < argc) {
             format = argv[++i];
         } else if (!strcmp(argv[i], "--port") && i + 1 < argc) {
             port = argv[++i];
+        } else if (!strcmp(argv[i], "--oracle")) {
+            oracle = 1;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
             fprintf(stderr, "%s eval: unknown or incomplete option '%s'\n", prog, argv[i]);
             usage_eval(stderr);
-            return 2;
+            return FACET_EXIT_USAGE;
         } else if (!k) {
             k = facet_kernel_find(argv[i]);
             if (!k) {
-                fprintf(stderr, "%s eval: unknown kernel '%s' (see '%s list')\n", prog, argv[i], prog);
-                return 2;
+                facet_cli_unknown_kernel("eval", "kernel", argv[i]);
+                return FACET_EXIT_USAGE;
             }
         } else {
             fprintf(stderr, "%s eval: unexpected argument '%s'\n", prog, argv[i]);
-            return 2;
+            return FACET_EXIT_USAGE;
         }
     }
     if (!k) {
         fprintf(stderr, "%s eval: missing KERNEL\n", prog);
         usage_eval(stderr);
-        return 2;
+        return FACET_EXIT_USAGE;
     }
     if (strcmp(format, "f32")) {
         fprintf(stderr, "%s eval: unknown format '%s' (known: f32, fx)\n", prog, format);
-        return 2;
+        return FACET_EXIT_USAGE;
     }
+    if (oracle)
+        return eval_oracle(k);
     if (!strcmp(port, "auto") && getenv("FACET_PORT") && *getenv("FACET_PORT"))
         port = getenv("FACET_PORT");
     switch (facet_set_port(port)) {
@@ -147,49 +279,49 @@ static int cmd_eval(int argc, char **argv)
         break;
     case 2:
         fprintf(stderr, "%s eval: port '%s' is compiled in but this CPU cannot run it\n", prog, port);
-        return 2;
+        return FACET_EXIT_USAGE;
     default:
-        fprintf(stderr, "%s eval: unknown port '%s' (see '%s eval --help')\n", prog, port, prog);
-        return 2;
+        fprintf(stderr, "%s eval: unknown port '%s' (see '%s ports')\n", prog, port, prog);
+        return FACET_EXIT_USAGE;
     }
-    for (;;) {
+    r.f = stdin;
+    r.lineno = 0;
+    while (got == 1) {
         int n = 0;
-        while (n < CHUNK && fgets(line, sizeof line, stdin)) {
+        /* a chunk of lines; a malformed one ends the chunk, and the run
+         * after the lines before it are printed */
+        while (n < CHUNK && (got = facet_cli_read_line(&r, &err)) == 1) {
             float in[FACET_MAX_INPUTS];
-            const char *err;
-            lineno++;
-            if (!strchr(line, '\n') && !feof(stdin)) {
-                fprintf(stderr, "%s eval: line %ld: longer than %d characters\n", prog, lineno, LINE_MAX_ - 2);
-                return 2;
-            }
-            err = parse_line(line, k->n_inputs, in);
+            err = facet_cli_parse_f32(r.buf, k->n_inputs, in);
             if (err) {
-                fprintf(stderr, "%s eval: line %ld: %s (expected %d numbers:", prog, lineno, err, k->n_inputs);
-                for (i = 0; i < k->n_inputs; i++)
-                    fprintf(stderr, " %s", k->inputs[i]);
-                fprintf(stderr, ")\n");
-                return 2;
+                got = -1;
+                break;
             }
             for (i = 0; i < k->n_inputs; i++)
                 cols[i][n] = in[i];
             n++;
         }
-        if (n == 0)
-            break;
-        {
+        if (n > 0) {
             const float *ptr[FACET_MAX_INPUTS];
             for (i = 0; i < FACET_MAX_INPUTS; i++)
                 ptr[i] = cols[i];
             k->f32_batch(out, ptr, (size_t)n);
+            for (i = 0; i < n; i++)
+                printf("%.9g\n", out[i]);
+            if (ferror(stdout))
+                return facet_cli_finish("eval");
         }
-        for (i = 0; i < n; i++)
-            printf("%.9g\n", out[i]);
     }
-    if (ferror(stdin) || fflush(stdout) != 0) {
-        fprintf(stderr, "%s eval: I/O error\n", prog);
-        return 1;
+    if (got == -2) {
+        fprintf(stderr, "%s eval: error reading the input\n", prog);
+        return FACET_EXIT_IO;
     }
-    return 0;
+    if (got == -1) {
+        int rc = facet_cli_finish("eval");
+        report_line_error(k, &r, err);
+        return rc ? rc : FACET_EXIT_USAGE;
+    }
+    return facet_cli_finish("eval");
 }
 
 /* Verbs.  Parts of the library that bring a verb add a line here and
@@ -199,12 +331,11 @@ typedef struct {
     int (*run)(int argc, char **argv); /* argv[0] is the verb */
 } verb;
 
-int facet_cmd_bench(int argc, char **argv); /* bench/cli_bench.c */
 static const verb verbs[] = {
     { "list", cmd_list },
+    { "ports", cmd_ports },
     { "eval", cmd_eval },
     { "vectors", facet_cli_vectors }, /* src/cli/fx.c */
-    { "bench", facet_cmd_bench },
 };
 
 int main(int argc, char **argv)
@@ -212,20 +343,20 @@ int main(int argc, char **argv)
     size_t i;
     if (argc < 2) {
         usage_main(stderr);
-        return 2;
+        return FACET_EXIT_USAGE;
     }
     if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
         usage_main(stdout);
-        return 0;
+        return facet_cli_finish("--help");
     }
     if (!strcmp(argv[1], "--version")) {
         printf("facet %s\n", FACET_VERSION);
-        return 0;
+        return facet_cli_finish("--version");
     }
     for (i = 0; i < sizeof verbs / sizeof verbs[0]; i++)
         if (!strcmp(argv[1], verbs[i].name))
             return verbs[i].run(argc - 1, argv + 1);
     fprintf(stderr, "%s: unknown verb '%s'\n", prog, argv[1]);
     usage_main(stderr);
-    return 2;
+    return FACET_EXIT_USAGE;
 }

@@ -1,64 +1,68 @@
 /* fx.c - the fixed-point face of the facet command:
  *   facet eval KERNEL --format fx [--raw]
- *   facet vectors KERNEL --format fx [--count N] [--seed S] [--hex]
- * Inputs given as decimals are rounded to Q15 by the fx rule (nearest, ties
- * up); outputs print exactly (every Q value has a finite decimal expansion)
- * or as raw integers.  Exit status: 0 success, 2 usage or malformed input,
- * 1 I/O error. */
-#include <errno.h>
-#include <math.h>
+ *   facet vectors KERNEL [--format fx] [--count N] [--seed S] [--hex]
+ * Inputs given as decimals are rounded to Q15 exactly from their digits
+ * (floor(x 32768 + 1/2), saturated to int32: src/cli/parse.c); outputs
+ * print exactly (every Q value has a finite decimal expansion) or as raw
+ * integers.  Input rules and exit statuses: src/cli/cli.h. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "facet.h"
 #include "facet/fx.h"
 #include "cli.h"
 
-
-#define LINE_MAX_ 4096
+/* the limit of vectors --count */
+#define COUNT_MAX 1000000000ull /* 10^9 random vectors (tens of GB of text) */
 
 int facet_cli_fx_eval(int argc, char **argv);
 int facet_cli_vectors(int argc, char **argv);
+void facet_cli_unknown_kernel(const char *verb, const char *what, const char *name); /* facet.c */
+extern const char facet_cli_input_help[], facet_cli_exit_help[];               /* facet.c */
 
 static void usage_eval(FILE *f)
 {
     fprintf(f,
             "usage: facet eval KERNEL --format fx [--raw]\n"
-            "Reads samples from stdin, one per line: the kernel's inputs as decimal numbers\n"
-            "in 'facet list' order.  Each is rounded to Q15 (raw = floor(x * 32768 + 1/2),\n"
-            "saturated to int32; the kernel then clamps it to its domain).  Writes one line\n"
-            "per sample: the output's exact value (it has a finite decimal expansion), or\n"
-            "with --raw the raw integer of its format (see 'facet vectors --help').\n");
+            "Evaluates the fixed-point KERNEL on the samples read from stdin.  Each\n"
+            "input is rounded to Q15 once, exactly from its decimal digits: raw =\n"
+            "floor(x * 32768 + 1/2) (nearest, ties up), saturated to int32 for any\n"
+            "finite value however large (the kernel then clamps it to its domain); NaN\n"
+            "and infinities are refused (fixed point has none).  Writes one line per\n"
+            "sample: the output's exact value (it has a finite decimal expansion), or\n"
+            "with --raw the raw integer of its format (see 'facet vectors --help').\n%s%s",
+            facet_cli_input_help, facet_cli_exit_help);
 }
 
 static void usage_vectors(FILE *f)
 {
     fprintf(f,
-            "usage: facet vectors KERNEL --format fx [--count N] [--seed S] [--hex]\n"
+            "usage: facet vectors KERNEL [--format fx] [--count N] [--seed S] [--hex]\n"
             "Writes golden vectors of a fixed-point kernel: first the edge cases (every\n"
             "input at its domain ends, their neighbours, out-of-domain values and the\n"
-            "key points), then N (default 1000) pseudo-random in-domain samples from\n"
-            "seed S (default 1).  One vector per line: the raw inputs (int32, Q15,\n"
+            "key points; each distinct vector once), then N pseudo-random in-domain\n"
+            "samples from seed S.  One vector per line: the raw inputs (int32, Q15,\n"
             "1.0 = 32768) in 'facet list' order, then the raw output.\n"
-            "  default  decimal integers separated by spaces; '#' comment header\n"
-            "  --hex    one hexadecimal word per line for Verilog $readmemh: the inputs\n"
-            "           as 8 digits each (32-bit two's complement), then the output as 8\n"
-            "           digits (16 for brdf_hammon, UQ40.24), most significant field\n"
-            "           first; '//' comment header.  E.g. ggx_d: reg [95:0] v [0:N-1];\n"
-            "           noh = v[i][95:64], alpha = v[i][63:32], D = v[i][31:0].\n");
+            "  --format fx  the only vector format (the default)\n"
+            "  --count N    decimal digits only, 0 <= N <= %llu (default 1000)\n"
+            "  --seed S     decimal digits only, 0 <= S <= 18446744073709551615\n"
+            "               (2^64 - 1; default 1)\n"
+            "  --hex        one hexadecimal word per line for Verilog $readmemh: the inputs\n"
+            "               as 8 digits each (32-bit two's complement), then the output as 8\n"
+            "               digits (16 for brdf_hammon, UQ40.24), most significant field\n"
+            "               first; '//' comment header.  E.g. ggx_d: reg [95:0] v [0:N-1];\n"
+            "               noh = v[i][95:64], alpha = v[i][63:32], D = v[i][31:0].\n"
+            "Without --hex: decimal integers separated by spaces; '#' comment header.\n%s",
+            COUNT_MAX, facet_cli_exit_help);
 }
 
-/* x rounded to Q15 by the fx rule, saturated to int32; 0 if not finite */
-static int to_q15(double x, int32_t *raw)
+/* an unknown kernel name: the f32-only kernels get their own message */
+static void unknown_fx_kernel(const char *verb, const char *name)
 {
-    double y, r;
-    if (!(x == x) || x > 1e300 || x < -1e300)
-        return 0;
-    y = x * 32768.0; /* exact: a power of two */
-    r = floor(y);
-    if (y - r >= 0.5) /* exact too: no y + 0.5 rounding */
-        r += 1.0;
-    *raw = r >= 2147483647.0 ? INT32_MAX : r <= -2147483648.0 ? INT32_MIN : (int32_t)r;
-    return 1;
+    if (facet_kernel_find(name))
+        fprintf(stderr, "facet %s: '%s' has no fixed-point form (only --format f32)\n", verb, name);
+    else
+        facet_cli_unknown_kernel(verb, "fx kernel", name);
 }
 
 /* the exact decimal of raw / 2^frac */
@@ -77,88 +81,80 @@ static void print_fixed(FILE *f, uint64_t raw, int frac)
     fputc('\n', f);
 }
 
-static const char *parse_line(const char *line, int n, int32_t *in)
-{
-    double v[FACET_FX_MAX_INPUTS];
-    const char *err = facet_cli_parse_numbers(line, n, v);
-    int i;
-    for (i = 0; !err && i < n; i++)
-        if (!to_q15(v[i], &in[i]))
-            return "not a finite number (fixed point has no NaN or infinity)";
-    return err;
-}
-
 /* argv[0] is "eval"; the f32 eval hands over when it sees --format fx */
 int facet_cli_fx_eval(int argc, char **argv)
 {
     const facet_fx_kernel *k = NULL;
-    char line[LINE_MAX_];
-    long lineno = 0;
-    int i, raw = 0;
+    facet_cli_reader r;
+    const char *err = NULL;
+    int i, raw = 0, got;
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             usage_eval(stdout);
-            return 0;
+            return facet_cli_finish("eval");
         } else if (!strcmp(argv[i], "--format") && i + 1 < argc) {
             if (strcmp(argv[++i], "fx")) {
                 fprintf(stderr, "facet eval: unknown format '%s'\n", argv[i]);
-                return 2;
+                return FACET_EXIT_USAGE;
             }
         } else if (!strcmp(argv[i], "--raw")) {
             raw = 1;
         } else if (!strcmp(argv[i], "--port") && i + 1 < argc) {
             if (strcmp(argv[++i], "auto") && strcmp(argv[i], "scalar")) {
                 fprintf(stderr, "facet eval: unknown port '%s' for fx (known: auto, scalar)\n", argv[i]);
-                return 2;
+                return FACET_EXIT_USAGE;
             }
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
             fprintf(stderr, "facet eval: unknown or incomplete option '%s'\n", argv[i]);
             usage_eval(stderr);
-            return 2;
+            return FACET_EXIT_USAGE;
         } else if (!k) {
             k = facet_fx_kernel_find(argv[i]);
             if (!k) {
-                fprintf(stderr, "facet eval: unknown fx kernel '%s' (see 'facet list')\n", argv[i]);
-                return 2;
+                unknown_fx_kernel("eval", argv[i]);
+                return FACET_EXIT_USAGE;
             }
         } else {
             fprintf(stderr, "facet eval: unexpected argument '%s'\n", argv[i]);
-            return 2;
+            return FACET_EXIT_USAGE;
         }
     }
     if (!k) {
         fprintf(stderr, "facet eval: missing KERNEL\n");
         usage_eval(stderr);
-        return 2;
+        return FACET_EXIT_USAGE;
     }
-    while (fgets(line, sizeof line, stdin)) {
+    r.f = stdin;
+    r.lineno = 0;
+    while ((got = facet_cli_read_line(&r, &err)) == 1) {
         int32_t in[FACET_FX_MAX_INPUTS];
-        const char *err;
         uint64_t out;
-        lineno++;
-        if (!strchr(line, '\n') && !feof(stdin)) {
-            fprintf(stderr, "facet eval: line %ld: longer than %d characters\n", lineno, LINE_MAX_ - 2);
-            return 2;
-        }
-        err = parse_line(line, k->n_inputs, in);
+        err = facet_cli_parse_q15(r.buf, k->n_inputs, in);
         if (err) {
-            fprintf(stderr, "facet eval: line %ld: %s (expected %d numbers:", lineno, err, k->n_inputs);
-            for (i = 0; i < k->n_inputs; i++)
-                fprintf(stderr, " %s", k->inputs[i]);
-            fprintf(stderr, ")\n");
-            return 2;
+            got = -1;
+            break;
         }
         out = k->fx(in);
         if (raw)
             printf("%llu\n", (unsigned long long)out);
         else
             print_fixed(stdout, out, k->out_frac);
+        if (ferror(stdout))
+            return facet_cli_finish("eval");
     }
-    if (ferror(stdin) || fflush(stdout) != 0) {
-        fprintf(stderr, "facet eval: I/O error\n");
-        return 1;
+    if (got == -2) {
+        fprintf(stderr, "facet eval: error reading the input\n");
+        return FACET_EXIT_IO;
     }
-    return 0;
+    if (got == -1) {
+        int rc = facet_cli_finish("eval");
+        fprintf(stderr, "facet eval: line %ld: %s (expected %d numbers:", r.lineno, err, k->n_inputs);
+        for (i = 0; i < k->n_inputs; i++)
+            fprintf(stderr, " %s", k->inputs[i]);
+        fprintf(stderr, ")\n");
+        return rc ? rc : FACET_EXIT_USAGE;
+    }
+    return facet_cli_finish("eval");
 }
 
 static uint64_t rng_next(uint64_t *s) /* splitmix64 */
@@ -187,64 +183,85 @@ static void put_vector(const facet_fx_kernel *k, const int32_t *in, int hex)
         printf("%llu\n", (unsigned long long)out);
 }
 
-static int parse_count(const char *s, unsigned long long *v)
+/* decimal digits only (no sign, blank, 0x or octal reading), value <= max */
+static int parse_count(const char *s, unsigned long long max, unsigned long long *v)
 {
-    char *end;
-    if (!*s || *s == '-')
+    unsigned long long x = 0;
+    if (!*s)
         return 0;
-    errno = 0;
-    *v = strtoull(s, &end, 0);
-    return !*end && errno == 0;
+    for (; *s; s++) {
+        unsigned d = (unsigned)(*s - '0');
+        if (*s < '0' || *s > '9' || x > (max - d) / 10)
+            return 0;
+        x = x * 10 + d;
+    }
+    *v = x;
+    return 1;
+}
+
+/* each distinct edge vector once: seen[] holds those written */
+#define MAX_EDGES (FACET_FX_MAX_INPUTS * 14 + 2)
+
+static void put_edge(const facet_fx_kernel *k, const int32_t *in, int hex, int32_t seen[][FACET_FX_MAX_INPUTS],
+                     int *n_seen)
+{
+    int i;
+    for (i = 0; i < *n_seen; i++)
+        if (!memcmp(seen[i], in, (size_t)k->n_inputs * sizeof *in))
+            return;
+    memcpy(seen[(*n_seen)++], in, (size_t)k->n_inputs * sizeof *in);
+    put_vector(k, in, hex);
 }
 
 int facet_cli_vectors(int argc, char **argv)
 {
     const facet_fx_kernel *k = NULL;
-    const char *format = NULL;
+    const char *format = "fx";
     unsigned long long count = 1000, seed_arg = 1, j;
     uint64_t seed;
     int i, hex = 0;
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             usage_vectors(stdout);
-            return 0;
+            return facet_cli_finish("vectors");
         } else if (!strcmp(argv[i], "--format") && i + 1 < argc) {
             format = argv[++i];
         } else if (!strcmp(argv[i], "--count") && i + 1 < argc) {
-            if (!parse_count(argv[++i], &count)) {
-                fprintf(stderr, "facet vectors: bad --count '%s'\n", argv[i]);
-                return 2;
+            if (!parse_count(argv[++i], COUNT_MAX, &count)) {
+                fprintf(stderr, "facet vectors: bad --count '%s' (decimal digits, at most %llu)\n", argv[i],
+                        COUNT_MAX);
+                return FACET_EXIT_USAGE;
             }
         } else if (!strcmp(argv[i], "--seed") && i + 1 < argc) {
-            if (!parse_count(argv[++i], &seed_arg)) {
-                fprintf(stderr, "facet vectors: bad --seed '%s'\n", argv[i]);
-                return 2;
+            if (!parse_count(argv[++i], ~0ull, &seed_arg)) {
+                fprintf(stderr, "facet vectors: bad --seed '%s' (decimal digits, at most 2^64 - 1)\n", argv[i]);
+                return FACET_EXIT_USAGE;
             }
         } else if (!strcmp(argv[i], "--hex")) {
             hex = 1;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
             fprintf(stderr, "facet vectors: unknown or incomplete option '%s'\n", argv[i]);
             usage_vectors(stderr);
-            return 2;
+            return FACET_EXIT_USAGE;
         } else if (!k) {
             k = facet_fx_kernel_find(argv[i]);
             if (!k) {
-                fprintf(stderr, "facet vectors: unknown fx kernel '%s' (see 'facet list')\n", argv[i]);
-                return 2;
+                unknown_fx_kernel("vectors", argv[i]);
+                return FACET_EXIT_USAGE;
             }
         } else {
             fprintf(stderr, "facet vectors: unexpected argument '%s'\n", argv[i]);
-            return 2;
+            return FACET_EXIT_USAGE;
         }
     }
     if (!k) {
         fprintf(stderr, "facet vectors: missing KERNEL\n");
         usage_vectors(stderr);
-        return 2;
+        return FACET_EXIT_USAGE;
     }
-    if (!format || strcmp(format, "fx")) {
-        fprintf(stderr, "facet vectors: --format fx is required (the only vector format)\n");
-        return 2;
+    if (strcmp(format, "fx")) {
+        fprintf(stderr, "facet vectors: unknown format '%s' (fx is the only vector format)\n", format);
+        return FACET_EXIT_USAGE;
     }
     seed = seed_arg;
     printf("%s %s: inputs", hex ? "//" : "#", k->name);
@@ -256,7 +273,8 @@ int facet_cli_vectors(int argc, char **argv)
         /* edges: each input in turn at its special values, the others mid-domain */
         const int32_t extra[] = { INT32_MIN, -1, 0, 1, 32767, 32768, 32769, INT32_MAX };
         int32_t mid[FACET_FX_MAX_INPUTS], in[FACET_FX_MAX_INPUTS];
-        int e;
+        int32_t seen[MAX_EDGES][FACET_FX_MAX_INPUTS];
+        int e, n_seen = 0;
         for (i = 0; i < k->n_inputs; i++)
             mid[i] = k->lo[i] + (k->hi[i] - k->lo[i]) / 2;
         for (i = 0; i < k->n_inputs; i++) {
@@ -264,13 +282,13 @@ int facet_cli_vectors(int argc, char **argv)
             for (e = 0; e < (int)(sizeof own / sizeof own[0] + sizeof extra / sizeof extra[0]); e++) {
                 memcpy(in, mid, sizeof in);
                 in[i] = e < 6 ? own[e] : extra[e - 6];
-                put_vector(k, in, hex);
+                put_edge(k, in, hex, seen, &n_seen);
             }
         }
         for (e = 0; e < 2; e++) { /* all inputs at the low, then the high end */
             for (i = 0; i < k->n_inputs; i++)
                 in[i] = e ? k->hi[i] : k->lo[i];
-            put_vector(k, in, hex);
+            put_edge(k, in, hex, seen, &n_seen);
         }
     }
     for (j = 0; j < count; j++) {
@@ -278,10 +296,8 @@ int facet_cli_vectors(int argc, char **argv)
         for (i = 0; i < k->n_inputs; i++)
             in[i] = k->lo[i] + (int32_t)(rng_next(&seed) % (uint64_t)(k->hi[i] - k->lo[i] + 1));
         put_vector(k, in, hex);
+        if ((j & 1023) == 0 && ferror(stdout))
+            break; /* e.g. /dev/full: no point in going on */
     }
-    if (fflush(stdout) != 0) {
-        fprintf(stderr, "facet vectors: I/O error\n");
-        return 1;
-    }
-    return 0;
+    return facet_cli_finish("vectors");
 }

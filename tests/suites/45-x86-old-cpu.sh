@@ -1,7 +1,8 @@
 # The x86 build on an older CPU model under qemu-x86_64 (Nehalem: SSE4.2,
 # no AVX): the dispatcher must pick sse2, refuse avx2/avx512 with a clear
 # error, and nothing outside the AVX objects may execute an AVX instruction
-# (qemu would stop the test with SIGILL).  Skipped off x86 or without qemu.
+# (qemu would stop the test with SIGILL); the same for the bench's SIMD
+# loops and rasterizer paths.  Skipped off x86 or without qemu.
 . tests/suite_lib.sh
 case "$(${CC:-cc} -dumpmachine)" in
 x86_64*) ;;
@@ -22,11 +23,14 @@ if ! $MAKE -s -j"$JOBS" tests > build/old-cpu.build.log 2>&1; then
 fi
 ports=$($q build/facet eval --help | sed -n 's/^ports compiled in: //p')
 [ "$ports" = "avx512 (not on this CPU) avx2 (not on this CPU) sse2 scalar" ] && ok || bad "ports: $ports"
+# facet ports: the AVX ports listed as not running here, auto on sse2
+[ "$($q build/facet ports | awk '/ auto$/ { print $1 }')" = sse2 ] && ok || bad "ports: auto is not sse2: $($q build/facet ports)"
+[ "$($q build/facet ports | grep -c 'not on this CPU')" = 2 ] && ok || bad "ports: avx512/avx2 not marked: $($q build/facet ports)"
 echo "0.5 0.5" | $q build/facet eval ggx_d --port avx2 > /dev/null 2> build/old-cpu.err
 [ $? -eq 2 ] && grep -q "cannot run it" build/old-cpu.err && ok || bad "--port avx2: $(cat build/old-cpu.err)"
 out=$(echo "0.6 0.7 0.5 0.1 0.04 0.5" | $q build/facet eval brdf_hammon) && [ -n "$out" ] && ok || bad "eval on auto"
 # the test binaries: every check passes; the AVX ports are reported unsupported
-for t in test_f32_ports test_f32_accuracy test_fx_ports test_f32_bad_input test_sample_ports; do
+for t in test_f32_ports test_f32_accuracy test_fx_ports test_f32_bad_input test_bench test_sample_ports; do
     res=$(FACET_TEST_QUICK=1 $q build/tests/$t 2>&1)
     rc=$?
     summary=$(printf '%s\n' "$res" | tail -n 1)
@@ -35,4 +39,19 @@ for t in test_f32_ports test_f32_accuracy test_fx_ports test_f32_bad_input test_
 done
 res=$(FACET_TEST_QUICK=1 $q build/tests/test_f32_ports 2>&1)
 printf '%s' "$res" | grep -q "port avx2: compiled in, but this CPU cannot run it" && ok || bad "avx2 not reported unsupported"
+# the bench's SIMD loops and peers ask facet_port_supported(): no avx2 row,
+# no SIGILL (the shader peers are built for AVX2 / AVX-512 widths and skipped)
+out=$($q build/facet-bench bench ggx_d --quick --format f32 2>&1); rc=$?
+if [ $rc -eq 0 ] && printf '%s\n' "$out" | grep -qE '^ggx_d +f32 +textbook +peer' &&
+    ! printf '%s\n' "$out" | grep -qE '^ggx_d +f32 +shader_avx'; then ok; else
+    printf '%s\n' "$out" | tail -n 5; bad "facet-bench bench with peers under Nehalem (exit $rc)"; fi
+# a port (or a peer of a width) this CPU cannot run is refused with 2, as eval does
+$q build/facet-bench bench lambert --port avx2 --quick >/dev/null 2>build/old-cpu.err
+[ $? -eq 2 ] && grep -q "cannot run port 'avx2'" build/old-cpu.err && ok || bad "bench --port avx2: $(cat build/old-cpu.err)"
+$q build/facet-bench bench ggx_d --port shader_avx2_fm --quick >/dev/null 2>build/old-cpu.err
+[ $? -eq 2 ] && ok || bad "bench --port shader_avx2_fm: $(cat build/old-cpu.err)"
+out=$($q build/facet-bench bench lambert --quick --no-peers --format f32 2>&1); rc=$?
+if [ $rc -eq 0 ] && printf '%s\n' "$out" | grep -qE '^lambert +f32 +sse2 +inline' &&
+    ! printf '%s\n' "$out" | grep -qE '^lambert +f32 +avx'; then ok; else
+    printf '%s\n' "$out" | tail -n 5; bad "facet-bench bench under Nehalem (exit $rc)"; fi
 echo "old-cpu: $pass passed, $fail failed, 0 skipped"

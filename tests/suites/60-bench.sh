@@ -1,18 +1,48 @@
-# The bench machinery (bench/): `facet bench` runs and prints well-formed
-# JSON with the expected fields, rejects bad selections, and the report
-# driver builds.  The PNG encoder and rasterizer tests are build/tests/
-# test_bench, run by the compiler suites.  Timing figures are not judged.
+# The bench machinery (bench/, its own binary build/facet-bench):
+# `facet-bench bench` runs and prints well-formed JSON with the expected
+# fields and rejects bad selections; `facet-bench batch-symbols` locates
+# every port's batch functions (what bench/report/report.sh sizes); and the
+# library's `facet` command carries none of it (no bench or peer object,
+# so no -march=native code).  The PNG encoder and rasterizer tests are
+# build/tests/test_bench, run by the compiler suites.  Timing figures are
+# not judged.
 . tests/suite_lib.sh
 pass=0 fail=0
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAIL bench: $*"; }
-if ! $MAKE -s -j"$JOBS" BUILD=build tests build/facet-report >build/bench-suite.build.log 2>&1; then
+if ! $MAKE -s -j"$JOBS" BUILD=build tests build/facet-bench >build/bench-suite.build.log 2>&1; then
     cat build/bench-suite.build.log
     echo "ERROR bench: build failed (log: build/bench-suite.build.log)"
     exit 0
 fi
-out=$(build/facet bench ggx_d --json --quick 2>/dev/null); rc=$?
-[ $rc -eq 0 ] && ok || bad "facet bench ggx_d --json exited $rc"
+# build/facet links src/cli/*.o and libfacet.a only: no global symbol any
+# bench object defines (harness, peers, report, raster; main aside) is in it
+find build/bench -name '*.o' -exec nm -g --defined-only {} + 2>/dev/null |
+    awk 'NF == 3 && $3 != "main" { print $3 }' | sort -u > build/bench-suite.bench.syms
+nm --defined-only build/facet | awk '{ print $NF }' | sort -u > build/bench-suite.facet.syms
+[ -s build/bench-suite.bench.syms ] && ok || bad "no bench objects under build/bench"
+shared=$(comm -12 build/bench-suite.bench.syms build/bench-suite.facet.syms | tr '\n' ' ')
+[ -z "$shared" ] && ok || bad "build/facet carries bench symbols: $shared"
+n=$(nm build/facet | grep -ciE 'peer|bench'); [ "$n" -eq 0 ] && ok || bad "nm build/facet: $n peer/bench symbols"
+build/facet bench >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "facet still has a bench verb"
+build/facet --help | grep -q bench && bad "facet --help mentions bench" || ok
+# batch-symbols: one line per f32 tier, compiled-in port and kernel, each at a function
+nports=$(build/facet eval --help | sed -n 's/^ports compiled in://p' | sed 's/ (not on this CPU)//g' | wc -w)
+nk=$(build/facet list | wc -l)
+build/facet-bench batch-symbols > build/bench-suite.batch-symbols; rc=$?
+[ $rc -eq 0 ] && [ "$(wc -l < build/bench-suite.batch-symbols)" -eq $((2 * nports * nk)) ] && ok ||
+    bad "batch-symbols: exit $rc, $(wc -l < build/bench-suite.batch-symbols) lines, want 2 tiers x $nports ports x $nk kernels"
+syms=$(nm -S --defined-only build/facet-bench)
+anchor=$(printf '%s\n' "$syms" | awk '$NF == "facet_port_supported" { print $1; exit }')
+missing=0
+while read -r fmt port k off; do
+    addr=$(printf "%0${#anchor}x" $((0x$anchor + off)))
+    printf '%s\n' "$syms" | awk -v a="$addr" '$1 == a && NF == 4 && $3 ~ /^[tT]$/ { f = 1 } END { exit !f }' ||
+        missing=$((missing + 1))
+done < build/bench-suite.batch-symbols
+[ -n "$anchor" ] && [ $missing -eq 0 ] && ok || bad "batch-symbols: $missing offsets are not functions"
+out=$(build/facet-bench bench ggx_d --json --quick 2>/dev/null); rc=$?
+[ $rc -eq 0 ] && ok || bad "facet-bench bench ggx_d --json exited $rc"
 j=$(printf '%s' "$out" | tr -d '\n')
 for key in '"clock": {"source": "' '"unit": "' '"measured_core_cycles": ' '"results": \[' \
            '"kernel": "ggx_d", "format": "f32", "port": "scalar", "path": "batch"' \
@@ -32,9 +62,24 @@ fi
 n_bad=$(printf '%s' "$out" | grep -c '"within_bound": false')
 [ "$n_bad" -eq 0 ] && ok || bad "$n_bad ggx_d rows outside the bound"
 # text form and bad input
-build/facet bench lambert --quick --no-peers | grep -qE '^lambert +f32 +scalar +batch' && ok || bad "text table"
-build/facet bench nosuch >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "unknown kernel: want exit 2"
-build/facet bench ggx_d --port nosuch --quick >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "unknown port: want exit 2"
-build/facet bench ggx_d --format q15 >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "unknown format: want exit 2"
-build/facet bench --help | grep -q 'usage: facet bench' && ok || bad "--help"
+build/facet-bench bench lambert --quick --no-peers | grep -qE '^lambert +f32 +scalar +batch' && ok || bad "text table"
+build/facet-bench bench nosuch >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "unknown kernel: want exit 2"
+build/facet-bench bench ggx_d --port nosuch --quick >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "unknown port: want exit 2"
+build/facet-bench bench ggx_d --format q15 >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "unknown format: want exit 2"
+build/facet-bench bench --help | grep -q 'usage: facet-bench bench' && ok || bad "--help"
+# est_cycles_median is the median over ticks_per_cycle (it printed the
+# minimum: four shared number buffers for five numbers in one printf)
+if command -v python3 >/dev/null 2>&1; then
+    printf '%s' "$out" | python3 -c '
+import json, sys
+d = json.load(sys.stdin); t = d["clock"]["ticks_per_cycle"]
+stats = [r[k] for r in d["results"] for k in ("throughput", "latency") if k in r]
+bad = [s for s in stats if abs(s["est_cycles_median"] - s["median"] / t) > 2e-4 * s["median"] / t]
+sys.exit(1 if bad or not stats else 0)' && ok || bad "JSON est_cycles_median is not median / ticks_per_cycle"
+fi
+# exit codes: 1 when stdout cannot be written; 2 for a value past its cap
+build/facet-bench bench lambert --quick --no-peers >/dev/full 2>/dev/null; [ $? -eq 1 ] && ok || bad "stdout /dev/full: want exit 1"
+build/facet-bench bench lambert --epochs 1002 >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "--epochs 1002: want exit 2"
+build/facet-bench bench lambert --samples 65544 >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "--samples 65544: want exit 2"
+build/facet-bench bench lambert --samples " 8" >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "--samples ' 8': want exit 2"
 echo "bench: $pass passed, $fail failed, 0 skipped"

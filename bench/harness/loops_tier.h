@@ -1,0 +1,65 @@
+/* loops_tier.h - one tier's loops table, included by loops_body.h once per
+ * tier with LP_KT(name) (the kernel of that tier), LP_TNAME (the table
+ * token) and LP_TIER (its name string). */
+#include "facet.h"
+#include "loops.h"
+#include "src/kernel_list.h"
+
+#define LP_CAT_(a, b) a##b
+#define LP_CAT(a, b) LP_CAT_(a, b)
+
+/* input q at sample i, plain, or (the chain) the first one fed by y */
+#define LP_PLAIN_(q) LP_LOAD(in[q] + i)
+#define LP_FED_(q) LP_CAT(LP_FED_AT_, q)
+#define LP_FED_AT_0 LP_FEED(LP_LOAD(in[0] + i), y)
+#define LP_FED_AT_1 LP_PLAIN_(1)
+#define LP_FED_AT_2 LP_PLAIN_(2)
+#define LP_FED_AT_3 LP_PLAIN_(3)
+#define LP_FED_AT_4 LP_PLAIN_(4)
+#define LP_FED_AT_5 LP_PLAIN_(5)
+
+/* Names generated here from src/kernels.def: two loops per kernel. */
+#define FACET_KERNEL(name, NAME, n, ...)                                        \
+    static void LP_CAT(LP_TNAME, LP_CAT(_thr_, name))(float *out, const float *const *in, size_t n_) \
+    {                                                                           \
+        size_t i;                                                               \
+        for (i = 0; i < n_; i += LP_W)                                          \
+            LP_STORE(out + i, LP_KT(name)(FACET_EACH_INPUT(n, LP_PLAIN_)));      \
+    }                                                                           \
+    static void LP_CAT(LP_TNAME, LP_CAT(_chain_, name))(float *out, const float *const *in, size_t n_) \
+    {                                                                           \
+        size_t i;                                                               \
+        LP_V y = LP_ZERO;                                                       \
+        for (i = 0; i < n_; i += LP_W)                                          \
+            y = LP_KT(name)(FACET_EACH_INPUT(n, LP_FED_));                       \
+        LP_STORE(out, y);                                                       \
+    }
+#include "src/kernels.def"
+#undef FACET_KERNEL
+
+static void LP_CAT(LP_TNAME, _thr_identity)(float *out, const float *const *in, size_t n_)
+{
+    size_t i;
+    for (i = 0; i < n_; i += LP_W)
+        LP_STORE(out + i, LP_LOAD(in[0] + i));
+}
+
+static void LP_CAT(LP_TNAME, _chain_identity)(float *out, const float *const *in, size_t n_)
+{
+    size_t i;
+    LP_V y = LP_ZERO;
+    for (i = 0; i < n_; i += LP_W)
+        y = LP_FEED(LP_LOAD(in[0] + i), y);
+    LP_STORE(out, y);
+}
+
+static const bench_loop LP_CAT(lp_k_, LP_TNAME)[] = {
+#define FACET_KERNEL(name, NAME, n, ...) { LP_CAT(LP_TNAME, LP_CAT(_thr_, name)), LP_CAT(LP_TNAME, LP_CAT(_chain_, name)) },
+#include "src/kernels.def"
+#undef FACET_KERNEL
+    { LP_CAT(LP_TNAME, _thr_identity), LP_CAT(LP_TNAME, _chain_identity) },
+};
+
+const bench_loops LP_CAT(bench_loops_, LP_TNAME) = {
+    LP_PATH, LP_PORT, LP_W, LP_AVAIL, LP_CAT(lp_k_, LP_TNAME), LP_TIER,
+};
