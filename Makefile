@@ -30,7 +30,7 @@ CLI_SRC  := $(wildcard src/cli/*.c)
 CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_SRC := $(wildcard tests/test_*.c)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
-HEADERS  := $(wildcard include/*.h include/facet/*.h include/facet/detail/*.h) src/kernels.def
+HEADERS  := $(wildcard include/*.h include/facet/*.h include/facet/detail/*.h) src/kernels.def src/sample_kernels.def
 # The fixed-point kernels on their own (firmware): the kernels of both tiers,
 # their batch API on the scalar loop, the kernel table.  Compile with -Iinclude.
 FX_SOURCES := src/fx_core.c src/fx_kernels.c src/fx_fast.c src/fx_batch.c src/fx_table.c \

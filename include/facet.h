@@ -342,6 +342,289 @@ size_t facet_kernel_count(void);
 const facet_kernel *facet_kernel_at(size_t i);
 const facet_kernel *facet_kernel_find(const char *name); /* NULL if unknown */
 
+/* ---- GGX and GTR importance sampling ----------------------------------------
+ * Samplers of half vectors h (the microfacet normal) in the shading frame
+ * (N = +z) and their pdfs (per unit solid angle of h), f32 in both tiers,
+ * inline in every port header (facet_<sampler>_f32_<port>(V h[3], ...),
+ * facet_<pdf>_f32_<port>(...)), scalar and batch here.  Body:
+ * include/facet/detail/f32_sample_body.h, with every formula's derivation.
+ * No libm: sin/cos(2 pi u) by exact quadrant folding and two polynomials,
+ * 2^y and log2 by exponent bits and polynomials (errors stated there).
+ *
+ * Conventions for all samplers
+ *   - u1, u2 are uniform in [0, 1): clamped to [0, 1 - 2^-24], NaN and
+ *     -Inf to 0, +Inf to 1 - 2^-24.  u1 picks the polar angle (u1 = 0: the
+ *     law's pole), u2 the azimuth phi = 2 pi u2.
+ *   - alpha, alpha_x, alpha_y: as the kernels, clamped to
+ *     [FACET_ALPHA_MIN, 1] (NaN to FACET_ALPHA_MIN).
+ *   - Every sampled h is a unit vector (||h| - 1| <= 2^-22 in both tiers:
+ *     the final normalization uses the precise rsqrt in f32_fast too) with
+ *     h.z > 0, for every input including NaN and Inf (tests/test_sample_ports.c).
+ *   - Error of a sampled vector: the Euclidean distance from the oracle's
+ *     vector at the same float inputs (facet/oracle.h; about the angle in
+ *     radians) divided by max(1, K / 16), where K is the oracle map's own
+ *     sensitivity: the sum over inputs of |h(x + d_i) - h(x)| / 2^-24 with
+ *     d_i = 2^-24 for u1, u2 and 2^-24 |x_i| for the others.  That is the
+ *     plain distance wherever one input ulp moves h by less than 16 ulps
+ *     (all of the D samplers but the last ulps of u1 at small alpha), and
+ *     relative to the map's conditioning where it is not (e.g. the VNDF map
+ *     near the cap rim).  pdfs: relative error vs the oracle, as the
+ *     kernels; ggx_pdf_vndf_aniso forms v.h itself, so its error is
+ *     relative to that dot product's conditioning sum |v_i h_i| / |v.h|.
+ *     Bounds: maximum over tests/test_sample_accuracy.c's sweep (200 k
+ *     samples per sampler aimed at the ends of u, grazing and normal views,
+ *     alpha log-uniform) on every port, in the fast tier also with
+ *     estimates at the architectural bound; FACET_ERR_<SAMPLER>_F32[_FAST].
+ *   - The sampled distributions are checked by chi-square goodness of fit
+ *     against the pdfs (tests/test_sample_chi2.c: 10^6 samples, 2-D
+ *     histograms in (theta, phi), alpha 0.05 .. 1, views to 89.9 degrees,
+ *     p > 0.01 each; moments for alpha down to 0.002), and the VNDF
+ *     estimator by a white furnace (tests/test_sample_furnace.c).
+ *   - Cost: operations as the kernels' (tests/test_sample_prims.c counts
+ *     them; the exponent-bit ops exp2i, getexp, getmant count 1).
+ *
+ * ggx_sample_d(h, u1, u2, alpha): GGX D importance sampling,
+ *   h = normalize(alpha sqrt(u1) cos phi, alpha sqrt(u1) sin phi, sqrt(1 - u1)),
+ *   i.e. tan^2 theta_h = alpha^2 u1 / (1 - u1), cos^2 theta_h =
+ *   (1 - u1) / (1 + (alpha^2 - 1) u1).  pdf: ggx_pdf_d.
+ *   Error <= 2^-22 (f32; measured 2^-22.52, sse2), 2^-13.5 (fast; 2^-14.01, avx512).
+ *   Cost: 46 ops (3 rsqrt, 0 rcp).
+ * ggx_pdf_d(noh, alpha) = D(h) N.H, D computed by ggx_d's code: the result
+ *   is fl(ggx_d(noh, alpha) * noh) to the bit (noh clamped to [0, 1]).
+ *   Error <= 2^-20 (f32; measured 2^-20.86, every port), 2^-12.5 (fast; 2^-13.01, avx512).
+ *   Cost: 15 ops (0 rsqrt, 1 rcp).
+ * ggx_sample_d_aniso(h, u1, u2, alpha_x, alpha_y): the same with
+ *   (alpha_x, alpha_y) on the x and y components (the stretched slope law);
+ *   ggx_sample_d(.., alpha) = ggx_sample_d_aniso(.., alpha, alpha).
+ *   Error <= 2^-21.5 (f32; measured 2^-22.23, sse2), 2^-13.5 (fast; 2^-14.01, avx512).
+ *   Cost: 48 ops (3 rsqrt, 0 rcp).
+ * ggx_pdf_d_aniso(hx, hy, hz, alpha_x, alpha_y) = D(h) h.z = h.z / (pi ax ay k^2),
+ *   k = (hx/ax)^2 + (hy/ay)^2 + hz^2 (h unit; hx, hy clamped to [-1, 1],
+ *   hz to [0, 1], k floored at 1/2).
+ *   Error <= 2^-20 (f32; measured 2^-20.76, sse2), 2^-13.5 (fast; 2^-14.00, avx512).
+ *   Cost: 27 ops (0 rsqrt, 1 rcp).
+ *
+ * ggx_sample_vndf(h, vx, vy, vz, u1, u2, alpha): visible-normal sampling
+ *   for the view v (Heitz 2018, in the spherical-cap form: Vh =
+ *   normalize(alpha vx, alpha vy, vz), c uniform on the unit sphere with
+ *   c.z > -Vh.z (c.z = (1 - u1)(1 + Vh.z) - Vh.z, azimuth phi measured from
+ *   Vh's), h = normalize(alpha (Vh + c).x, alpha (Vh + c).y, (Vh + c).z);
+ *   the body shows it has Heitz's law, with 4 rsqrt and 2 rcp instead of 6
+ *   rsqrt, and no cancellation where Vh + c is short).
+ *   v: only its direction is used; components clamped to [-1, 1] (NaN
+ *   -> -1); v below the horizon (vz < 0) is sampled as vz = 0, the grazing
+ *   view at its azimuth (the caller's pdf must then use N.V = 0); a
+ *   (stretched) v shorter than 2^-50 acts as (0, 0, 1).
+ *   Error <= 2^-21.5 (f32; measured 2^-21.97, sse2), 2^-12 (fast; 2^-12.76, avx512).
+ *   Cost: 102 ops (4 rsqrt, 2 rcp).
+ * ggx_sample_vndf_aniso(h, vx, vy, vz, u1, u2, alpha_x, alpha_y): the same
+ *   with (alpha_x, alpha_y).
+ *   Error <= 2^-21 (f32; measured 2^-21.39, sse2), 2^-12 (fast; 2^-12.43, avx512).
+ *   Cost: 104 ops (4 rsqrt, 2 rcp).
+ * ggx_pdf_vndf(nov, noh, voh, alpha) = G1(v) max(0, V.H) D(h) / N.V
+ *   = 2 max(0, V.H) D / (N.V + sqrt(alpha^2 + (1 - alpha^2) N.V^2)),
+ *   with smith_g1's and ggx_d's own terms; finite at N.V = 0 (2 V.H D /
+ *   alpha).  nov, voh clamped to [0, 1], noh as ggx_d.
+ *   Error <= 2^-20 (f32; measured 2^-20.60, every port), 2^-12 (fast; 2^-12.43, avx512).
+ *   Cost: 29 ops (1 rsqrt, 2 rcp).
+ * ggx_pdf_vndf_aniso(vx, vy, vz, hx, hy, hz, alpha_x, alpha_y): the same,
+ *   anisotropic: 2 max(0, v.h) D(h) / (vz + sqrt(ax^2 vx^2 + ay^2 vy^2 + vz^2))
+ *   (v, h unit; clamped as the samplers; the denominator floored at 2^-20).
+ *   Error <= 2^-20 (f32; measured 2^-20.74, sse2), 2^-12.5 (fast; 2^-13.01, avx512).
+ *   Cost: 47 ops (1 rsqrt, 1 rcp).
+ * reflect(l, vx, vy, vz, hx, hy, hz): l = 2 (v.h) h - v (inputs clamped
+ *   to [-1, 1]); the reflected direction of a sampled h.
+ *   Error <= 2^-21.5 (both tiers: no rcp or rsqrt; measured 2^-21.88, sse2).
+ *   Cost: 22 ops.
+ * ggx_pdf_vndf_reflect(nov, noh, voh, alpha): the pdf of that l,
+ *   ggx_pdf_vndf / (4 V.H) = D G1(v) / (4 N.V); 0 where V.H <= 0.  The
+ *   estimator f N.L / pdf of the GGX specular term is then G2 / G1(v).
+ *   Error <= 2^-20 (f32; measured 2^-20.65, sse2), 2^-12 (fast; 2^-12.43, avx512).
+ *   Cost: 28 ops (1 rsqrt, 2 rcp).
+ *
+ * gtr_sample_d(h, u1, u2, alpha, gamma): GTR D (prop. to
+ *   1 / (1 + (alpha^2 - 1) cos^2 theta)^gamma) sampling where the inverse CDF
+ *   has a closed form: gamma < 1.5 samples gamma = 1 (GTR1, "Berry"),
+ *   cos^2 theta = (1 - alpha^(2 (1 - u1))) / (1 - alpha^2) (1 - u1 at
+ *   alpha = 1), evaluated without cancellation through (2^y - 1) / y;
+ *   otherwise (NaN too) gamma = 2, i.e. ggx_sample_d to the bit.
+ *   Error <= 2^-21 (f32; measured 2^-21.59, scalar), 2^-12.5 (fast; 2^-13.29, avx512).
+ *   Cost: 136 ops (5 rsqrt, 3 rcp).
+ * gtr_pdf_d(noh, alpha, gamma) = D_gtr(h) N.H, D_GTR1 = (alpha^2 - 1) /
+ *   (pi ln(alpha^2) (1 + (alpha^2 - 1) N.H^2)) (1/pi at alpha = 1);
+ *   gamma as gtr_sample_d (GTR2: ggx_pdf_d).
+ *   Error <= 2^-20 (f32; measured 2^-20.80, every port), 2^-12 (fast; 2^-12.80, avx512).
+ *   Cost: 74 ops (0 rsqrt, 4 rcp).
+ * sincos_2pi(sc, u): sc[0] = sin(2 pi u), sc[1] = cos(2 pi u), u as u1;
+ *   the samplers' azimuth, exposed for tests and tools.  The sine keeps
+ *   2^-21 relative accuracy near u = 0; sin^2 + cos^2 = 1 within 2^-22.
+ *   Error <= 2^-23 (both tiers; measured 2^-23.31, sse2, on every 5th
+ *   multiple of 2^-24).
+ *   Cost: 27 ops.
+ *
+ * Batch: SoA outputs first, then the inputs in the order above; any n, no
+ * alignment requirement, outputs may alias inputs; runs on the port the
+ * kernels run on (facet_set_port, FACET_PORT). */
+#define FACET_ERR_GGX_SAMPLE_D_F32               2.384e-07 /* 2^-22, distance */
+#define FACET_ERR_GGX_PDF_D_F32                  9.537e-07 /* 2^-20 */
+#define FACET_ERR_GGX_SAMPLE_VNDF_F32            3.372e-07 /* 2^-21.5, distance */
+#define FACET_ERR_GGX_PDF_VNDF_F32               9.537e-07 /* 2^-20 */
+#define FACET_ERR_GGX_PDF_VNDF_REFLECT_F32       9.537e-07 /* 2^-20 */
+#define FACET_ERR_REFLECT_F32                    3.372e-07 /* 2^-21.5, distance */
+#define FACET_ERR_GGX_SAMPLE_D_ANISO_F32         3.372e-07 /* 2^-21.5, distance */
+#define FACET_ERR_GGX_PDF_D_ANISO_F32            9.537e-07 /* 2^-20 */
+#define FACET_ERR_GGX_SAMPLE_VNDF_ANISO_F32      4.768e-07 /* 2^-21, distance */
+#define FACET_ERR_GGX_PDF_VNDF_ANISO_F32         9.537e-07 /* 2^-20 */
+#define FACET_ERR_GTR_SAMPLE_D_F32               4.768e-07 /* 2^-21, distance */
+#define FACET_ERR_GTR_PDF_D_F32                  9.537e-07 /* 2^-20 */
+#define FACET_ERR_SINCOS_2PI_F32                 1.192e-07 /* 2^-23, distance */
+
+#define FACET_ERR_GGX_SAMPLE_D_F32_FAST          8.632e-05 /* 2^-13.5, distance */
+#define FACET_ERR_GGX_PDF_D_F32_FAST             1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_GGX_SAMPLE_VNDF_F32_FAST       2.441e-04 /* 2^-12, distance */
+#define FACET_ERR_GGX_PDF_VNDF_F32_FAST          2.441e-04 /* 2^-12 */
+#define FACET_ERR_GGX_PDF_VNDF_REFLECT_F32_FAST  2.441e-04 /* 2^-12 */
+#define FACET_ERR_REFLECT_F32_FAST               3.372e-07 /* 2^-21.5, distance */
+#define FACET_ERR_GGX_SAMPLE_D_ANISO_F32_FAST    8.632e-05 /* 2^-13.5, distance */
+#define FACET_ERR_GGX_PDF_D_ANISO_F32_FAST       8.632e-05 /* 2^-13.5 */
+#define FACET_ERR_GGX_SAMPLE_VNDF_ANISO_F32_FAST 2.441e-04 /* 2^-12, distance */
+#define FACET_ERR_GGX_PDF_VNDF_ANISO_F32_FAST    1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_GTR_SAMPLE_D_F32_FAST          1.726e-04 /* 2^-12.5, distance */
+#define FACET_ERR_GTR_PDF_D_F32_FAST             2.441e-04 /* 2^-12 */
+#define FACET_ERR_SINCOS_2PI_F32_FAST            1.192e-07 /* 2^-23, distance */
+
+void facet_ggx_sample_d_f32(float h[3], float u1, float u2, float alpha);
+float facet_ggx_pdf_d_f32(float noh, float alpha);
+void facet_ggx_sample_vndf_f32(float h[3], float vx, float vy, float vz, float u1, float u2,
+                               float alpha);
+float facet_ggx_pdf_vndf_f32(float nov, float noh, float voh, float alpha);
+float facet_ggx_pdf_vndf_reflect_f32(float nov, float noh, float voh, float alpha);
+void facet_reflect_f32(float l[3], float vx, float vy, float vz, float hx, float hy, float hz);
+void facet_ggx_sample_d_aniso_f32(float h[3], float u1, float u2, float alpha_x, float alpha_y);
+float facet_ggx_pdf_d_aniso_f32(float hx, float hy, float hz, float alpha_x, float alpha_y);
+void facet_ggx_sample_vndf_aniso_f32(float h[3], float vx, float vy, float vz, float u1, float u2,
+                                     float alpha_x, float alpha_y);
+float facet_ggx_pdf_vndf_aniso_f32(float vx, float vy, float vz, float hx, float hy, float hz,
+                                   float alpha_x, float alpha_y);
+void facet_gtr_sample_d_f32(float h[3], float u1, float u2, float alpha, float gamma);
+float facet_gtr_pdf_d_f32(float noh, float alpha, float gamma);
+void facet_sincos_2pi_f32(float sc[2], float u);
+
+void facet_ggx_sample_d_f32_fast(float h[3], float u1, float u2, float alpha);
+float facet_ggx_pdf_d_f32_fast(float noh, float alpha);
+void facet_ggx_sample_vndf_f32_fast(float h[3], float vx, float vy, float vz, float u1, float u2,
+                                    float alpha);
+float facet_ggx_pdf_vndf_f32_fast(float nov, float noh, float voh, float alpha);
+float facet_ggx_pdf_vndf_reflect_f32_fast(float nov, float noh, float voh, float alpha);
+void facet_reflect_f32_fast(float l[3], float vx, float vy, float vz, float hx, float hy, float hz);
+void facet_ggx_sample_d_aniso_f32_fast(float h[3], float u1, float u2, float alpha_x, float alpha_y);
+float facet_ggx_pdf_d_aniso_f32_fast(float hx, float hy, float hz, float alpha_x, float alpha_y);
+void facet_ggx_sample_vndf_aniso_f32_fast(float h[3], float vx, float vy, float vz, float u1,
+                                          float u2, float alpha_x, float alpha_y);
+float facet_ggx_pdf_vndf_aniso_f32_fast(float vx, float vy, float vz, float hx, float hy, float hz,
+                                        float alpha_x, float alpha_y);
+void facet_gtr_sample_d_f32_fast(float h[3], float u1, float u2, float alpha, float gamma);
+float facet_gtr_pdf_d_f32_fast(float noh, float alpha, float gamma);
+void facet_sincos_2pi_f32_fast(float sc[2], float u);
+
+/* batch: structure-of-arrays outputs first (hx, hy, hz / lx, ly, lz / out /
+ * sin, cos), then the inputs; the _f32_fast_batch twins take the same. */
+void facet_ggx_sample_d_f32_batch(float *hx, float *hy, float *hz, const float *u1,
+                                  const float *u2, const float *alpha, size_t n);
+void facet_ggx_pdf_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_ggx_sample_vndf_f32_batch(float *hx, float *hy, float *hz, const float *vx,
+                                     const float *vy, const float *vz, const float *u1,
+                                     const float *u2, const float *alpha, size_t n);
+void facet_ggx_pdf_vndf_f32_batch(float *out, const float *nov, const float *noh,
+                                  const float *voh, const float *alpha, size_t n);
+void facet_ggx_pdf_vndf_reflect_f32_batch(float *out, const float *nov, const float *noh,
+                                          const float *voh, const float *alpha, size_t n);
+void facet_reflect_f32_batch(float *lx, float *ly, float *lz, const float *vx, const float *vy,
+                             const float *vz, const float *hx, const float *hy, const float *hz,
+                             size_t n);
+void facet_ggx_sample_d_aniso_f32_batch(float *hx, float *hy, float *hz, const float *u1,
+                                        const float *u2, const float *alpha_x,
+                                        const float *alpha_y, size_t n);
+void facet_ggx_pdf_d_aniso_f32_batch(float *out, const float *hx, const float *hy,
+                                     const float *hz, const float *alpha_x,
+                                     const float *alpha_y, size_t n);
+void facet_ggx_sample_vndf_aniso_f32_batch(float *hx, float *hy, float *hz, const float *vx,
+                                           const float *vy, const float *vz, const float *u1,
+                                           const float *u2, const float *alpha_x,
+                                           const float *alpha_y, size_t n);
+void facet_ggx_pdf_vndf_aniso_f32_batch(float *out, const float *vx, const float *vy,
+                                        const float *vz, const float *hx, const float *hy,
+                                        const float *hz, const float *alpha_x,
+                                        const float *alpha_y, size_t n);
+void facet_gtr_sample_d_f32_batch(float *hx, float *hy, float *hz, const float *u1,
+                                  const float *u2, const float *alpha, const float *gamma,
+                                  size_t n);
+void facet_gtr_pdf_d_f32_batch(float *out, const float *noh, const float *alpha,
+                               const float *gamma, size_t n);
+void facet_sincos_2pi_f32_batch(float *s, float *c, const float *u, size_t n);
+
+void facet_ggx_sample_d_f32_fast_batch(float *hx, float *hy, float *hz, const float *u1,
+                                       const float *u2, const float *alpha, size_t n);
+void facet_ggx_pdf_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_ggx_sample_vndf_f32_fast_batch(float *hx, float *hy, float *hz, const float *vx,
+                                          const float *vy, const float *vz, const float *u1,
+                                          const float *u2, const float *alpha, size_t n);
+void facet_ggx_pdf_vndf_f32_fast_batch(float *out, const float *nov, const float *noh,
+                                       const float *voh, const float *alpha, size_t n);
+void facet_ggx_pdf_vndf_reflect_f32_fast_batch(float *out, const float *nov, const float *noh,
+                                               const float *voh, const float *alpha, size_t n);
+void facet_reflect_f32_fast_batch(float *lx, float *ly, float *lz, const float *vx,
+                                  const float *vy, const float *vz, const float *hx,
+                                  const float *hy, const float *hz, size_t n);
+void facet_ggx_sample_d_aniso_f32_fast_batch(float *hx, float *hy, float *hz, const float *u1,
+                                             const float *u2, const float *alpha_x,
+                                             const float *alpha_y, size_t n);
+void facet_ggx_pdf_d_aniso_f32_fast_batch(float *out, const float *hx, const float *hy,
+                                          const float *hz, const float *alpha_x,
+                                          const float *alpha_y, size_t n);
+void facet_ggx_sample_vndf_aniso_f32_fast_batch(float *hx, float *hy, float *hz,
+                                                const float *vx, const float *vy,
+                                                const float *vz, const float *u1,
+                                                const float *u2, const float *alpha_x,
+                                                const float *alpha_y, size_t n);
+void facet_ggx_pdf_vndf_aniso_f32_fast_batch(float *out, const float *vx, const float *vy,
+                                             const float *vz, const float *hx, const float *hy,
+                                             const float *hz, const float *alpha_x,
+                                             const float *alpha_y, size_t n);
+void facet_gtr_sample_d_f32_fast_batch(float *hx, float *hy, float *hz, const float *u1,
+                                       const float *u2, const float *alpha, const float *gamma,
+                                       size_t n);
+void facet_gtr_pdf_d_f32_fast_batch(float *out, const float *noh, const float *alpha,
+                                    const float *gamma, size_t n);
+void facet_sincos_2pi_f32_fast_batch(float *s, float *c, const float *u, size_t n);
+
+/* The sampler table, for tools that drive every sampler the same way (the
+ * facet command, the tests, the bench): one entry per sampler above. */
+#define FACET_SAMPLER_MAX_INPUTS 8
+#define FACET_SAMPLER_MAX_OUTPUTS 3
+
+typedef struct facet_sampler {
+    const char *name;                                  /* "ggx_sample_vndf" */
+    int n_inputs;
+    const char *inputs[FACET_SAMPLER_MAX_INPUTS];      /* "vx", ..., "alpha" */
+    int n_outputs;
+    const char *outputs[FACET_SAMPLER_MAX_OUTPUTS];    /* "hx", "hy", "hz" */
+    int err_abs;      /* 1: bound is the Euclidean distance of the outputs; 0: relative */
+    /* one sample: out[0 .. n_outputs - 1] from in[0 .. n_inputs - 1] (scalar) */
+    void (*f32)(float *out, const float *in);
+    void (*oracle)(double *out, const double *in);
+    /* batch on the active port: out[o][i] from in[0][i], in[1][i], ... */
+    void (*f32_batch)(float *const *out, const float *const *in, size_t n);
+    double err_f32;
+    void (*f32_fast)(float *out, const float *in);
+    void (*f32_fast_batch)(float *const *out, const float *const *in, size_t n);
+    double err_f32_fast;
+} facet_sampler;
+
+size_t facet_sampler_count(void);
+const facet_sampler *facet_sampler_at(size_t i);
+const facet_sampler *facet_sampler_find(const char *name); /* NULL if unknown */
+
 #ifdef __cplusplus
 }
 #endif

@@ -12,3 +12,12 @@
 #define BATCH_TIER f32_fast
 #include "batch_body.h"
 #undef BATCH_TIER
+
+/* the samplers' batch functions and table (src/sample_batch_body.h) */
+#define BATCH_V float
+#define BATCH_TIER f32
+#include "sample_batch_body.h"
+#undef BATCH_TIER
+#define BATCH_TIER f32_fast
+#include "sample_batch_body.h"
+#undef BATCH_TIER

@@ -318,3 +318,159 @@ double facet_oracle_lambert(double albedo)
 {
     return unitd(albedo) / PI;
 }
+
+/* ---- samplers (facet.h, "GGX and GTR importance sampling") ----------------
+ * From the definitions: the inverse CDFs in their tan / slope form with
+ * libm's atan-free sqrt, cos, sin, expm1, log; the VNDF in its spherical-cap
+ * definition (Vh, the cap height z, c, H = Vh + c), with 1 - z^2 as is (in
+ * double its cancellation costs ~1e-16 / |H|, far below the f32 bounds).
+ * Domain handling as the contracts. */
+#define U_MAX_ 0.99999994039535522 /* 1 - 2^-24 */
+static double ud(double u) { return clampd(u, 0.0, U_MAX_); }
+static double sgnd(double x) { return clampd(x, -1.0, 1.0); }
+
+static void normalize3(double h[3], double x, double y, double z)
+{
+    double n = sqrt(x * x + y * y + z * z);
+    h[0] = x / n;
+    h[1] = y / n;
+    h[2] = z / n;
+}
+
+void facet_oracle_sincos_2pi(double sc[2], double u)
+{
+    double p = 2.0 * PI * ud(u);
+    sc[0] = sin(p);
+    sc[1] = cos(p);
+}
+
+/* slope radius r = tan theta of the unit-width law: r^2 = u1 / (1 - u1) */
+void facet_oracle_ggx_sample_d_aniso(double h[3], double u1, double u2, double alpha_x,
+                                     double alpha_y)
+{
+    double u = ud(u1), r = sqrt(u / (1.0 - u)), p = 2.0 * PI * ud(u2);
+    normalize3(h, alphad(alpha_x) * r * cos(p), alphad(alpha_y) * r * sin(p), 1.0);
+}
+
+void facet_oracle_ggx_sample_d(double h[3], double u1, double u2, double alpha)
+{
+    facet_oracle_ggx_sample_d_aniso(h, u1, u2, alpha, alpha);
+}
+
+double facet_oracle_ggx_pdf_d(double noh, double alpha)
+{
+    return facet_oracle_ggx_d(noh, alpha) * unitd(noh);
+}
+
+/* D(h) h.z = h.z / (pi ax ay k^2), k = (hx/ax)^2 + (hy/ay)^2 + hz^2 (unit h:
+ * 1 / (ax ay cos^4 (1 + tan^2 (cos^2 phi / ax^2 + sin^2 phi / ay^2))^2)) */
+double facet_oracle_ggx_pdf_d_aniso(double hx, double hy, double hz, double alpha_x,
+                                    double alpha_y)
+{
+    double ax = alphad(alpha_x), ay = alphad(alpha_y);
+    double x = sgnd(hx) / ax, y = sgnd(hy) / ay, z = unitd(hz);
+    double k = fmax(x * x + y * y + z * z, 0.5);
+    return z / (PI * ax * ay * k * k);
+}
+
+void facet_oracle_ggx_sample_vndf_aniso(double h[3], double vx, double vy, double vz, double u1,
+                                        double u2, double alpha_x, double alpha_y)
+{
+    double ax = alphad(alpha_x), ay = alphad(alpha_y);
+    double x = ax * sgnd(vx), y = ay * sgnd(vy), z = unitd(vz);
+    double V[3], u = ud(u1), p = 2.0 * PI * ud(u2), cz, s, t, e1x = 1.0, e1y = 0.0, c1, c2;
+    if (x * x + y * y + z * z < 0x1p-100) {
+        x = y = 0.0;
+        z = 1.0;
+    }
+    normalize3(V, x, y, z);
+    t = sqrt(x * x + y * y); /* the azimuth of Vh, x at normal view */
+    if (x * x + y * y >= 0x1p-100) {
+        e1x = x / t;
+        e1y = y / t;
+    }
+    cz = (1.0 - u) * (1.0 + V[2]) - V[2]; /* uniform in (-Vh.z, 1] */
+    s = sqrt(fmax(0.0, 1.0 - cz * cz));
+    c1 = s * cos(p); /* c along e1 and e2 = z x e1 */
+    c2 = s * sin(p);
+    normalize3(h, ax * (V[0] + c1 * e1x - c2 * e1y), ay * (V[1] + c1 * e1y + c2 * e1x),
+               V[2] + cz);
+}
+
+void facet_oracle_ggx_sample_vndf(double h[3], double vx, double vy, double vz, double u1,
+                                  double u2, double alpha)
+{
+    facet_oracle_ggx_sample_vndf_aniso(h, vx, vy, vz, u1, u2, alpha, alpha);
+}
+
+/* G1(v) / N.V, 2 / alpha at N.V = 0 (the limit) */
+static double g1_over_nv(double nov, double alpha)
+{
+    double n = unitd(nov), a = alphad(alpha);
+    return n > 0.0 ? facet_oracle_smith_g1(n, a) / n : 2.0 / a;
+}
+
+double facet_oracle_ggx_pdf_vndf(double nov, double noh, double voh, double alpha)
+{
+    return g1_over_nv(nov, alpha) * unitd(voh) * facet_oracle_ggx_d(noh, alpha);
+}
+
+double facet_oracle_ggx_pdf_vndf_reflect(double nov, double noh, double voh, double alpha)
+{
+    if (!(voh > 0.0))
+        return 0.0;
+    return g1_over_nv(nov, alpha) * facet_oracle_ggx_d(noh, alpha) / 4.0;
+}
+
+double facet_oracle_ggx_pdf_vndf_aniso(double vx, double vy, double vz, double hx, double hy,
+                                       double hz, double alpha_x, double alpha_y)
+{
+    double ax = alphad(alpha_x), ay = alphad(alpha_y);
+    double x = sgnd(vx), y = sgnd(vy), z = unitd(vz);
+    double gx = sgnd(hx), gy = sgnd(hy), gz = unitd(hz);
+    double den = fmax(z + sqrt(ax * ax * x * x + ay * ay * y * y + z * z), 0x1p-20);
+    double vh = fmax(x * gx + y * gy + z * gz, 0.0);
+    /* D = pdf_d_aniso / h.z; with h.z = 0, D = 1 / (pi ax ay k^2) directly */
+    double x2 = gx / ax, y2 = gy / ay, k = fmax(x2 * x2 + y2 * y2 + gz * gz, 0.5);
+    return 2.0 * vh / (PI * ax * ay * k * k) / den;
+}
+
+void facet_oracle_reflect(double l[3], double vx, double vy, double vz, double hx, double hy,
+                          double hz)
+{
+    double v[3] = { sgnd(vx), sgnd(vy), sgnd(vz) }, h[3] = { sgnd(hx), sgnd(hy), sgnd(hz) };
+    double d = v[0] * h[0] + v[1] * h[1] + v[2] * h[2];
+    int i;
+    for (i = 0; i < 3; i++)
+        l[i] = 2.0 * d * h[i] - v[i];
+}
+
+/* GTR1: tan^2 theta = alpha^2 (alpha^(-2u) - 1) / (1 - alpha^(2 (1 - u)))
+ * (from cos^2 theta = (1 - alpha^(2 (1 - u))) / (1 - alpha^2)), with
+ * expm1; u / (1 - u) at alpha = 1. */
+void facet_oracle_gtr_sample_d(double h[3], double u1, double u2, double alpha, double gamma)
+{
+    double a = alphad(alpha), u = ud(u1), p = 2.0 * PI * ud(u2), t2, t;
+    if (!(gamma < 1.5)) {
+        facet_oracle_ggx_sample_d(h, u1, u2, alpha);
+        return;
+    }
+    if (a == 1.0) {
+        t2 = u / (1.0 - u);
+    } else {
+        double l = 2.0 * log(a);
+        t2 = a * a * expm1(-u * l) / -expm1((1.0 - u) * l);
+    }
+    t = sqrt(t2);
+    normalize3(h, t * cos(p), t * sin(p), 1.0);
+}
+
+double facet_oracle_gtr_pdf_d(double noh, double alpha, double gamma)
+{
+    double n = unitd(noh), a = alphad(alpha), a2 = a * a, k, d;
+    if (!(gamma < 1.5))
+        return facet_oracle_ggx_pdf_d(noh, alpha);
+    k = a == 1.0 ? 1.0 : (a2 - 1.0) / log(a2); /* (alpha^2 - 1) / ln alpha^2 */
+    d = 1.0 + (a2 - 1.0) * n * n;
+    return k / (PI * d) * n;
+}

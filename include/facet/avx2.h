@@ -101,3 +101,38 @@ FACET_INLINE __m256 facet_avx2_rsqrt_fast(__m256 x)
 #undef FACET_K
 
 #endif
+
+/* ---- sampling ops and the samplers (see facet/scalar.h) ------------------- */
+#ifndef FACET_AVX2_SAMPLE_H
+#define FACET_AVX2_SAMPLE_H
+
+FACET_INLINE __m256 facet_avx2_exp2i(__m256 k)
+{
+    __m256i e = _mm256_add_epi32(_mm256_cvttps_epi32(k), _mm256_set1_epi32(127));
+    return _mm256_castsi256_ps(_mm256_slli_epi32(e, 23));
+}
+FACET_INLINE __m256 facet_avx2_getexp(__m256 x)
+{
+    __m256i e = _mm256_srli_epi32(_mm256_castps_si256(x), 23);
+    return _mm256_cvtepi32_ps(_mm256_sub_epi32(e, _mm256_set1_epi32(127)));
+}
+FACET_INLINE __m256 facet_avx2_getmant(__m256 x)
+{
+    __m256i m = _mm256_and_si256(_mm256_castps_si256(x), _mm256_set1_epi32(0x007fffff));
+    return _mm256_castsi256_ps(_mm256_or_si256(m, _mm256_set1_epi32(0x3f800000)));
+}
+
+#define FACET_V __m256
+#define FACET_OP(op) facet_avx2_##op
+#define FACET_K(k) facet_##k##_f32_avx2
+#include "facet/detail/f32_sample_body.h"
+#undef FACET_K
+#define FACET_TIER_FAST 1
+#define FACET_K(k) facet_##k##_f32_fast_avx2
+#include "facet/detail/f32_sample_body.h"
+#undef FACET_TIER_FAST
+#undef FACET_V
+#undef FACET_OP
+#undef FACET_K
+
+#endif

@@ -83,3 +83,38 @@ FACET_INLINE __m512 facet_avx512_rsqrt_fast(__m512 x) { return facet_avx512_rsqr
 #undef FACET_K
 
 #endif
+
+/* ---- sampling ops and the samplers (see facet/scalar.h) ------------------- */
+#ifndef FACET_AVX512_SAMPLE_H
+#define FACET_AVX512_SAMPLE_H
+
+FACET_INLINE __m512 facet_avx512_exp2i(__m512 k)
+{
+    __m512i e = _mm512_add_epi32(_mm512_cvttps_epi32(k), _mm512_set1_epi32(127));
+    return _mm512_castsi512_ps(_mm512_slli_epi32(e, 23));
+}
+FACET_INLINE __m512 facet_avx512_getexp(__m512 x)
+{
+    __m512i e = _mm512_srli_epi32(_mm512_castps_si512(x), 23);
+    return _mm512_cvtepi32_ps(_mm512_sub_epi32(e, _mm512_set1_epi32(127)));
+}
+FACET_INLINE __m512 facet_avx512_getmant(__m512 x)
+{
+    __m512i m = _mm512_and_si512(_mm512_castps_si512(x), _mm512_set1_epi32(0x007fffff));
+    return _mm512_castsi512_ps(_mm512_or_si512(m, _mm512_set1_epi32(0x3f800000)));
+}
+
+#define FACET_V __m512
+#define FACET_OP(op) facet_avx512_##op
+#define FACET_K(k) facet_##k##_f32_avx512
+#include "facet/detail/f32_sample_body.h"
+#undef FACET_K
+#define FACET_TIER_FAST 1
+#define FACET_K(k) facet_##k##_f32_fast_avx512
+#include "facet/detail/f32_sample_body.h"
+#undef FACET_TIER_FAST
+#undef FACET_V
+#undef FACET_OP
+#undef FACET_K
+
+#endif

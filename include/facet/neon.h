@@ -92,3 +92,38 @@ FACET_INLINE float32x4_t facet_neon_rsqrt_fast(float32x4_t x)
 #undef FACET_K
 
 #endif
+
+/* ---- sampling ops and the samplers (see facet/scalar.h) ------------------- */
+#ifndef FACET_NEON_SAMPLE_H
+#define FACET_NEON_SAMPLE_H
+
+FACET_INLINE float32x4_t facet_neon_exp2i(float32x4_t k)
+{
+    int32x4_t e = vaddq_s32(vcvtq_s32_f32(k), vdupq_n_s32(127));
+    return vreinterpretq_f32_s32(vshlq_n_s32(e, 23));
+}
+FACET_INLINE float32x4_t facet_neon_getexp(float32x4_t x)
+{
+    int32x4_t e = vreinterpretq_s32_u32(vshrq_n_u32(vreinterpretq_u32_f32(x), 23));
+    return vcvtq_f32_s32(vsubq_s32(e, vdupq_n_s32(127)));
+}
+FACET_INLINE float32x4_t facet_neon_getmant(float32x4_t x)
+{
+    uint32x4_t m = vandq_u32(vreinterpretq_u32_f32(x), vdupq_n_u32(0x007fffffu));
+    return vreinterpretq_f32_u32(vorrq_u32(m, vdupq_n_u32(0x3f800000u)));
+}
+
+#define FACET_V float32x4_t
+#define FACET_OP(op) facet_neon_##op
+#define FACET_K(k) facet_##k##_f32_neon
+#include "facet/detail/f32_sample_body.h"
+#undef FACET_K
+#define FACET_TIER_FAST 1
+#define FACET_K(k) facet_##k##_f32_fast_neon
+#include "facet/detail/f32_sample_body.h"
+#undef FACET_TIER_FAST
+#undef FACET_V
+#undef FACET_OP
+#undef FACET_K
+
+#endif

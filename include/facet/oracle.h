@@ -67,6 +67,28 @@ double facet_oracle_brdf_hammon(double nol, double nov, double lov, double alpha
                                 double f0, double albedo);
 double facet_oracle_lambert(double albedo);
 
+/* samplers (facet.h, "GGX and GTR importance sampling"): the same inputs and
+ * outputs as facet_<sampler>_f32, in double, from the definitions */
+void facet_oracle_ggx_sample_d(double h[3], double u1, double u2, double alpha);
+double facet_oracle_ggx_pdf_d(double noh, double alpha);
+void facet_oracle_ggx_sample_vndf(double h[3], double vx, double vy, double vz, double u1,
+                                  double u2, double alpha);
+double facet_oracle_ggx_pdf_vndf(double nov, double noh, double voh, double alpha);
+double facet_oracle_ggx_pdf_vndf_reflect(double nov, double noh, double voh, double alpha);
+void facet_oracle_reflect(double l[3], double vx, double vy, double vz, double hx, double hy,
+                          double hz);
+void facet_oracle_ggx_sample_d_aniso(double h[3], double u1, double u2, double alpha_x,
+                                     double alpha_y);
+double facet_oracle_ggx_pdf_d_aniso(double hx, double hy, double hz, double alpha_x,
+                                    double alpha_y);
+void facet_oracle_ggx_sample_vndf_aniso(double h[3], double vx, double vy, double vz, double u1,
+                                        double u2, double alpha_x, double alpha_y);
+double facet_oracle_ggx_pdf_vndf_aniso(double vx, double vy, double vz, double hx, double hy,
+                                       double hz, double alpha_x, double alpha_y);
+void facet_oracle_gtr_sample_d(double h[3], double u1, double u2, double alpha, double gamma);
+double facet_oracle_gtr_pdf_d(double noh, double alpha, double gamma);
+void facet_oracle_sincos_2pi(double sc[2], double u);
+
 #ifdef __cplusplus
 }
 #endif

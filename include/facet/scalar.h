@@ -119,3 +119,47 @@ FACET_INLINE float facet_scalar_rsqrt_fast(float x) { return facet_scalar_rsqrt_
 #undef FACET_K
 
 #endif
+
+/* ---- sampling ops and the samplers ----------------------------------------
+ * Three integer/bit ops that the samplers' 2^y and log2 need (f32_sample_body.h),
+ * then the samplers of both tiers, facet_<sampler>_f32_scalar and
+ * facet_<sampler>_f32_fast_scalar.  Every port header has the same section. */
+#ifndef FACET_SCALAR_SAMPLE_H
+#define FACET_SCALAR_SAMPLE_H
+
+/* 2^k for an integral-valued k in [-126, 127]: the exponent field. */
+FACET_INLINE float facet_scalar_exp2i(float k)
+{
+    union { float f; uint32_t u; } b;
+    b.u = (uint32_t)((int32_t)k + 127) << 23;
+    return b.f;
+}
+/* floor(log2 x) and x / 2^floor(log2 x) in [1, 2), for positive normal x */
+FACET_INLINE float facet_scalar_getexp(float x)
+{
+    union { float f; uint32_t u; } b;
+    b.f = x;
+    return (float)((int32_t)(b.u >> 23) - 127);
+}
+FACET_INLINE float facet_scalar_getmant(float x)
+{
+    union { float f; uint32_t u; } b;
+    b.f = x;
+    b.u = (b.u & 0x007fffffu) | 0x3f800000u;
+    return b.f;
+}
+
+#define FACET_V float
+#define FACET_OP(op) facet_scalar_##op
+#define FACET_K(k) facet_##k##_f32_scalar
+#include "facet/detail/f32_sample_body.h"
+#undef FACET_K
+#define FACET_TIER_FAST 1
+#define FACET_K(k) facet_##k##_f32_fast_scalar
+#include "facet/detail/f32_sample_body.h"
+#undef FACET_TIER_FAST
+#undef FACET_V
+#undef FACET_OP
+#undef FACET_K
+
+#endif

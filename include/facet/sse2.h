@@ -76,3 +76,38 @@ FACET_INLINE __m128 facet_sse2_rsqrt_fast(__m128 x)
 #undef FACET_K
 
 #endif
+
+/* ---- sampling ops and the samplers (see facet/scalar.h) ------------------- */
+#ifndef FACET_SSE2_SAMPLE_H
+#define FACET_SSE2_SAMPLE_H
+
+FACET_INLINE __m128 facet_sse2_exp2i(__m128 k)
+{
+    __m128i e = _mm_add_epi32(_mm_cvttps_epi32(k), _mm_set1_epi32(127));
+    return _mm_castsi128_ps(_mm_slli_epi32(e, 23));
+}
+FACET_INLINE __m128 facet_sse2_getexp(__m128 x)
+{
+    __m128i e = _mm_srli_epi32(_mm_castps_si128(x), 23);
+    return _mm_cvtepi32_ps(_mm_sub_epi32(e, _mm_set1_epi32(127)));
+}
+FACET_INLINE __m128 facet_sse2_getmant(__m128 x)
+{
+    __m128i m = _mm_and_si128(_mm_castps_si128(x), _mm_set1_epi32(0x007fffff));
+    return _mm_castsi128_ps(_mm_or_si128(m, _mm_set1_epi32(0x3f800000)));
+}
+
+#define FACET_V __m128
+#define FACET_OP(op) facet_sse2_##op
+#define FACET_K(k) facet_##k##_f32_sse2
+#include "facet/detail/f32_sample_body.h"
+#undef FACET_K
+#define FACET_TIER_FAST 1
+#define FACET_K(k) facet_##k##_f32_fast_sse2
+#include "facet/detail/f32_sample_body.h"
+#undef FACET_TIER_FAST
+#undef FACET_V
+#undef FACET_OP
+#undef FACET_K
+
+#endif

@@ -12,3 +12,12 @@
 #define BATCH_TIER f32_fast
 #include "../../src/batch_body.h"
 #undef BATCH_TIER
+
+/* the samplers' batch functions and table (src/sample_batch_body.h) */
+#define BATCH_V __m128
+#define BATCH_TIER f32
+#include "../../src/sample_batch_body.h"
+#undef BATCH_TIER
+#define BATCH_TIER f32_fast
+#include "../../src/sample_batch_body.h"
+#undef BATCH_TIER

@@ -7,8 +7,9 @@ x86_64*|i?86*)
     dir=build/worst-est
     mkdir -p $dir
     if $MAKE -s -j"$JOBS" BUILD=$dir CFLAGS="-O2 -g -DFACET_AVX2_TEST_WORST_ESTIMATES -DFACET_AVX512_TEST_WORST_ESTIMATES" \
-        $dir/tests/test_f32_accuracy > $dir/build.log 2>&1; then
+        $dir/tests/test_f32_accuracy $dir/tests/test_sample_accuracy > $dir/build.log 2>&1; then
         FACET_TEST_QUICK=1 run_one worst-estimates $dir/tests/test_f32_accuracy
+        FACET_TEST_QUICK=1 run_one worst-estimates $dir/tests/test_sample_accuracy
     else
         cat $dir/build.log; echo "ERROR worst-estimates: build failed"
     fi ;;

@@ -30,7 +30,7 @@ echo "0.5 0.5" | $q build/facet eval ggx_d --port avx2 > /dev/null 2> build/old-
 [ $? -eq 2 ] && grep -q "cannot run it" build/old-cpu.err && ok || bad "--port avx2: $(cat build/old-cpu.err)"
 out=$(echo "0.6 0.7 0.5 0.1 0.04 0.5" | $q build/facet eval brdf_hammon) && [ -n "$out" ] && ok || bad "eval on auto"
 # the test binaries: every check passes; the AVX ports are reported unsupported
-for t in test_f32_ports test_f32_accuracy test_fx_ports test_f32_bad_input test_bench; do
+for t in test_f32_ports test_f32_accuracy test_fx_ports test_f32_bad_input test_bench test_sample_ports; do
     res=$(FACET_TEST_QUICK=1 $q build/tests/$t 2>&1)
     rc=$?
     summary=$(printf '%s\n' "$res" | tail -n 1)
