@@ -26,14 +26,27 @@ for k in noh_from_dots loh_from_dots fresnel_schlick ggx_d smith_g1 smith_g2 smi
     grep -q "^$k " "$tmp/list" && ok || bad "list lacks $k"
 done
 
-# eval: every listed kernel accepts a line of 0.5s and prints one number
+# eval: every listed kernel accepts a line of 0.5s and prints one number;
+# every sampler ("name inputs -> outputs") one number per output, in f32,
+# f32_fast and the oracle
 while read -r name rest; do
-    n=$(echo $rest | wc -w)
+    case "$rest" in
+    *'->'*) n=$(echo "${rest%%->*}" | wc -w); nout=$(echo "${rest#*->}" | wc -w) ;;
+    *) n=$(echo $rest | wc -w); nout=1 ;;
+    esac
     line=$(yes 0.5 | head -n "$n" | tr '\n' ' ')
-    out=$(echo "$line" | "$facet" eval "$name"); rc=$?
-    expect "eval $name exit" 0 $rc
-    echo "$out" | grep -qE '^[0-9.e+-]+$' && ok || bad "eval $name printed '$out'"
+    pat="^[0-9.e+-]+( [0-9.e+-]+){$((nout - 1))}\$"
+    for fmt in f32 f32_fast; do
+        out=$(echo "$line" | "$facet" eval "$name" --format $fmt); rc=$?
+        expect "eval $name --format $fmt exit" 0 $rc
+        echo "$out" | grep -qE "$pat" && ok || bad "eval $name --format $fmt printed '$out'"
+    done
+    out=$(echo "$line" | "$facet" eval "$name" --oracle); rc=$?
+    expect "eval $name --oracle exit" 0 $rc
+    echo "$out" | grep -qE "$pat" && ok || bad "eval $name --oracle printed '$out'"
 done < "$tmp/list"
+expect "list: a sampler with its outputs" "ggx_sample_vndf vx vy vz u1 u2 alpha -> hx hy hz" \
+    "$(grep '^ggx_sample_vndf ' "$tmp/list")"
 
 # exact values and the %.9g round trip
 expect "fresnel f0 at cos 1" "0.0399999991" "$(echo '0.04 1' | "$facet" eval fresnel_schlick)"

@@ -17,6 +17,7 @@ static const char *prog = "facet";
 
 int facet_cli_fx_eval(int argc, char **argv); /* src/cli/fx.c: eval --format fx */
 int facet_cli_vectors(int argc, char **argv);  /* src/cli/fx.c: vectors */
+int facet_cli_sample_eval(const facet_sampler *s, int fast, int oracle); /* src/cli/sample.c */
 
 /* the rules every verb shares, for the --help texts */
 const char facet_cli_input_help[] =
@@ -131,6 +132,21 @@ static int cmd_list(int argc, char **argv)
                 printf(" %s", k->inputs[j]);
         printf("\n");
     }
+    /* the importance samplers: inputs, then '->' and their outputs */
+    for (i = 0; i < facet_sampler_count(); i++) {
+        const facet_sampler *smp = facet_sampler_at(i);
+        printf("%s", smp->name);
+        if (argc == 2)
+            printf(" f32 f32_fast\n");
+        else {
+            for (j = 0; j < smp->n_inputs; j++)
+                printf(" %s", smp->inputs[j]);
+            printf(" ->");
+            for (j = 0; j < smp->n_outputs; j++)
+                printf(" %s", smp->outputs[j]);
+            printf("\n");
+        }
+    }
     return facet_cli_finish("list");
 }
 
@@ -235,6 +251,7 @@ static int eval_oracle(const facet_kernel *k)
 static int cmd_eval(int argc, char **argv)
 {
     const facet_kernel *k = NULL;
+    const facet_sampler *smp = NULL;
     const char *format = "f32", *port = "auto";
     static float cols[FACET_MAX_INPUTS][CHUNK], out[CHUNK];
     facet_cli_reader r;
@@ -258,9 +275,10 @@ static int cmd_eval(int argc, char **argv)
             fprintf(stderr, "%s eval: unknown or incomplete option '%s'\n", prog, argv[i]);
             usage_eval(stderr);
             return FACET_EXIT_USAGE;
-        } else if (!k) {
+        } else if (!k && !smp) {
             k = facet_kernel_find(argv[i]);
-            if (!k) {
+            smp = k ? NULL : facet_sampler_find(argv[i]);
+            if (!k && !smp) {
                 facet_cli_unknown_kernel("eval", "kernel", argv[i]);
                 return FACET_EXIT_USAGE;
             }
@@ -269,7 +287,7 @@ static int cmd_eval(int argc, char **argv)
             return FACET_EXIT_USAGE;
         }
     }
-    if (!k) {
+    if (!k && !smp) {
         fprintf(stderr, "%s eval: missing KERNEL\n", prog);
         usage_eval(stderr);
         return FACET_EXIT_USAGE;
@@ -278,7 +296,7 @@ static int cmd_eval(int argc, char **argv)
         fprintf(stderr, "%s eval: unknown format '%s' (known: f32, f32_fast, fx, fx_fast)\n", prog, format);
         return FACET_EXIT_USAGE;
     }
-    if (oracle)
+    if (oracle && k)
         return eval_oracle(k);
     if (!strcmp(port, "auto") && getenv("FACET_PORT") && *getenv("FACET_PORT"))
         port = getenv("FACET_PORT");
@@ -292,6 +310,8 @@ static int cmd_eval(int argc, char **argv)
         fprintf(stderr, "%s eval: unknown port '%s' (see '%s ports')\n", prog, port, prog);
         return FACET_EXIT_USAGE;
     }
+    if (smp)
+        return facet_cli_sample_eval(smp, strcmp(format, "f32") != 0, oracle);
     r.f = stdin;
     r.lineno = 0;
     while (got == 1) {

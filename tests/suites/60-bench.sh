@@ -28,7 +28,7 @@ build/facet bench >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "facet still has a 
 build/facet --help | grep -q bench && bad "facet --help mentions bench" || ok
 # batch-symbols: one line per f32 tier, compiled-in port and kernel, each at a function
 nports=$(build/facet eval --help | sed -n 's/^ports compiled in://p' | sed 's/ (not on this CPU)//g' | wc -w)
-nk=$(build/facet list | wc -l)
+nk=$(build/facet list | grep -vc -- '->') # the kernels (samplers: "inputs -> outputs")
 build/facet-bench batch-symbols > build/bench-suite.batch-symbols; rc=$?
 [ $rc -eq 0 ] && [ "$(wc -l < build/bench-suite.batch-symbols)" -eq $((2 * nports * nk)) ] && ok ||
     bad "batch-symbols: exit $rc, $(wc -l < build/bench-suite.batch-symbols) lines, want 2 tiers x $nports ports x $nk kernels"
