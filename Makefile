@@ -10,6 +10,10 @@
 #                   kernels (no f32 code, no dispatcher, no oracle, no libm)
 # Variables: CC, BUILD (output dir), CFLAGS (optimisation/debug/sanitizers).
 
+# `make` alone builds `all`: the parts included below define rules of their
+# own, and the first rule would otherwise be the default goal
+.DEFAULT_GOAL := all
+
 CC      ?= cc
 BUILD   ?= build
 CFLAGS  ?= -O2 -g

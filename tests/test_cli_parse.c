@@ -21,13 +21,20 @@ static void exact(char *buf, size_t size, const char *sign, uint32_t r, int half
              (unsigned long long)((w & 65535u) * 152587890625ull)); /* 5^16 */
 }
 
+/* FACET_TEST_QUICK (sanitizers, qemu-user): a tenth of the random cases */
+static long cases_(long n)
+{
+    const char *q = getenv("FACET_TEST_QUICK");
+    return q && *q && strcmp(q, "0") ? n / 10 : n;
+}
+
 static int32_t sat(int64_t x) { return x > INT32_MAX ? INT32_MAX : x < INT32_MIN ? INT32_MIN : (int32_t)x; }
 
 static void check_q15_ties(void)
 {
     uint64_t s = 0x5eed;
     long bad = 0, n = 0, i;
-    for (i = 0; i < 300000; i++) {
+    for (i = 0; i < cases_(300000); i++) {
         char t[96], u[160];
         uint32_t r;
         int32_t got;
@@ -74,7 +81,7 @@ static void check_q15_doubles(void)
     uint64_t s = 0xd0b1e;
     long bad = 0, i;
     char buf[256], where[300] = "";
-    for (i = 0; i < 200000; i++) {
+    for (i = 0; i < cases_(200000); i++) {
         double d, y, fl;
         int64_t want;
         int32_t got;
