@@ -65,4 +65,8 @@ const char *facet_cli_suggest(const char *name, const char *const *names, size_t
  * output" and returns FACET_EXIT_IO, else FACET_EXIT_OK. */
 int facet_cli_finish(const char *verb);
 
+/* "facet eval: line N: ERR (expected n numbers: NAME ...)" on stderr: the
+ * report of a malformed line, the same for every kind of kernel */
+void facet_cli_line_error(long lineno, const char *err, int n, const char *const *names);
+
 #endif

@@ -212,11 +212,7 @@ void facet_cli_unknown_kernel(const char *verb, const char *what, const char *na
 
 static void report_line_error(const facet_kernel *k, const facet_cli_reader *r, const char *err)
 {
-    int i;
-    fprintf(stderr, "%s eval: line %ld: %s (expected %d numbers:", prog, r->lineno, err, k->n_inputs);
-    for (i = 0; i < k->n_inputs; i++)
-        fprintf(stderr, " %s", k->inputs[i]);
-    fprintf(stderr, ")\n");
+    facet_cli_line_error(r->lineno, err, k->n_inputs, k->inputs);
 }
 
 /* the oracle, one line at a time */

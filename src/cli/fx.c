@@ -149,10 +149,7 @@ int facet_cli_fx_eval(int argc, char **argv)
     }
     if (got == -1) {
         int rc = facet_cli_finish("eval");
-        fprintf(stderr, "facet eval: line %ld: %s (expected %d numbers:", r.lineno, err, k->n_inputs);
-        for (i = 0; i < k->n_inputs; i++)
-            fprintf(stderr, " %s", k->inputs[i]);
-        fprintf(stderr, ")\n");
+        facet_cli_line_error(r.lineno, err, k->n_inputs, k->inputs);
         return rc ? rc : FACET_EXIT_USAGE;
     }
     return facet_cli_finish("eval");

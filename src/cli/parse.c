@@ -328,3 +328,12 @@ int facet_cli_finish(const char *verb)
     }
     return FACET_EXIT_OK;
 }
+
+void facet_cli_line_error(long lineno, const char *err, int n, const char *const *names)
+{
+    int i;
+    fprintf(stderr, "facet eval: line %ld: %s (expected %d numbers:", lineno, err, n);
+    for (i = 0; i < n; i++)
+        fprintf(stderr, " %s", names[i]);
+    fprintf(stderr, ")\n");
+}

@@ -69,10 +69,7 @@ int facet_cli_sample_eval(const facet_sampler *s, int fast, int oracle)
     }
     if (got == -1) {
         int rc = facet_cli_finish("eval");
-        fprintf(stderr, "facet eval: line %ld: %s (expected %d numbers:", r.lineno, err, s->n_inputs);
-        for (i = 0; i < s->n_inputs; i++)
-            fprintf(stderr, " %s", s->inputs[i]);
-        fprintf(stderr, ")\n");
+        facet_cli_line_error(r.lineno, err, s->n_inputs, s->inputs);
         return rc ? rc : FACET_EXIT_USAGE;
     }
     return facet_cli_finish("eval");
