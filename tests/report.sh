@@ -1,9 +1,12 @@
 #!/bin/sh
 # report.sh BUILD_DIR - `make report`: the accuracy sweep (and, below, the
-# benchmarks) written to BUILD_DIR/report/.
+# benchmarks) written to BUILD_DIR/report/ (or FACET_REPORT_OUT).  This part
+# writes accuracy.md, the report's head; the bench part writes bench.md and
+# composes report.md and index.html from the two (a quick bench-only run,
+# bench/report/report.sh, recomposes them the same way).
 set -eu
 build=${1:-build}
-out=$build/report
+out=${FACET_REPORT_OUT:-$build/report}
 mkdir -p "$out"
 n=${FACET_REPORT_SAMPLES:-3000000}
 make -s BUILD="$build" tests
@@ -24,12 +27,12 @@ echo "report: f32 accuracy sweep, $n random samples per kernel + grids + edges .
     echo "Maximum relative error at the same float inputs (values below 2^-100 compared absolutely), $n random samples per kernel plus grids and edges; the bound is the one facet.h documents and the tests enforce."
     echo
     cat "$out/accuracy_f32.md"
-} > "$out/report.md"
+} > "$out/accuracy.md"
+cp "$out/accuracy.md" "$out/report.md"
 # ---- bench: benchmarks, plots, rasterizer (bench/) ------------------------
-# (owned by bench/report/: appends bench.md to report.md and writes index.html)
+# (owned by bench/report/: writes bench.md, report.md = accuracy.md + bench.md, index.html)
 if [ -f bench/report/report.sh ]; then
-    MAKE=${MAKE:-make} sh bench/report/report.sh "$build" || { echo "report: bench part FAILED"; exit 1; }
-    cat "$out/bench.md" >> "$out/report.md"
+    FACET_REPORT_OUT=$out MAKE=${MAKE:-make} sh bench/report/report.sh "$build" || { echo "report: bench part FAILED"; exit 1; }
     echo "report: wrote $out/index.html"
 fi
 # ---- end bench --------------------------------------------------------------

@@ -1032,21 +1032,44 @@ static void md_to_html(FILE *in, FILE *out)
         fputs("</table>\n", out);
 }
 
+/* the heading of the bench part, in bench.md and index.html: a quick run
+ * says so, since its figures come from a few samples */
+#define BENCH_TITLE "Benchmarks (bench/)"
+#define BENCH_QUICK_TITLE "Benchmarks (bench/), QUICK RUN"
+#define BENCH_QUICK_NOTE "Quick run (<code>facet-bench report --quick</code>): few samples, short passes, " \
+    "small pictures; these figures test the machinery and are not for comparison. <code>make report</code> " \
+    "measures in full."
+
+static int copy_file(const char *path, FILE *out)
+{
+    FILE *in = fopen(path, "r");
+    int c;
+    if (!in)
+        return 0;
+    while ((c = fgetc(in)) != EOF)
+        fputc(c, out);
+    fclose(in);
+    return 1;
+}
+
+/* report.md and index.html are composed here, from accuracy.md (the part
+ * tests/report.sh writes; absent in a bench-only run) and this run's bench
+ * part, so a quick run after a full one replaces the bench part of both
+ * rather than adding a second one beside the stale first. */
 static void write_index(void)
 {
     char path[1024];
     FILE *out, *in;
-    int c;
     snprintf(path, sizeof path, "%s/index.html", outdir);
     out = fopen(path, "w");
     if (!out)
         return;
-    fputs("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>facet report</title>\n"
-          "<style>body{font-family:sans-serif;max-width:1200px;margin:2em auto;padding:0 1em;color:#222}"
+    fprintf(out, "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>facet report%s</title>\n", quick ? " (quick run)" : "");
+    fputs("<style>body{font-family:sans-serif;max-width:1200px;margin:2em auto;padding:0 1em;color:#222}"
           "table{border-collapse:collapse;font-size:12px;margin:1em 0}td,th{border:1px solid #ccc;padding:2px 6px;"
           "text-align:left}th{background:#f0f0f0}figure{margin:1em 0}figcaption{font-size:12px;color:#444;"
           "max-width:900px}img{image-rendering:pixelated}</style></head><body>\n", out);
-    snprintf(path, sizeof path, "%s/report.md", outdir);
+    snprintf(path, sizeof path, "%s/accuracy.md", outdir);
     in = fopen(path, "r");
     if (in) {
         md_to_html(in, out);
@@ -1054,15 +1077,26 @@ static void write_index(void)
     } else {
         fputs("<h1>facet report</h1>\n", out);
     }
-    fputs("<h1>Benchmarks (bench/)</h1>\n", out);
+    fprintf(out, "<h1>%s</h1>\n", quick ? BENCH_QUICK_TITLE : BENCH_TITLE);
     snprintf(path, sizeof path, "%s/bench.html", outdir);
-    in = fopen(path, "r");
-    if (in) {
-        while ((c = fgetc(in)) != EOF)
-            fputc(c, out);
-        fclose(in);
-    }
+    copy_file(path, out);
     fputs("</body></html>\n", out);
+    fclose(out);
+}
+
+static void write_report_md(void)
+{
+    char path[1024];
+    FILE *out;
+    snprintf(path, sizeof path, "%s/report.md", outdir);
+    out = fopen(path, "w");
+    if (!out)
+        return;
+    snprintf(path, sizeof path, "%s/accuracy.md", outdir);
+    if (!copy_file(path, out))
+        fputs("# facet report\n\n(bench part only: no accuracy.md from tests/report.sh here)\n", out);
+    snprintf(path, sizeof path, "%s/bench.md", outdir);
+    copy_file(path, out);
     fclose(out);
 }
 
@@ -1109,7 +1143,9 @@ int facet_bench_report(int argc, char **argv)
     say("model-error sweep of the approximations ...");
     sweep_tradeoffs();
 
-    fprintf(md, "\n# Benchmarks (bench/)\n\n");
+    fprintf(md, "\n# %s\n\n", quick ? BENCH_QUICK_TITLE : BENCH_TITLE);
+    if (quick)
+        para(BENCH_QUICK_NOTE);
     section_clock();
     /* targets need the rasterizer figures: render the later sections to a
      * buffer first?  Simpler: the rasterizer runs before the targets. */
@@ -1138,6 +1174,7 @@ int facet_bench_report(int argc, char **argv)
     fclose(md);
     fclose(html);
     write_index();
+    write_report_md();
     say("bench part done in %ld s: %s/index.html, %s/bench.md", (long)(time(NULL) - t0), outdir, outdir);
     (void)both;
     return 0;

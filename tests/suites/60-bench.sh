@@ -5,7 +5,9 @@
 # library's `facet` command carries none of it (no bench or peer object,
 # so no -march=native code).  The PNG encoder and rasterizer tests are
 # build/tests/test_bench, run by the compiler suites.  Timing figures are
-# not judged.
+# not judged.  A quick `make report` into build/check-report/ (about 100 s
+# on 2 cores, mostly the Cortex-M traces) is composed correctly, also when a
+# quick run follows it.
 . tests/suite_lib.sh
 pass=0 fail=0
 ok() { pass=$((pass + 1)); }
@@ -82,4 +84,32 @@ build/facet-bench bench lambert --quick --no-peers >/dev/full 2>/dev/null; [ $? 
 build/facet-bench bench lambert --epochs 1002 >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "--epochs 1002: want exit 2"
 build/facet-bench bench lambert --samples 65544 >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "--samples 65544: want exit 2"
 build/facet-bench bench lambert --samples " 8" >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "--samples ' 8': want exit 2"
+# the report: a quick `make report` (tests/report.sh with the bench part's
+# --quick) into its own directory, then a quick bench-only run over it.  The
+# quick run used to append a second Benchmarks section to index.html and to
+# leave report.md as the first run left it, unlabelled as quick.
+rep=build/check-report
+rm -rf "$rep"
+composed() { # composed WHEN: report.md = accuracy.md + bench.md; one Benchmarks part, labelled quick
+    [ "$(grep -c '^<h1>Benchmarks (bench/)' "$rep/index.html")" -eq 1 ] && ok ||
+        bad "$1: $(grep -c '^<h1>Benchmarks (bench/)' "$rep/index.html") Benchmarks sections in index.html, want 1"
+    [ "$(grep -c '^<h1>facet report' "$rep/index.html")" -eq 1 ] && ok || bad "$1: index.html lacks the accuracy part"
+    [ "$(grep -c '^# Benchmarks (bench/)' "$rep/report.md")" -eq 1 ] && ok || bad "$1: report.md has $(grep -c '^# Benchmarks (bench/)' "$rep/report.md") Benchmarks sections, want 1"
+    cat "$rep/accuracy.md" "$rep/bench.md" | cmp -s - "$rep/report.md" && ok || bad "$1: report.md is not accuracy.md + this run's bench.md"
+    grep -q '^# Benchmarks (bench/), QUICK RUN$' "$rep/report.md" && ok || bad "$1: report.md not labelled as a quick run"
+    grep -q '<title>facet report (quick run)</title>' "$rep/index.html" && grep -q '^<h1>Benchmarks (bench/), QUICK RUN</h1>$' "$rep/index.html" &&
+        ok || bad "$1: index.html not labelled as a quick run"
+}
+if FACET_REPORT_OUT=$rep FACET_REPORT_SAMPLES=20000 FACET_REPORT_QUICK=1 sh tests/report.sh build > build/bench-suite.report.log 2>&1; then
+    ok
+    composed "quick make report"
+    cp "$rep/report.md" "$rep/report.md.first"
+    if build/facet-bench report "$rep" --quick >> build/bench-suite.report.log 2>&1; then ok; else bad "facet-bench report --quick failed"; fi
+    composed "quick run after make report"
+    cmp -s "$rep/report.md" "$rep/report.md.first" && bad "report.md not rewritten by the quick run" || ok
+    rm -f "$rep/report.md.first"
+else
+    tail -20 build/bench-suite.report.log
+    bad "quick make report failed (log: build/bench-suite.report.log)"
+fi
 echo "bench: $pass passed, $fail failed, 0 skipped"
