@@ -7,7 +7,8 @@
 # build/tests/test_bench, run by the compiler suites.  Timing figures are
 # not judged.  A quick `make report` into build/check-report/ (about 100 s
 # on 2 cores, mostly the Cortex-M traces) is composed correctly, also when a
-# quick run follows it.
+# quick run follows it, and loads in Chromium without a missing image or a
+# script error (tests/report_browser.sh; screenshot build/report-screenshot.png).
 . tests/suite_lib.sh
 pass=0 fail=0
 ok() { pass=$((pass + 1)); }
@@ -108,6 +109,7 @@ if FACET_REPORT_OUT=$rep FACET_REPORT_SAMPLES=20000 FACET_REPORT_QUICK=1 sh test
     composed "quick run after make report"
     cmp -s "$rep/report.md" "$rep/report.md.first" && bad "report.md not rewritten by the quick run" || ok
     rm -f "$rep/report.md.first"
+    run_one report-browser sh tests/report_browser.sh "$rep"
 else
     tail -20 build/bench-suite.report.log
     bad "quick make report failed (log: build/bench-suite.report.log)"
