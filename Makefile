@@ -5,7 +5,8 @@
 #   make report     accuracy sweep (+ bench, build/facet-bench) -> build/report/
 #   make fuzz       libFuzzer targets, FUZZ_SECONDS (300) each (tests/fuzz.mk;
 #                   the one recursive make: an instrumented libfacet)
-#   make install PREFIX=/usr/local   (headers, libraries, pkg-config, bin/facet)
+#   make install PREFIX=/usr/local   (headers, libraries, pkg-config, CMake
+#                   package config, bin/facet); make uninstall (same PREFIX)
 #   make fx-sources  the C files a firmware build compiles for the fixed-point
 #                   kernels (no f32 code, no dispatcher, no oracle, no libm)
 # Variables: CC, BUILD (output dir), CFLAGS (optimisation/debug/sanitizers).
@@ -45,7 +46,7 @@ FX_SOURCES := src/fx_core.c src/fx_kernels.c src/fx_fast.c src/fx_batch.c src/fx
 EXTRA_TESTS :=
 -include $(sort $(wildcard ports/*/port.mk tests/*.mk bench/*.mk))
 
-.PHONY: all lib tests check report install clean fx-sources
+.PHONY: all lib tests check report install uninstall clean fx-sources
 all: lib $(BUILD)/facet
 lib: $(BUILD)/libfacet.a $(BUILD)/libfacet.so
 
@@ -78,17 +79,34 @@ fx-sources:
 report: all
 	@tests/report.sh $(BUILD)
 
+# What `make install` puts under $(DESTDIR)$(PREFIX), one list that
+# `make uninstall` removes again (and then the directories left empty).
+VERSION        := $(shell sed -n 's/^\#define FACET_VERSION "\(.*\)"/\1/p' include/facet.h)
+INSTALL_HDRS   := include/facet.h $(wildcard include/facet/*.h include/facet/detail/*.h)
+INSTALL_CMAKE  := lib/cmake/facet/facet-config.cmake lib/cmake/facet/facet-config-version.cmake
+INSTALL_FILES  := bin/facet $(INSTALL_HDRS) lib/libfacet.a lib/libfacet.so.0 lib/libfacet.so \
+                  lib/pkgconfig/facet.pc $(INSTALL_CMAKE)
+INSTALL_DIRS   := include/facet/detail include/facet include lib/cmake/facet lib/cmake lib/pkgconfig lib bin
+I = $(DESTDIR)$(PREFIX)
+
 install: lib $(BUILD)/facet
-	install -d $(DESTDIR)$(PREFIX)/include/facet/detail $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
-	install -m 755 $(BUILD)/facet $(DESTDIR)$(PREFIX)/bin/
-	install -m 644 include/facet.h $(DESTDIR)$(PREFIX)/include/
-	install -m 644 include/facet/*.h $(DESTDIR)$(PREFIX)/include/facet/
-	install -m 644 include/facet/detail/*.h $(DESTDIR)$(PREFIX)/include/facet/detail/
-	install -m 644 $(BUILD)/libfacet.a $(DESTDIR)$(PREFIX)/lib/
-	install -m 755 $(BUILD)/libfacet.so $(DESTDIR)$(PREFIX)/lib/libfacet.so.0
-	ln -sf libfacet.so.0 $(DESTDIR)$(PREFIX)/lib/libfacet.so
-	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(shell sed -n 's/^#define FACET_VERSION "\(.*\)"/\1/p' include/facet.h)|' \
-	    src/facet.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/facet.pc
+	install -d $(I)/include/facet/detail $(I)/lib/pkgconfig $(I)/lib/cmake/facet $(I)/bin
+	install -m 755 $(BUILD)/facet $(I)/bin/
+	install -m 644 include/facet.h $(I)/include/
+	install -m 644 $(filter include/facet/%,$(filter-out include/facet/detail/%,$(INSTALL_HDRS))) $(I)/include/facet/
+	install -m 644 $(filter include/facet/detail/%,$(INSTALL_HDRS)) $(I)/include/facet/detail/
+	install -m 644 $(BUILD)/libfacet.a $(I)/lib/
+	install -m 755 $(BUILD)/libfacet.so $(I)/lib/libfacet.so.0
+	ln -sf libfacet.so.0 $(I)/lib/libfacet.so
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' src/facet.pc.in > $(I)/lib/pkgconfig/facet.pc
+	install -m 644 src/facet-config.cmake $(I)/lib/cmake/facet/facet-config.cmake
+	sed -e 's|@VERSION@|$(VERSION)|' \
+	    -e "s|@SIZEOF_VOID_P@|$$(echo __SIZEOF_POINTER__ | $(CC) -E -P - | tr -d ' \n')|" \
+	    src/facet-config-version.cmake.in > $(I)/lib/cmake/facet/facet-config-version.cmake
+
+uninstall:
+	rm -f $(addprefix $(I)/,$(INSTALL_FILES))
+	for d in $(INSTALL_DIRS); do [ ! -d "$(I)/$$d" ] || rmdir "$(I)/$$d" 2>/dev/null || true; done
 
 clean:
 	rm -rf build
