@@ -3,7 +3,6 @@
  * order, with each input's raw Q15 domain and the output format.
  * Names generated here from src/kernels.def: one table row and its four
  * array-argument wrappers (both tiers) per fixed-point kernel. */
-#include <string.h>
 #include "facet/fx.h"
 #include "kernel_list.h"
 
@@ -50,11 +49,19 @@ const facet_fx_kernel *facet_fx_kernel_at(size_t i)
     return i < facet_fx_kernel_count() ? &table[i] : NULL;
 }
 
+/* strcmp() == 0 without <string.h>: the firmware sources need no libc */
+static int same_name(const char *a, const char *b)
+{
+    while (*a && *a == *b)
+        a++, b++;
+    return *a == *b;
+}
+
 const facet_fx_kernel *facet_fx_kernel_find(const char *name)
 {
     size_t i;
     for (i = 0; name && i < facet_fx_kernel_count(); i++)
-        if (strcmp(table[i].name, name) == 0)
+        if (same_name(table[i].name, name))
             return &table[i];
     return NULL;
 }

@@ -49,8 +49,8 @@ extern const facet_fx_port facet_fx_port_neon, facet_fx_fast_port_neon;
 
 
 /* the fx port of the active port for a tier (0: fx, 1: fx_fast), never
- * NULL: src/dispatch.c, or in a build without the dispatcher (firmware)
- * src/fx_only/fx_active_scalar.c */
+ * NULL: src/dispatch.c (a build without the dispatcher, firmware, has no
+ * port table at all: src/fx_only/fx_batch_scalar.c) */
 const facet_fx_port *facet_fx_active_port(int fast);
 
 #endif

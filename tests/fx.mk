@@ -6,6 +6,11 @@
 #   $(BUILD)/fx/<target>/test_fx_hash[.elf]   the pinned-hash test per target
 #   $(BUILD)/fx/<cpu>/fx_kernels.o, fx_fast.o Cortex-M objects for the size table
 #   $(BUILD)/fx/rv32/fx.elf                   freestanding RV32IMC link check
+#   $(BUILD)/fx/cortex-m<0|4>/fw*.elf         firmware images (tests/cortexm/fw_main.c):
+#       -Os, --gc-sections, newlib, exactly as the README's "Firmware builds"
+#       fw.elf       facet_brdf_hammon_fx_batch     fw_fast.elf  the _fx_fast_batch
+#       fw_base.elf  the same image, no facet call (the size baseline)
+#       fw_oracle.elf  also calls the oracle: the symbol check must flag it
 FX_KSRC   := $(filter-out src/fx_table.c,$(FX_SOURCES)) # the Makefile's firmware list
 FX_TSRC   := $(FX_KSRC) src/fx_table.c
 FX_HDRS   := include/facet/fx.h $(wildcard src/fx_*.h) src/port.h src/kernel_list.h src/kernels.def \
@@ -20,6 +25,7 @@ FX_CM_LINK  = --specs=rdimon.specs -nostartfiles -T tests/cortexm/mps2.ld tests/
 
 .PHONY: fx-cortex-m fx-rv32 fx-linux-cross fx-portable
 fx-cortex-m: $(BUILD)/fx/cortex-m0/test_fx_hash.elf $(BUILD)/fx/cortex-m4/test_fx_hash.elf \
+             $(foreach c,0 4,$(foreach f,fw fw_fast fw_base fw_oracle,$(BUILD)/fx/cortex-m$c/$f.elf)) \
              $(BUILD)/fx/cortex-m0/fx_kernels.o $(BUILD)/fx/cortex-m4/fx_kernels.o \
              $(BUILD)/fx/cortex-m0/fx_core.o $(BUILD)/fx/cortex-m4/fx_core.o \
              $(BUILD)/fx/cortex-m0/fx_fast.o $(BUILD)/fx/cortex-m4/fx_fast.o
@@ -31,6 +37,23 @@ fx-portable: $(BUILD)/fx/portable/test_fx_hash
 $(BUILD)/fx/cortex-m%/test_fx_hash.elf: tests/test_fx_hash.c $(FX_TSRC) $(FX_HDRS) tests/cortexm/startup.c tests/cortexm/mps2.ld
 	@mkdir -p $(dir $@)
 	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_CM_FLAGS) $(FX_CFLAGS) $(FX_CM_LINK) $(FX_TSRC) $< -o $@
+
+# firmware images: the README's flags, --gc-sections, newlib (semihosting
+# exit through tests/cortexm/startup.c, so qemu can run them)
+FX_FW_FLAGS = -mthumb -Os -ffunction-sections -fdata-sections $(WARN) -Iinclude $(FX_CM_LINK) -Wl,--gc-sections
+FX_FW_DEPS  = tests/cortexm/fw_main.c $(FX_SOURCES) $(FX_HDRS) tests/cortexm/startup.c tests/cortexm/mps2.ld
+$(BUILD)/fx/cortex-m%/fw.elf: $(FX_FW_DEPS)
+	@mkdir -p $(dir $@)
+	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_FW_FLAGS) -DFW_TIER=1 tests/cortexm/fw_main.c $(FX_SOURCES) -o $@
+$(BUILD)/fx/cortex-m%/fw_fast.elf: $(FX_FW_DEPS)
+	@mkdir -p $(dir $@)
+	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_FW_FLAGS) -DFW_TIER=2 tests/cortexm/fw_main.c $(FX_SOURCES) -o $@
+$(BUILD)/fx/cortex-m%/fw_base.elf: $(FX_FW_DEPS)
+	@mkdir -p $(dir $@)
+	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_FW_FLAGS) -DFW_TIER=0 tests/cortexm/fw_main.c $(FX_SOURCES) -o $@
+$(BUILD)/fx/cortex-m%/fw_oracle.elf: $(FX_FW_DEPS) src/oracle.c
+	@mkdir -p $(dir $@)
+	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_FW_FLAGS) -DFW_TIER=9 tests/cortexm/fw_main.c $(FX_SOURCES) src/oracle.c -o $@ -lm
 
 # -Os objects: the size table (README) and the no-helper-call check
 $(BUILD)/fx/cortex-m%/fx_kernels.o: src/fx_kernels.c $(FX_HDRS)
@@ -45,10 +68,11 @@ $(BUILD)/fx/cortex-m%/fx_fast.o: src/fx_fast.c $(FX_HDRS)
 
 # RV32IMC, freestanding, no libc, no libgcc: the link fails on any
 # undefined symbol (a float, division or clz helper call would be one)
-$(BUILD)/fx/rv32/fx.elf: $(FX_KSRC) $(FX_HDRS)
+# (all of `make fx-sources`, the kernel table too)
+$(BUILD)/fx/rv32/fx.elf: $(FX_SOURCES) $(FX_HDRS)
 	@mkdir -p $(dir $@)
 	$(FX_RV_CC) -march=rv32imc -mabi=ilp32 -ffreestanding -nostdlib $(FX_CFLAGS) \
-	    -Wl,-e,facet_brdf_hammon_fx -Wl,--no-gc-sections $(FX_KSRC) -o $@
+	    -Wl,-e,facet_brdf_hammon_fx -Wl,--no-gc-sections $(FX_SOURCES) -o $@
 
 $(BUILD)/fx/aarch64/test_fx_hash: tests/test_fx_hash.c $(FX_TSRC) $(FX_HDRS)
 	@mkdir -p $(dir $@)

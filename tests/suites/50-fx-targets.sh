@@ -8,6 +8,14 @@
 #   fx-cortex-m-calls  the M0/M4 kernel objects (precise and fx_fast) call no helper (no soft
 #                  float, no __aeabi_lmul/llsl/uidiv): nm -u lists only fx's own
 #   fx-rv32        freestanding RV32IMC link with -nostdlib: no undefined symbol
+#   fx-firmware    the README's firmware link (`make fx-sources`, -Os,
+#                  --gc-sections, newlib) on M0 and M4, both tiers' batch:
+#                  runs on qemu (batch == scalar kernel), holds no symbol of
+#                  the library outside the fixed-point sources (f32 kernels,
+#                  dispatcher, CPU detection, samplers, oracle: the host
+#                  libfacet.a's other members), no libm function and no
+#                  float helper; the same check must reject an image that
+#                  calls the oracle; prints the image sizes
 # A missing toolchain or emulator skips its target with the reason.
 . tests/suite_lib.sh
 B=build
@@ -15,6 +23,50 @@ skip() { echo "SKIP $1: $2"; echo "$1: 0 passed, 0 failed, 1 skipped"; }
 have() { command -v "$1" > /dev/null 2>&1; }
 mk() { $MAKE -s -j"$JOBS" BUILD=$B "$@" > "$B/fx-$1.build.log" 2>&1; }
 mkdir -p $B
+
+# fw_bad ELF: the symbols of ELF that a firmware link of the fixed-point
+# sources must not hold: a global the host libfacet.a defines in a member
+# that is not one of them (fx_batch.o is libfacet's dispatched batch API,
+# which src/fx_only/fx_batch_scalar.c defines for firmware, with
+# facet_fx_port_name), a libm function, a soft-float helper
+fw_bad() {
+    arm-none-eabi-nm "$1" | awk '{ print $NF }' | sort -u > "$B/fx-fw.syms"
+    { awk -v ok="$(for f in $($MAKE -s fx-sources) src/fx_batch.c; do basename "$f" .c; done | tr '\n' ' ')" '
+          BEGIN { n = split(ok, a, " "); for (i = 1; i <= n; i++) allowed[a[i] ".o:"] = 1 }
+          /:$/ { m = $0; next }
+          NF == 3 && $2 ~ /^[A-TV-Z]$/ && !(m in allowed) && $3 != "facet_fx_port_name" { print $3 }' "$B/fx-fw.lib.syms"
+      grep -E '^(__aeabi_([fd]|[ui]?[il]2[fd])|__(add|sub|mul|div)[sd]f3|__float|__fix|__extend|__trunc|__ieee754|(sqrt|pow|exp|expm1|log|log1p|sin|cos|tan|atan2|cbrt|hypot)f?$)' "$B/fx-fw.syms"
+    } | sort -u | comm -12 - "$B/fx-fw.syms"
+}
+fw_check() {
+    if ! mk lib || ! nm -g --defined-only $B/libfacet.a > "$B/fx-fw.lib.syms" 2>/dev/null; then
+        cat "$B/fx-lib.build.log"; echo "ERROR fx-firmware: host libfacet.a build failed"; return
+    fi
+    p=0 f=0
+    for c in m0 m4; do
+        for t in fw fw_fast; do
+            e=$B/fx/cortex-$c/$t.elf
+            bad=$(fw_bad "$e" | tr '\n' ' ')
+            if [ -z "$bad" ]; then p=$((p + 1)); else f=$((f + 1)); echo "FAIL fx-firmware: $e holds $bad"; fi
+            if have qemu-system-arm; then
+                m=mps2-an385; [ $c = m4 ] && m=mps2-an386
+                if timeout 120 qemu-system-arm -M $m -nographic -semihosting-config enable=on,target=native \
+                       -kernel "$e" > "$B/fx-fw.run.log" 2>&1; then p=$((p + 1))
+                else f=$((f + 1)); echo "FAIL fx-firmware: $e on qemu $m: batch != scalar kernel (or a fault)"; fi
+            fi
+        done
+        # the check can fail: the image that also calls the oracle holds its
+        # symbol and the soft-float double helpers
+        bad=$(fw_bad $B/fx/cortex-$c/fw_oracle.elf | tr '\n' ' ')
+        case "$bad" in *facet_oracle_lambert*__aeabi_d*|*__aeabi_d*facet_oracle_lambert*) p=$((p + 1)) ;;
+            *) f=$((f + 1)); echo "FAIL fx-firmware: the check does not reject fw_oracle.elf ($c): '$bad'" ;; esac
+        echo "fx-firmware: cortex-$c .text+.data bytes (arm-none-eabi-size): $(for t in fw_base fw fw_fast; do
+            arm-none-eabi-size $B/fx/cortex-$c/$t.elf | awk -v t=$t 'NR == 2 { printf "%s %d+%d  ", t, $1, $2 }'; done)"
+    done
+    s=0
+    have qemu-system-arm || { s=1; echo "SKIP fx-firmware: qemu-system-arm missing (the images are checked, not run)"; }
+    echo "fx-firmware: $p passed, $f failed, $s skipped"
+}
 
 if mk fx-portable; then run_one fx-portable $B/fx/portable/test_fx_hash
 else cat $B/fx-fx-portable.build.log; echo "ERROR fx-portable: build failed"; fi
@@ -53,6 +105,7 @@ else
                 -semihosting-config enable=on,target=native -kernel $B/fx/cortex-${m%%:*}/test_fx_hash.elf
         done
     fi
+    fw_check
 fi
 
 if ! have riscv64-linux-gnu-gcc; then
