@@ -89,26 +89,26 @@ INSTALL_CMAKE  := lib/cmake/facet/facet-config.cmake lib/cmake/facet/facet-confi
 INSTALL_FILES  := bin/facet $(INSTALL_HDRS) lib/libfacet.a lib/libfacet.so.0 lib/libfacet.so \
                   lib/pkgconfig/facet.pc $(INSTALL_CMAKE)
 INSTALL_DIRS   := include/facet/detail include/facet include lib/cmake/facet lib/cmake lib/pkgconfig lib bin
-I = $(DESTDIR)$(PREFIX)
+IROOT = $(DESTDIR)$(PREFIX)
 
 install: lib $(BUILD)/facet
-	install -d $(I)/include/facet/detail $(I)/lib/pkgconfig $(I)/lib/cmake/facet $(I)/bin
-	install -m 755 $(BUILD)/facet $(I)/bin/
-	install -m 644 include/facet.h $(I)/include/
-	install -m 644 $(filter include/facet/%,$(filter-out include/facet/detail/%,$(INSTALL_HDRS))) $(I)/include/facet/
-	install -m 644 $(filter include/facet/detail/%,$(INSTALL_HDRS)) $(I)/include/facet/detail/
-	install -m 644 $(BUILD)/libfacet.a $(I)/lib/
-	install -m 755 $(BUILD)/libfacet.so $(I)/lib/libfacet.so.0
-	ln -sf libfacet.so.0 $(I)/lib/libfacet.so
-	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' src/facet.pc.in > $(I)/lib/pkgconfig/facet.pc
-	install -m 644 src/facet-config.cmake $(I)/lib/cmake/facet/facet-config.cmake
+	install -d $(IROOT)/include/facet/detail $(IROOT)/lib/pkgconfig $(IROOT)/lib/cmake/facet $(IROOT)/bin
+	install -m 755 $(BUILD)/facet $(IROOT)/bin/
+	install -m 644 include/facet.h $(IROOT)/include/
+	install -m 644 $(filter include/facet/%,$(filter-out include/facet/detail/%,$(INSTALL_HDRS))) $(IROOT)/include/facet/
+	install -m 644 $(filter include/facet/detail/%,$(INSTALL_HDRS)) $(IROOT)/include/facet/detail/
+	install -m 644 $(BUILD)/libfacet.a $(IROOT)/lib/
+	install -m 755 $(BUILD)/libfacet.so $(IROOT)/lib/libfacet.so.0
+	ln -sf libfacet.so.0 $(IROOT)/lib/libfacet.so
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' src/facet.pc.in > $(IROOT)/lib/pkgconfig/facet.pc
+	install -m 644 src/facet-config.cmake $(IROOT)/lib/cmake/facet/facet-config.cmake
 	sed -e 's|@VERSION@|$(VERSION)|' \
 	    -e "s|@SIZEOF_VOID_P@|$$(echo __SIZEOF_POINTER__ | $(CC) -E -P - | tr -d ' \n')|" \
-	    src/facet-config-version.cmake.in > $(I)/lib/cmake/facet/facet-config-version.cmake
+	    src/facet-config-version.cmake.in > $(IROOT)/lib/cmake/facet/facet-config-version.cmake
 
 uninstall:
-	rm -f $(addprefix $(I)/,$(INSTALL_FILES))
-	for d in $(INSTALL_DIRS); do [ ! -d "$(I)/$$d" ] || rmdir "$(I)/$$d" 2>/dev/null || true; done
+	rm -f $(addprefix $(IROOT)/,$(INSTALL_FILES))
+	for d in $(INSTALL_DIRS); do [ ! -d "$(IROOT)/$$d" ] || rmdir "$(IROOT)/$$d" 2>/dev/null || true; done
 
 clean:
 	rm -rf build
