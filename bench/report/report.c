@@ -18,6 +18,7 @@
 #include "harness/bench.h"
 #include "harness/cycles.h"
 #include "pictures.h"
+#include "image_error.h"
 #include "png.h"
 #include "raster/raster.h"
 #include "facet_bench.h"
@@ -125,7 +126,131 @@ static const char *g3(char *b, double x)
     return b;
 }
 
-/* a PNG written to OUTDIR/name and inlined in the HTML */
+/* ---- labelled figures: the PNG inside an SVG with its titles, axes and
+ * colour bar (pictures.h pic_axes) ------------------------------------------ */
+
+/* tick values for [lo, hi] (either order): "nice" steps for a linear scale,
+ * powers of 10 for a log one; returns the count */
+static int ticks(double lo, double hi, int logscale, double *t, int max)
+{
+    double a = lo < hi ? lo : hi, b = lo < hi ? hi : lo, step, v;
+    int n = 0;
+    if (logscale) {
+        for (v = ceil(log10(a) - 1e-9); v <= log10(b) + 1e-9 && n < max; v++)
+            t[n++] = pow(10, v);
+        return n;
+    }
+    step = pow(10, floor(log10((b - a) / 3)));
+    if ((b - a) / step > 7)
+        step *= (b - a) / step > 15 ? 5 : 2;
+    if (b - a == 90)
+        step = 30; /* degrees */
+    for (v = ceil(a / step - 1e-9) * step; v <= b + 1e-9 * step && n < max; v += step)
+        t[n++] = fabs(v) < 1e-12 ? 0 : v;
+    return n;
+}
+
+/* where value v falls along a panel edge of `len` pixels running from `from`
+ * to `to` (log10 scale if lg) */
+static double along(double v, double from, double to, int lg, int len)
+{
+    if (lg)
+        return (log10(v) - log10(from)) / (log10(to) - log10(from)) * len;
+    return (v - from) / (to - from) * len;
+}
+
+static void svg_tick_label(FILE *f, double x, double y, const char *anchor, double v, int lg)
+{
+    if (lg)
+        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"%s\">10<tspan dy=\"-5\" font-size=\"8\">%g</tspan></text>",
+                x, y, anchor, log10(v));
+    else
+        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"%s\">%g</text>", x, y, anchor, v);
+}
+
+static void svg_figure(const pic *p, const char *b64)
+{
+    const pic_axes *a = &p->ax;
+    int sc = p->w <= 460 ? 2 : 1, r, c, i, n;
+    int rowt = 0, L, T = 22, B, W, H, bar = a->bar_label[0] != 0;
+    int has_x = a->xlabel[0] != 0, has_y = a->ylabel[0] != 0;
+    double t[16];
+    for (r = 0; r < a->rows; r++)
+        if ((int)strlen(a->row_title[r]) > rowt)
+            rowt = (int)strlen(a->row_title[r]);
+    L = 8 + (rowt ? rowt * 7 + 8 : 0) + (has_y ? 52 : 0);
+    B = (has_x ? 38 : 4) + (bar ? 48 : 0);
+    W = L + p->w * sc + 12;
+    H = T + p->h * sc + B;
+    fprintf(html, "<figure><svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
+                  "font-family=\"sans-serif\" font-size=\"11\">", W, H);
+    fprintf(html, "<image x=\"%d\" y=\"%d\" width=\"%d\" height=\"%d\" style=\"image-rendering:pixelated\" "
+                  "href=\"data:image/png;base64,%s\"/>", L, T, p->w * sc, p->h * sc, b64 ? b64 : "");
+    for (c = 0; c < a->cols; c++) /* column titles */
+        fprintf(html, "<text x=\"%.1f\" y=\"%d\" text-anchor=\"middle\">%s</text>",
+                L + (a->x0 + c * (a->pw + a->gap) + a->pw / 2.0) * sc, T - 6, a->col_title[c]);
+    for (r = 0; r < a->rows; r++) /* row titles */
+        if (a->row_title[r][0])
+            fprintf(html, "<text x=\"6\" y=\"%.1f\">%s</text>",
+                    T + (a->y0 + r * (a->ph + a->gap) + a->ph / 2.0) * sc + 4, a->row_title[r]);
+    if (has_x) { /* x ticks under the bottom row of every column */
+        double yb = T + (a->y0 + a->rows * (a->ph + a->gap) - a->gap) * sc;
+        n = ticks(a->xmin, a->xmax, a->xlog, t, 16);
+        for (c = 0; c < a->cols; c++) {
+            for (i = 0; i < n; i++) {
+                double u = along(t[i], a->xmin, a->xmax, a->xlog, a->pw);
+                double x = L + (a->x0 + c * (a->pw + a->gap) + u) * sc;
+                if (c + 1 < a->cols && u > a->pw - 0.5)
+                    continue; /* the next panel's first label stands there */
+                fprintf(html, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#333\"/>", x, yb, x, yb + 4);
+                svg_tick_label(html, x, yb + 15, "middle", t[i], a->xlog);
+            }
+            fprintf(html, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-style=\"italic\">%s</text>",
+                    L + (a->x0 + c * (a->pw + a->gap) + a->pw / 2.0) * sc, yb + 30, a->xlabel);
+        }
+    }
+    if (has_y) { /* y ticks left of the first column, every row */
+        double xl = L + a->x0 * sc;
+        n = ticks(a->ymin, a->ymax, a->ylog, t, 16);
+        for (r = 0; r < a->rows; r++) {
+            double y0 = T + (a->y0 + r * (a->ph + a->gap)) * sc;
+            for (i = 0; i < n; i++) {
+                double v = along(t[i], a->ymin, a->ymax, a->ylog, a->ph);
+                double y = y0 + (a->ph - v) * sc;
+                if (r > 0 && v > a->ph - 0.5)
+                    continue; /* the row above ends with this label */
+                fprintf(html, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#333\"/>", xl - 4, y, xl, y);
+                svg_tick_label(html, xl - 6, y + 4, "end", t[i], a->ylog);
+            }
+            fprintf(html, "<text transform=\"translate(%.1f,%.1f) rotate(-90)\" text-anchor=\"middle\" "
+                          "font-style=\"italic\">%s</text>", xl - 40, y0 + a->ph * sc / 2.0, a->ylabel);
+        }
+    }
+    if (bar) { /* the colour bar with a labelled tick per power of ten */
+        int bw = p->w * sc < 420 ? p->w * sc : 420, bh = 12, k;
+        double by = T + p->h * sc + (has_x ? 38 : 4) + 4;
+        pic cb = pic_colorbar(bw, bh);
+        unsigned char *buf;
+        size_t nb = png_encode(&buf, cb.rgb, cb.w, cb.h);
+        char *cb64 = nb ? png_base64(buf, nb) : NULL;
+        fprintf(html, "<image x=\"%d\" y=\"%.1f\" width=\"%d\" height=\"%d\" href=\"data:image/png;base64,%s\"/>",
+                L, by, bw, bh, cb64 ? cb64 : "");
+        for (k = (int)ceil(a->bar_lo); k <= (int)floor(a->bar_hi); k++) {
+            double x = L + (k - a->bar_lo) / (a->bar_hi - a->bar_lo) * bw;
+            fprintf(html, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#333\"/>", x, by + bh, x, by + bh + 4);
+            svg_tick_label(html, x, by + bh + 15, "middle", pow(10, k), 1);
+        }
+        fprintf(html, "<text x=\"%d\" y=\"%.1f\">%s</text>", L + bw + 8, by + 10, a->bar_label);
+        free(cb64);
+        if (nb)
+            free(buf);
+        pic_free(&cb);
+    }
+    fprintf(html, "</svg><figcaption><b>%s.</b> %s</figcaption></figure>\n", p->title, p->caption);
+}
+
+/* a PNG written to OUTDIR/name and inlined in the HTML (inside a labelled
+ * SVG figure when the picture describes its panels) */
 static void picture(const pic *p, const char *name)
 {
     unsigned char *buf;
@@ -144,7 +269,10 @@ static void picture(const pic *p, const char *name)
         }
     }
     b64 = png_base64(buf, n);
-    fprintf(html, "<figure><img alt=\"%s\" src=\"data:image/png;base64,%s\"><figcaption><b>%s.</b> %s</figcaption></figure>\n",
+    if (p->ax.cols > 0)
+        svg_figure(p, b64);
+    else
+        fprintf(html, "<figure><img alt=\"%s\" src=\"data:image/png;base64,%s\"><figcaption><b>%s.</b> %s</figcaption></figure>\n",
             p->title, b64 ? b64 : "", p->title, p->caption);
     fprintf(md, "![%s](%s)\n\n*%s.* %s\n\n", p->title, name, p->title, p->caption);
     free(b64);
@@ -583,6 +711,46 @@ static void section_pareto(void)
     }
 }
 
+/* what a viewer sees: brdf_hammon's formats, tiers and ports in 8-bit sRGB */
+static void section_image_error(void)
+{
+    img_err e[16];
+    pic ref, diff;
+    int n, i;
+    say("image-space error: spheres in every format, tier and port ...");
+    n = img_error_run(e, 16, &ref, &diff);
+    h2("Image-space error: what a pixel shows");
+    para("Lit spheres (two materials x six alpha) rendered with each format, tier and port of brdf_hammon and "
+         "compared with the same render from the double oracle, as 8-bit sRGB codes (radiance = BRDF N.L E, so "
+         "the error is weighted by N.L as a pixel weights it; tone c / (1 + c) per channel so that highlights "
+         "are not clipped) and as CIE76 colour differences (D65; delta E of 1 is about the smallest visible). "
+         "f32 rows: the kernel's arithmetic only (reference at the same float dots). Fixed-point rows: the dots "
+         "rounded to Q15 as a caller must, against the float reference, so input rounding is included. The "
+         "model row: the exact-Vis BRDF against brdf_hammon, both as oracles (Hammon's Vis approximation in "
+         "codes). Code differences: per pixel the largest of the three channels; p99 over the lit pixels.");
+    thead(9, "candidate", "against", "max code diff", "p99 code diff", "mean code diff", "pixels off",
+          "mean dE76", "p99 dE76", "max dE76");
+    for (i = 0; i < n; i++) {
+        char b[8][32];
+        const char *cells[9];
+        cells[0] = e[i].name;
+        cells[1] = e[i].against;
+        cells[2] = fmt(b[0], sizeof b[0], "%.0f", e[i].max_code);
+        cells[3] = fmt(b[1], sizeof b[1], "%.0f", e[i].p99_code);
+        cells[4] = fmt(b[2], sizeof b[2], "%.3f", e[i].mean_code);
+        cells[5] = fmt(b[3], sizeof b[3], "%.2f%% of %ld", 100 * e[i].frac_diff, e[i].pixels);
+        cells[6] = fmt(b[4], sizeof b[4], "%.3f", e[i].mean_de);
+        cells[7] = fmt(b[5], sizeof b[5], "%.2f", e[i].p99_de);
+        cells[8] = fmt(b[6], sizeof b[6], "%.2f", e[i].max_de);
+        trow(cells);
+    }
+    tend();
+    picture(&ref, "image_reference.png");
+    picture(&diff, "image_difference.png");
+    pic_free(&ref);
+    pic_free(&diff);
+}
+
 static void section_pictures(void)
 {
     pic p;
@@ -598,9 +766,6 @@ static void section_pictures(void)
     pic_free(&p);
     p = pic_spheres();
     picture(&p, "spheres.png");
-    pic_free(&p);
-    p = pic_colorbar();
-    picture(&p, "colorbar.png");
     pic_free(&p);
     for (w = 0; w < PIC_N_HEATMAPS; w++) {
         p = pic_heatmap(w);
@@ -653,7 +818,7 @@ static void section_raster(void)
     unsigned char *ref, *img;
     size_t np;
     char b[8][64];
-    pic pp;
+    pic pp = { 0 };
     say("rasterizer: %dx%d ...", W, H);
     g = rs_render(W, H);
     np = (size_t)W * (size_t)H * 3;
@@ -1121,6 +1286,7 @@ int facet_bench_report(int argc, char **argv)
         html = open_memstream(&hb, &hs);
         section_kernels();
         section_tradeoff();
+        section_image_error();
         section_pareto();
         section_arm();
         section_raster();

@@ -82,4 +82,27 @@ build/facet-bench bench lambert --quick --no-peers >/dev/full 2>/dev/null; [ $? 
 build/facet-bench bench lambert --epochs 1002 >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "--epochs 1002: want exit 2"
 build/facet-bench bench lambert --samples 65544 >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "--samples 65544: want exit 2"
 build/facet-bench bench lambert --samples " 8" >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "--samples ' 8': want exit 2"
+# the report's own part on its own (no mca, no Cortex-M traces): a quick run
+# writes a self-contained index.html that is valid UTF-8, whose labelled
+# figures put every label inside their SVG (an uninitialised picture once
+# drew its titles from stack garbage), and whose image-space table has the
+# f32, fixed-point and model rows
+r=build/bench-suite-report
+rm -rf $r && mkdir -p $r
+if build/facet-bench report $r --quick > $r.log 2>&1; then ok; else bad "facet-bench report --quick failed (log $r.log)"; fi
+if command -v python3 >/dev/null 2>&1; then
+    python3 - "$r/index.html" <<'PY' && ok || bad "report index.html: labels outside their figure or not UTF-8"
+import re, sys
+s = open(sys.argv[1], encoding="utf-8").read()  # raises on invalid UTF-8
+figs = re.findall(r'<svg xmlns="http://www.w3.org/2000/svg" width="(\d+)" height="(\d+)"(.*?)</svg>', s, re.S)
+assert len(figs) >= 8, len(figs)
+for w, h, body in figs:
+    for x, y in re.findall(r'<text x="(-?[0-9.]+)" y="(-?[0-9.]+)"', body):
+        assert -1 <= float(x) <= int(w) + 1 and -1 <= float(y) <= int(h) + 1, (x, y, w, h)
+PY
+fi
+for row in '| f32 scalar | oracle |' '| fx (Q15 dots) | oracle |' '| fx_fast (Q15 dots) | oracle |' \
+           '| model: exact-Vis BRDF | brdf_hammon oracle |'; do
+    grep -qF "$row" $r/bench.md && ok || bad "image-space table lacks the row '$row'"
+done
 echo "bench: $pass passed, $fail failed, 0 skipped"
