@@ -105,4 +105,8 @@ for row in '| f32 scalar | oracle |' '| fx (Q15 dots) | oracle |' '| fx_fast (Q1
            '| model: exact-Vis BRDF | brdf_hammon oracle |'; do
     grep -qF "$row" $r/bench.md && ok || bad "image-space table lacks the row '$row'"
 done
+# white furnace: Lambert's directional albedo is 1 (to the quadrature's 2e-4)
+grep -qE '^\| lambert \| any \| 1\.000[0-9] \| 1\.000[0-9] \| 1\.000[0-9] \|' $r/bench.md && ok ||
+    bad "white furnace: Lambert's albedo is not 1"
+grep -qE '^\| diffuse_hammon \| 0\.3 \| ' $r/bench.md && ok || bad "white furnace: no diffuse_hammon row"
 echo "bench: $pass passed, $fail failed, 0 skipped"
