@@ -96,15 +96,6 @@ static void scene_free(scene *s)
     free(s->sphere), free(s->px), free(s->py);
 }
 
-static double srgb_encode(double x)
-{
-    if (!(x > 0))
-        return 0;
-    if (x >= 1)
-        return 1;
-    return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1 / 2.4) - 0.055;
-}
-
 static double srgb_decode(double v)
 {
     return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
@@ -116,7 +107,7 @@ static int code_of(double brdf, double nl)
     double c = brdf * nl * 2.2;
     if (!(c > 0))
         c = 0;
-    return (int)floor(255.0 * srgb_encode(c / (1.0 + c)) + 0.5);
+    return (int)floor(255.0 * pic_srgb(c / (1.0 + c)) + 0.5);
 }
 
 static double lab_f(double t)

@@ -54,7 +54,8 @@ static void put(pic *p, int x, int y, const double c[3])
     }
 }
 
-static double srgb(double x)
+/* linear -> sRGB-encoded, clamped to [0, 1] (pictures.h) */
+double pic_srgb(double x)
 {
     if (!(x > 0))
         return 0;
@@ -196,7 +197,7 @@ pic pic_spheres(void)
                     } else {
                         f = variant(v, nl, nv, lv, alphas[ai], 0.04, 0.7) * nl * 2.2;
                     }
-                    c[0] = c[1] = c[2] = srgb(f + 0.02);
+                    c[0] = c[1] = c[2] = pic_srgb(f + 0.02);
                     put(&p, gap + ai * (S + gap) + x, gap + v * (S + gap) + y, c);
                 }
     grid(&p, 6, N_VAR, S, gap);

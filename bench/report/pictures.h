@@ -50,6 +50,9 @@ pic pic_heatmap_fx(int which);
  * labels it from the picture's ax.bar_lo .. bar_hi) */
 pic pic_colorbar(int w, int h);
 
+/* linear value -> sRGB encoding (IEC 61966-2-1), clamped to [0, 1] */
+double pic_srgb(double x);
+
 void pic_free(pic *p);
 
 #endif
