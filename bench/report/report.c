@@ -470,57 +470,125 @@ static const row *best_batch(const char *kernel)
 
 /* ---- SVG Pareto plot -------------------------------------------------------------- */
 
-typedef struct point { double x, y; char label[48]; int kind; } point; /* kind 0 facet, 1 peer, 2 approx */
+/* a Pareto point: cost on this machine and the two errors, kept apart */
+typedef struct point {
+    double x;       /* est. cycles per sample */
+    double yi;      /* implementation error: max rel. vs the oracle of its own formula (value >= 2^-8) */
+    double ym;      /* model error: max rel. vs the exact term; 0 exact; < 0 not an approximation of it */
+    char label[64];
+    int kind;       /* 0 facet, 1 peer */
+} point;
 
-static void svg_pareto(const char *title, const point *p, int n)
+#define ERR_FLOOR_ 1e-8
+
+/* one panel of a Pareto figure: log cost across, log error up, points
+ * numbered (the table beside the figure names them), the frontier (the
+ * least error within each cost) as a step line */
+static void svg_pareto_panel(int ox, int W, int H, const char *ylabel, const point *p, int n, int model,
+                             double lx0, double lx1)
 {
-    double x0 = 1e30, x1 = -1e30, y0 = 1e30, y1 = -1e30;
-    int W = 640, H = 360, L = 70, B = 40, i, d;
-    double lx0, lx1, ly0, ly1;
-    static const char *col[3] = { "#1f6feb", "#d1242f", "#8250df" };
-    for (i = 0; i < n; i++) {
-        double y = p[i].y > 1e-9 ? p[i].y : 1e-9;
-        if (p[i].x <= 0 || !(p[i].y == p[i].y))
-            continue;
-        if (p[i].x < x0) x0 = p[i].x;
-        if (p[i].x > x1) x1 = p[i].x;
-        if (y < y0) y0 = y;
-        if (y > y1) y1 = y;
+    static const char *col[2] = { "#1f6feb", "#d1242f" };
+    const double ly0 = -8, ly1 = 0.5;
+    int L = 62, B = 40, T = 22, i, d, order[128], m = 0;
+    double best = 1e300;
+#define SX(v) (ox + L + (log10(v) - lx0) / (lx1 - lx0) * (W - L - 10))
+#define SY(v) (T + (ly1 - log10((v) > ERR_FLOOR_ ? ((v) < 2.5 ? (v) : 2.5) : ERR_FLOOR_)) / (ly1 - ly0) * (H - B - T))
+    fprintf(html, "<rect x=\"%d\" y=\"%d\" width=\"%d\" height=\"%d\" fill=\"#fafafa\" stroke=\"#888\"/>\n", ox + L, T,
+            W - L - 10, H - B - T);
+    fprintf(html, "<text x=\"%d\" y=\"14\" font-weight=\"bold\">%s</text>", ox + L, ylabel);
+    for (d = (int)ceil(lx0); d <= (int)floor(lx1); d++) {
+        fprintf(html, "<line x1=\"%.1f\" x2=\"%.1f\" y1=\"%d\" y2=\"%d\" stroke=\"#ddd\"/>", SX(pow(10, d)), SX(pow(10, d)), T, H - B);
+        svg_tick_label(html, SX(pow(10, d)), H - B + 14, "middle", pow(10, d), 1);
     }
-    if (x0 > x1)
-        return;
-    lx0 = floor(log10(x0 * 0.8));
-    lx1 = ceil(log10(x1 * 1.25));
-    ly0 = floor(log10(y0)) ;
-    ly1 = ceil(log10(y1 > 1 ? y1 : 1)) + (y1 >= 1 ? 0.5 : 0);
-    if (lx1 <= lx0) lx1 = lx0 + 1;
-    if (ly1 <= ly0) ly1 = ly0 + 1;
-    fprintf(html, "<figure><svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" font-family=\"sans-serif\" font-size=\"11\">\n", W, H);
-    fprintf(html, "<rect x=\"%d\" y=\"10\" width=\"%d\" height=\"%d\" fill=\"#fafafa\" stroke=\"#888\"/>\n", L, W - L - 10, H - B - 10);
-#define SX(v) (L + (log10(v) - lx0) / (lx1 - lx0) * (W - L - 10))
-#define SY(v) (10 + (ly1 - log10(v)) / (ly1 - ly0) * (H - B - 10))
-    for (d = (int)lx0; d <= (int)lx1; d++)
-        fprintf(html, "<line x1=\"%.1f\" x2=\"%.1f\" y1=\"10\" y2=\"%d\" stroke=\"#ddd\"/><text x=\"%.1f\" y=\"%d\" text-anchor=\"middle\">1e%d</text>\n",
-                SX(pow(10, d)), SX(pow(10, d)), H - B, SX(pow(10, d)), H - B + 14, d);
-    for (d = (int)ly0; d <= (int)ly1; d++)
-        fprintf(html, "<line x1=\"%d\" x2=\"%d\" y1=\"%.1f\" y2=\"%.1f\" stroke=\"#ddd\"/><text x=\"%d\" y=\"%.1f\" text-anchor=\"end\">1e%d</text>\n",
-                L, W - 10, SY(pow(10, d)), SY(pow(10, d)), L - 4, SY(pow(10, d)) + 4, d);
-    fprintf(html, "<text x=\"%d\" y=\"%d\" text-anchor=\"middle\">est. core cycles per sample (log)</text>\n", (W + L) / 2, H - 6);
-    fprintf(html, "<text x=\"14\" y=\"%d\" transform=\"rotate(-90 14 %d)\" text-anchor=\"middle\">max rel. error vs exact model (log)</text>\n", H / 2, H / 2);
-    for (i = 0; i < n; i++) {
-        double y = p[i].y > 1e-9 ? p[i].y : 1e-9;
-        if (p[i].x <= 0 || !(p[i].y == p[i].y))
-            continue;
-        if (isinf(y))
-            y = pow(10, ly1);
-        fprintf(html, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"%s\"/><text x=\"%.1f\" y=\"%.1f\" fill=\"%s\">%s</text>\n",
-                SX(p[i].x), SY(y), col[p[i].kind], SX(p[i].x) + 6, SY(y) - 4 + 9 * (i % 2), col[p[i].kind], p[i].label);
+    for (d = (int)ly0; d <= 0; d++) {
+        fprintf(html, "<line x1=\"%d\" x2=\"%d\" y1=\"%.1f\" y2=\"%.1f\" stroke=\"#ddd\"/>", ox + L, ox + W - 10,
+                SY(pow(10, d)), SY(pow(10, d)));
+        if (d == (int)ly0)
+            fprintf(html, "<text x=\"%d\" y=\"%.1f\" text-anchor=\"end\">%s</text>", ox + L - 4, SY(pow(10, d)) + 4,
+                    model ? "exact" : "<= 10^-8");
+        else
+            svg_tick_label(html, ox + L - 4, SY(pow(10, d)) + 4, "end", pow(10, d), 1);
+    }
+    fprintf(html, "<text x=\"%d\" y=\"%d\" text-anchor=\"middle\" font-style=\"italic\">est. core cycles per sample</text>\n",
+            ox + (W + L) / 2, H - 6);
+    /* the frontier: by cost, each point that lowers the least error so far */
+    for (i = 0; i < n && m < 128; i++)
+        if (p[i].x > 0 && (model ? p[i].ym : p[i].yi) >= 0)
+            order[m++] = i;
+    for (i = 1; i < m; i++) { /* insertion sort by cost */
+        int k = order[i], j2 = i - 1;
+        while (j2 >= 0 && p[order[j2]].x > p[k].x) {
+            order[j2 + 1] = order[j2];
+            j2--;
+        }
+        order[j2 + 1] = k;
+    }
+    fprintf(html, "<polyline fill=\"none\" stroke=\"#2da44e\" stroke-width=\"1.5\" points=\"");
+    for (i = 0; i < m; i++) {
+        double y = model ? p[order[i]].ym : p[order[i]].yi;
+        if (y < best) {
+            if (best < 1e300)
+                fprintf(html, "%.1f,%.1f ", SX(p[order[i]].x), SY(best));
+            best = y;
+            fprintf(html, "%.1f,%.1f ", SX(p[order[i]].x), SY(best));
+        }
+    }
+    if (best < 1e300)
+        fprintf(html, "%.1f,%.1f", ox + W - 10.0, SY(best));
+    fprintf(html, "\"/>\n");
+    if (!m)
+        fprintf(html, "<text x=\"%d\" y=\"%d\" text-anchor=\"middle\" fill=\"#666\">none: these kernels are different "
+                      "models, not approximations of one</text>", ox + (W + L) / 2, (T + H - B) / 2);
+    for (i = 0; i < m; i++) {
+        const point *q = &p[order[i]];
+        double y = model ? q->ym : q->yi;
+        fprintf(html, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3.5\" fill=\"%s\"/><text x=\"%.1f\" y=\"%.1f\" "
+                      "font-size=\"9\" fill=\"%s\">%d</text>\n",
+                SX(q->x), SY(y), col[q->kind], SX(q->x) + 4, SY(y) - 3, col[q->kind], order[i] + 1);
     }
 #undef SX
 #undef SY
-    fprintf(html, "</svg><figcaption><b>Pareto: %s.</b> Blue: facet exact kernels (error = f32 arithmetic); "
-                  "purple: facet approximations (error = model error vs the exact term); red: peers "
-                  "(error vs the oracle of the model they compute). Lower left is better.</figcaption></figure>\n", title);
+}
+
+/* a Pareto figure: implementation error and model error side by side over
+ * the same cost axis, and the numbered table */
+static void svg_pareto(const char *title, const point *p, int n)
+{
+    double x0 = 1e30, x1 = -1e30, lx0, lx1;
+    int W = 470, H = 330, i;
+    char b[4][48];
+    for (i = 0; i < n; i++)
+        if (p[i].x > 0) {
+            x0 = p[i].x < x0 ? p[i].x : x0;
+            x1 = p[i].x > x1 ? p[i].x : x1;
+        }
+    if (x0 > x1)
+        return;
+    lx0 = log10(x0) - 0.15;
+    lx1 = log10(x1) + 0.15;
+    if (lx1 - lx0 < 1)
+        lx0 -= (1 - (lx1 - lx0)) / 2, lx1 = lx0 + 1;
+    fprintf(html, "<figure><svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" font-family=\"sans-serif\" "
+                  "font-size=\"11\">\n", 2 * W, H);
+    svg_pareto_panel(0, W, H, "implementation error (vs its own formula)", p, n, 0, lx0, lx1);
+    svg_pareto_panel(W, W, H, "model error (vs the exact term)", p, n, 1, lx0, lx1);
+    fprintf(html, "</svg><figcaption><b>Pareto: %s.</b> Left: each kernel's arithmetic error against the double "
+                  "oracle of its own formula (max relative, over samples whose value is >= 2^-8; above 1, "
+                  "or inf, drawn at the top). Right: the "
+                  "formula's model error against the exact term (0 drawn as 'exact'; kernels that are a different "
+                  "model rather than an approximation are left out). Blue: facet, red: peers; green: the frontier "
+                  "(the least error within each cost). Numbers: the table below.</figcaption></figure>\n", title);
+    thead(5, "#", "candidate", "est. cycles/sample", "impl. error", "model error");
+    for (i = 0; i < n; i++) {
+        const char *cells[5];
+        cells[0] = fmt(b[0], sizeof b[0], "%d", i + 1);
+        cells[1] = p[i].label;
+        cells[2] = fmt(b[1], sizeof b[1], "%.2f", p[i].x);
+        cells[3] = p[i].yi < 0 ? "-" : g3(b[2], p[i].yi);
+        cells[4] = p[i].ym < 0 ? "n/a" : p[i].ym == 0 ? "exact" : g3(b[3], p[i].ym);
+        trow(cells);
+    }
+    tend();
 }
 
 /* ---- sections ------------------------------------------------------------------ */
@@ -668,49 +736,78 @@ static void section_tradeoff(void)
     tend();
 }
 
+/* the model error of kernel kn against its term's exact form: from the
+ * tradeoff sweep; 0 for the exact kernels; -1 for kernels that are not an
+ * approximation of another (a different model) */
+static double model_of(const char *kn)
+{
+    int t;
+    for (t = 0; t < N_TRADE; t++)
+        if (!strcmp(trades[t].cheap_kernel, kn))
+            return trades[t].max_rel;
+    for (t = 0; t < N_TRADE; t++)
+        if (!strcmp(trades[t].exact_kernel, kn))
+            return 0;
+    return -1;
+}
+
+/* The terms a user chooses among, each with the kernels that compute it
+ * (names not in this build are skipped). */
+static const char *const pareto_groups[][10] = {
+    { "D (normal distribution)", "ggx_d", "beckmann_d", "blinn_phong_d", "gtr_d", "ggx_aniso_d", NULL },
+    { "G1 (masking)", "smith_g1", "smith_g1_hammon", "smith_g1_gtr", NULL },
+    { "G2 (masking-shadowing)", "smith_g2", "smith_g2_hammon", "smith_g2_uncorrelated", "g_implicit", "g_neumann",
+      "g_cook_torrance", "g_kelemen", NULL },
+    { "visibility (G2 / (4 N.L N.V))", "smith_vis", "smith_vis_hammon", "smith_vis_joint_approx", "smith_vis_fit", NULL },
+    { "Fresnel", "fresnel_schlick", "fresnel_cook_torrance", "fresnel_schlick_f90", "fresnel_schlick_sg", NULL },
+    { "diffuse", "diffuse_hammon", "lambert", "diffuse_burley", "diffuse_oren_nayar", "diffuse_hammon_hybrid",
+      "diffuse_hammon_cheap", NULL },
+    { "whole BRDF", "brdf_hammon", NULL },
+};
+#define N_PARETO_GROUPS ((int)(sizeof pareto_groups / sizeof pareto_groups[0]))
+
 static void section_pareto(void)
 {
-    static const char *groups[4][6] = {
-        { "visibility", "smith_vis", "smith_vis_hammon", NULL },
-        { "G1", "smith_g1", "smith_g1_hammon", NULL },
-        { "G2", "smith_g2", "smith_g2_hammon", "smith_g2_uncorrelated", NULL },
-        { "whole BRDF", "brdf_hammon", NULL },
-    };
+    static const char *const formats[] = { "f32", "f32_fast", "fx", "fx_fast" };
     int g;
     h2("Pareto: error vs cycles, per term");
-    fprintf(md, "(The SVG plots are in index.html.)\n\n");
-    for (g = 0; g < 4; g++) {
-        point pts[64];
-        int n = 0, s, i, t;
-        for (s = 1; groups[g][s]; s++) {
-            const char *kn = groups[g][s];
-            double model = 0;
-            int approx = 0;
-            for (t = 0; t < N_TRADE; t++)
-                if (!strcmp(trades[t].cheap_kernel, kn)) {
-                    model = trades[t].max_rel;
-                    approx = 1;
+    para("Every facet kernel of each term in every format and tier on every port this machine runs (batch path), "
+         "and the peers, by cost (est. cycles per sample) and by the two errors, kept apart. Fixed-point "
+         "implementation error: against the oracle at the same Q15 inputs (the input rounding is in the "
+         "image-space section). (The SVG plots are in index.html.)");
+    for (g = 0; g < N_PARETO_GROUPS; g++) {
+        point pts[128];
+        int n = 0, s2, i, f;
+        for (s2 = 1; pareto_groups[g][s2] && n < 128; s2++) {
+            const char *kn = pareto_groups[g][s2];
+            double model = model_of(kn);
+            for (f = 0; f < 4; f++)
+                for (i = 0; i < n_rows && n < 128; i++) {
+                    const row *x = &rows[i];
+                    if (strcmp(x->kernel, kn) || strcmp(x->format, formats[f]) || strcmp(x->path, "batch"))
+                        continue;
+                    pts[n].x = est(x->r.thr.median);
+                    pts[n].yi = x->r.err.max_rel_vis;
+                    pts[n].ym = model;
+                    pts[n].kind = 0;
+                    snprintf(pts[n].label, sizeof pts[n].label, "%s %s %s", kn, x->format, x->port);
+                    n++;
                 }
-            for (i = 0; i < n_rows && n < 64; i++) {
+            for (i = 0; i < n_rows && n < 128; i++) {
                 const row *x = &rows[i];
-                if (strcmp(x->kernel, kn) || strcmp(x->format, "f32"))
-                    continue;
-                if (strcmp(x->path, "batch") && strcmp(x->path, "peer"))
+                if (strcmp(x->kernel, kn) || strcmp(x->path, "peer"))
                     continue;
                 pts[n].x = est(x->r.thr.median);
-                if (!strcmp(x->path, "peer")) {
-                    pts[n].kind = 1;
-                    pts[n].y = x->r.err.max_rel;
-                    snprintf(pts[n].label, sizeof pts[n].label, "%s %s", x->port, kn);
-                } else {
-                    pts[n].kind = approx ? 2 : 0;
-                    pts[n].y = approx ? (model > x->r.err.max_rel ? model : x->r.err.max_rel) : x->r.err.max_rel;
-                    snprintf(pts[n].label, sizeof pts[n].label, "%s %s", kn, x->port);
-                }
+                pts[n].yi = x->r.err.max_rel_vis;
+                /* the brdf peers compute the exact-Vis model; single-term peers the kernel's own formula */
+                pts[n].ym = !strcmp(kn, "brdf_hammon") ? 0 : model;
+                pts[n].kind = 1;
+                snprintf(pts[n].label, sizeof pts[n].label, "peer %s (%s)", x->port, kn);
                 n++;
             }
         }
-        svg_pareto(groups[g][0], pts, n);
+        if (n)
+            svg_pareto(pareto_groups[g][0], pts, n);
     }
 }
 

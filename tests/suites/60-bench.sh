@@ -91,11 +91,12 @@ r=build/bench-suite-report
 rm -rf $r && mkdir -p $r
 if build/facet-bench report $r --quick > $r.log 2>&1; then ok; else bad "facet-bench report --quick failed (log $r.log)"; fi
 if command -v python3 >/dev/null 2>&1; then
-    python3 - "$r/index.html" <<'PY' && ok || bad "report index.html: labels outside their figure or not UTF-8"
+    python3 - "$r/index.html" <<'PY' && ok || bad "report index.html: labels outside their figure, an inf or nan coordinate, or not UTF-8"
 import re, sys
 s = open(sys.argv[1], encoding="utf-8").read()  # raises on invalid UTF-8
 figs = re.findall(r'<svg xmlns="http://www.w3.org/2000/svg" width="(\d+)" height="(\d+)"(.*?)</svg>', s, re.S)
 assert len(figs) >= 8, len(figs)
+assert not re.search(r' (?:x|y|cx|cy|x1|x2|y1|y2|points)="[^"]*(?:inf|nan)', s, re.I), "an inf or nan coordinate"
 for w, h, body in figs:
     for x, y in re.findall(r'<text x="(-?[0-9.]+)" y="(-?[0-9.]+)"', body):
         assert -1 <= float(x) <= int(w) + 1 and -1 <= float(y) <= int(h) + 1, (x, y, w, h)
