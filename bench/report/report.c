@@ -811,6 +811,137 @@ static void section_pareto(void)
     }
 }
 
+/* ---- the chooser: per term and target, the most accurate choice within
+ * each cost ------------------------------------------------------------------ */
+
+static double armv(const char *what, const char *kernel, const char *cpu);
+
+typedef struct choice { const char *kernel, *format; double cost, impl, model; } choice;
+
+/* a candidate's implementation error: measured on this machine's port (the
+ * Cortex-M builds run the scalar C: fixed point is bit-exact everywhere,
+ * the f32 scalar code is the same source) */
+static double impl_of(const char *kn, const char *format, const char *port)
+{
+    const row *x = find_row(kn, format, port, "batch");
+    return x ? x->r.err.max_rel_vis : -1;
+}
+
+static double total_of(const choice *c) { return (c->model > 0 ? c->model : 0) + c->impl; }
+
+/* the frontier of cands by cost: each candidate more accurate than every
+ * cheaper one, as "<= cost: kernel format (error)" */
+static void frontier_cell(char *out, size_t cap, choice *c, int n, const char *unit)
+{
+    double best = 1e300;
+    int i, j;
+    size_t len = 0;
+    for (i = 1; i < n; i++) { /* by cost, then by error */
+        choice k = c[i];
+        for (j = i - 1; j >= 0 && (c[j].cost > k.cost || (c[j].cost == k.cost && total_of(&c[j]) > total_of(&k))); j--)
+            c[j + 1] = c[j];
+        c[j + 1] = k;
+    }
+    out[0] = 0;
+    for (i = 0; i < n; i++) {
+        double e = total_of(&c[i]);
+        char eb[32];
+        if (e >= best * 0.999)
+            continue;
+        best = e;
+        len += (size_t)snprintf(out + len, len < cap ? cap - len : 0, "%s<= %.3g %s: <b>%s %s</b> (error %s%s)",
+                                len ? "<br>" : "", c[i].cost, unit, c[i].kernel, c[i].format, g3(eb, e),
+                                c[i].model > 0 ? ", mostly model" : "");
+        if (len >= cap)
+            break;
+    }
+    if (!out[0])
+        snprintf(out, cap, "-");
+}
+
+static void section_choose(void)
+{
+    static const char *const fmts[] = { "f32", "f32_fast", "fx", "fx_fast" };
+    /* targets: a port of this machine (measured est. cycles), or a Cortex-M
+     * core (arm.tsv: TRM-modelled M0 cycles, llvm-mca M4 cycles) */
+    static const struct { const char *name, *port, *cpu, *unit; int f32soft, f32fpu; } tg[] = {
+        { "AVX-512 (this machine)", "avx512", NULL, "cyc", 0, 0 },
+        { "AVX2 (this machine)", "avx2", NULL, "cyc", 0, 0 },
+        { "SSE2 (this machine)", "sse2", NULL, "cyc", 0, 0 },
+        { "Cortex-M0", NULL, "cortex-m0", "cyc (TRM model)", 1, 0 },
+        { "Cortex-M4", NULL, "cortex-m4", "cyc (llvm-mca)", 1, 0 },
+        { "Cortex-M4 with FPU", NULL, "cortex-m4", "cyc (llvm-mca)", 0, 1 },
+    };
+    int g, t;
+    h2("Which one to use");
+    para("For each term and target: the Pareto frontier of kernel variant x format x tier by cost and by error "
+         "against the exact term, read as 'within this cost, the most accurate choice is ...'. Error = model "
+         "error (the formula against the exact term, from the tradeoff sweep; 0 for exact kernels, left out for "
+         "terms whose variants are different models) + implementation error (max relative against the formula's "
+         "own oracle, where the value is >= 2^-8, measured on that port; Cortex-M: the scalar code's). Costs: "
+         "this machine's ports in est. core cycles per sample (batch, %s run); Cortex-M in cycles per call, "
+         "MODELLED from executed-instruction traces (M0: TRM timings, M4: llvm-mca; section Cortex-M). NEON, "
+         "Helium and RISC-V are not measured on this machine. Details: the Pareto figures below, then the long "
+         "tables.", quick ? "a quick" : "a full");
+    for (g = 0; g < N_PARETO_GROUPS; g++) {
+        int any = 0;
+        for (t = 0; t < (int)(sizeof tg / sizeof tg[0]); t++) {
+            choice c[64];
+            int n = 0, s2, f;
+            static char cell[2048];
+            const char *cells[3];
+            for (s2 = 1; pareto_groups[g][s2]; s2++) {
+                const char *kn = pareto_groups[g][s2];
+                double model = model_of(kn);
+                for (f = 0; f < 4 && n < 64; f++) {
+                    double cost = -1, impl;
+                    if (tg[t].port) {
+                        const row *x = find_row(kn, fmts[f], tg[t].port, "batch");
+                        if (x)
+                            cost = est(x->r.thr.median);
+                        impl = impl_of(kn, fmts[f], tg[t].port);
+                    } else {
+                        const char *what = f == 0 ? (tg[t].f32fpu ? "f32fpu" : tg[t].f32soft ? "f32soft" : NULL)
+                                                  : f == 1 ? NULL : f == 2 ? "fx" : "fxfast";
+                        char key[32];
+                        if (!what)
+                            continue;
+                        snprintf(key, sizeof key, "%s-%s", what, !strcmp(tg[t].cpu, "cortex-m0") ? "m0cyc" : "mca");
+                        cost = armv(key, kn, tg[t].cpu);
+                        impl = impl_of(kn, fmts[f], "scalar");
+                    }
+                    if (cost <= 0 || impl < 0)
+                        continue;
+                    c[n].kernel = kn;
+                    c[n].format = fmts[f];
+                    c[n].cost = cost;
+                    c[n].impl = impl;
+                    c[n].model = model;
+                    n++;
+                }
+            }
+            if (!n)
+                continue;
+            if (!any) {
+                fprintf(md, "\n### %s\n\n", pareto_groups[g][0]);
+                fprintf(html, "<h3>%s</h3>\n", pareto_groups[g][0]);
+                thead(3, "target", "candidates", "within this cost, the most accurate choice");
+                any = 1;
+            }
+            frontier_cell(cell, sizeof cell, c, n, tg[t].unit);
+            {
+                char nb[16];
+                cells[0] = tg[t].name;
+                cells[1] = fmt(nb, sizeof nb, "%d", n);
+                cells[2] = cell;
+                trow(cells);
+            }
+        }
+        if (any)
+            tend();
+    }
+}
+
 /* what a viewer sees: brdf_hammon's formats, tiers and ports in 8-bit sRGB */
 static void section_image_error(void)
 {
@@ -1504,33 +1635,19 @@ int facet_bench_report(int argc, char **argv)
     sweep_tradeoffs();
 
     fprintf(md, "\n# Benchmarks (bench/)\n\n");
+    /* the summary first, the figures next, the long tables last (the
+     * targets need the rasterizer's figures, so they follow it) */
+    section_choose();
     section_clock();
-    /* targets need the rasterizer figures: render the later sections to a
-     * buffer first?  Simpler: the rasterizer runs before the targets. */
-    {
-        FILE *m0 = md, *h0 = html;
-        char *mb = NULL, *hb = NULL;
-        size_t ms = 0, hs = 0;
-        md = open_memstream(&mb, &ms);
-        html = open_memstream(&hb, &hs);
-        section_kernels();
-        section_tradeoff();
-        section_image_error();
-        section_furnace();
-        section_pareto();
-        section_arm();
-        section_raster();
-        section_pictures();
-        fclose(md);
-        fclose(html);
-        md = m0;
-        html = h0;
-        section_targets();
-        fwrite(mb, 1, ms, md);
-        fwrite(hb, 1, hs, html);
-        free(mb);
-        free(hb);
-    }
+    section_pareto();
+    section_image_error();
+    section_furnace();
+    section_tradeoff();
+    section_pictures();
+    section_arm();
+    section_raster();
+    section_targets();
+    section_kernels();
     fclose(md);
     fclose(html);
     write_index();
