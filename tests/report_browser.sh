@@ -1,19 +1,20 @@
 #!/bin/sh
 # report_browser.sh REPORT_DIR - loads REPORT_DIR/index.html in headless
-# Chromium and fails on an image that does not show (failed to load, or
-# zero width) or on a script error (an uncaught exception or rejection),
-# with no image at all also a failure; keeps a screenshot of the page at
+# Chromium and fails on an image that does not show (an <img> that failed
+# to load or has no width, an SVG <image> whose data does not decode), on a
+# script error (an uncaught exception or rejection), and on a page with no
+# image at all; keeps a screenshot of the page's top 1280 x 4000 px at
 # REPORT_DIR/../report-screenshot.png (under build/).  It proves it can
-# fail: the same check on a copy with one image's data removed, and on a
-# copy with a failing script, must fail.  Called by tests/suites/60-bench.sh
-# on its quick report; skipped, with the reason, when chromium is not
-# installed.  Needs a page that runs its scripts within 10 s of virtual time.
+# fail: the same check on copies with one image's data removed (an <img>,
+# an SVG <image>) and on a copy with a failing script must fail.  Called by
+# tests/suites/60-bench.sh on its quick report; skipped, with the reason,
+# when chromium is not installed.
 #
 # How: a copy of the page gets, first in <head>, a script that records
-# every error event (capture phase: also an <img> that fails to load) and,
-# on load, checks every image's naturalWidth and writes one verdict line
-# into the page; `chromium --dump-dom` prints the page after load, and the
-# verdict is read from it.
+# every error event (capture phase: also an image that fails to load) and,
+# on load, checks every image and writes one verdict line into the page;
+# `chromium --dump-dom` (10 s of virtual time) prints the page after that,
+# and the verdict is read from it.
 rep=${1:-build/report}
 pass=0 fail=0
 ok() { pass=$((pass + 1)); }
@@ -50,21 +51,31 @@ probe='<script>(function () {
   window.addEventListener("error", function (e) {
     var t = e.target;
     if (t && t !== window && t.tagName)
-      errs.push("not loaded: <" + t.tagName.toLowerCase() + "> " + (t.alt || "") + " " + String(t.src || t.href || "").slice(0, 60));
+      errs.push("not loaded: <" + t.tagName.toLowerCase() + "> " + String(t.getAttribute("src") || t.getAttribute("href") || "").slice(0, 60));
     else
       errs.push("script error: " + e.message + " (" + e.filename + ":" + e.lineno + ")");
   }, true);
   window.addEventListener("unhandledrejection", function (e) { errs.push("unhandled rejection: " + e.reason); });
   window.addEventListener("load", function () {
-    var im = document.images, shown = 0, i, p;
+    /* <img>: loaded with a width; SVG <image>: its href decodes as an image */
+    var im = document.images, sv = document.getElementsByTagName("image"), n = im.length + sv.length;
+    var shown = 0, waits = [], i;
     for (i = 0; i < im.length; i++) {
       if (im[i].complete && im[i].naturalWidth > 0) shown++;
-      else errs.push("image not shown: " + (im[i].alt || String(im[i].src).slice(0, 60)));
+      else errs.push("image not shown: <img> " + (im[i].alt || String(im[i].src).slice(0, 60)));
     }
-    p = document.createElement("pre");
-    p.id = "facet-browser-verdict";
-    p.textContent = "images " + im.length + " shown " + shown + " errors " + errs.length + (errs.length ? ": " + errs.join("; ") : "");
-    document.body.appendChild(p);
+    for (i = 0; i < sv.length; i++) (function (href) {
+      var t = new Image();
+      t.src = href;
+      waits.push(t.decode().then(function () { if (t.naturalWidth > 0) shown++; else errs.push("image not shown: <image> (empty) " + href.slice(0, 60)); },
+                                 function () { errs.push("image not shown: <image> " + href.slice(0, 60)); }));
+    })(sv[i].getAttribute("href") || sv[i].getAttribute("xlink:href") || "");
+    Promise.all(waits).then(function () {
+      var p = document.createElement("pre");
+      p.id = "facet-browser-verdict";
+      p.textContent = "images " + n + " shown " + shown + " errors " + errs.length + (errs.length ? ": " + errs.join("; ") : "");
+      document.body.appendChild(p);
+    });
   });
 })();</script>'
 # check PAGE: prints the verdict line, returns 0 when the page is clean
@@ -87,12 +98,15 @@ cp "$rep/index.html" "$work/report.html"
 for f in "$abs_rep"/*.png; do [ -e "$f" ] && ln -sf "$f" "$work/"; done
 if v=$(check "$work/report.html"); then ok; else bad "$rep/index.html in $browser: $v"; fi
 echo "report-browser: $rep/index.html: $v"
-# a copy with one image's data removed, and one with a failing script:
-# the check must fail on each
-awk '!done && sub(/src="data:image\/png;base64,[A-Za-z0-9+\/=]*"/, "src=\"removed.png\"") { done = 1 } { print }' \
-    "$rep/index.html" > "$work/one-image-removed.html"
-if cmp -s "$rep/index.html" "$work/one-image-removed.html"; then bad "no data-URI image in the report to remove"
-elif v=$(check "$work/one-image-removed.html"); then bad "a missing image passes: $v"; else ok; fi
+# copies with one image's data removed (an <img>, an SVG <image>) and one
+# with a failing script: the check must fail on each (a kind of image the
+# report does not have is not tested)
+for a in src href; do
+    awk -v a=$a '!done && sub(" " a "=\"data:image/png;base64,[A-Za-z0-9+/=]*\"", " " a "=\"removed.png\"") { done = 1 } { print }' \
+        "$rep/index.html" > "$work/$a-image-removed.html"
+    if cmp -s "$rep/index.html" "$work/$a-image-removed.html"; then echo "report-browser: no $a= data-URI image to remove"
+    elif v=$(check "$work/$a-image-removed.html"); then bad "a missing image ($a=) passes: $v"; else ok; fi
+done
 sed 's|</body>|<script>facet_no_such_function();</script></body>|' "$rep/index.html" > "$work/script-error.html"
 if v=$(check "$work/script-error.html"); then bad "a script error passes: $v"; else ok; fi
 # the screenshot, of the report itself: the top 1280 x 4000 px

@@ -164,6 +164,8 @@ static void err_of(bench_err *e, const kdata *d, const float *got, const double 
     for (i = 0; i < d->n; i++) {
         double rel = bench_rel_err(got[i], want[i]);
         sum += rel;
+        if (fabs(want[i]) >= 0x1p-8 && rel > e->max_rel_vis)
+            e->max_rel_vis = rel;
         if (rel > e->max_rel) {
             e->max_rel = rel;
             e->got = got[i];
@@ -362,6 +364,8 @@ static void fx_err(bench_err *e, const bench_fx *fx, const kdata *d, const fxdat
         sum += rel;
         if (rel > e->max_rel)
             e->max_rel = rel;
+        if (fabs(x->want[i]) >= 0x1p-8 && rel > e->max_rel_vis)
+            e->max_rel_vis = rel;
         if (!fast && fx->fk->out_bits == 64 && x->want[i] >= 16.0) {
             if (rel > e->big_rel)
                 e->big_rel = rel;

@@ -26,6 +26,8 @@ void bench_defaults(bench_opts *o);
 
 typedef struct bench_err {
     double max_rel, mean_rel;   /* relative to the oracle (floor 2^-100) */
+    double max_rel_vis;         /* max_rel over the samples whose oracle value is >= 2^-8:
+                                 * what can show in a picture (the Pareto plots) */
     float arg[FACET_MAX_INPUTS];/* input at the max */
     double got, want;
     long n;

@@ -28,6 +28,18 @@ void pic_free(pic *p)
     p->rgb = NULL;
 }
 
+/* the panel grid of a picture, for the report's labels (pictures.h) */
+static void grid(pic *p, int cols, int rows, int S, int gap)
+{
+    p->ax.cols = cols;
+    p->ax.rows = rows;
+    p->ax.x0 = gap;
+    p->ax.y0 = gap;
+    p->ax.pw = S;
+    p->ax.ph = S;
+    p->ax.gap = gap;
+}
+
 static void put(pic *p, int x, int y, const double c[3])
 {
     unsigned char *q;
@@ -42,7 +54,8 @@ static void put(pic *p, int x, int y, const double c[3])
     }
 }
 
-static double srgb(double x)
+/* linear -> sRGB-encoded, clamped to [0, 1] (pictures.h) */
+double pic_srgb(double x)
 {
     if (!(x > 0))
         return 0;
@@ -139,6 +152,16 @@ pic pic_slices(void)
                     }
                     put(&p, gap + ai * (S + gap) + x, gap + v * (S + gap) + y, c);
                 }
+    grid(&p, 3, N_VAR, S, gap);
+    for (ai = 0; ai < 3; ai++)
+        snprintf(p.ax.col_title[ai], sizeof p.ax.col_title[ai], "alpha = %g", alphas[ai]);
+    for (v = 0; v < N_VAR; v++)
+        snprintf(p.ax.row_title[v], sizeof p.ax.row_title[v], "%s", var_name[v]);
+    snprintf(p.ax.xlabel, sizeof p.ax.xlabel, "theta_h (deg)");
+    snprintf(p.ax.ylabel, sizeof p.ax.ylabel, "theta_d (deg)");
+    p.ax.xmin = 0, p.ax.xmax = 90, p.ax.ymin = 90, p.ax.ymax = 0; /* theta_d grows downwards */
+    p.ax.bar_lo = -3, p.ax.bar_hi = 3;
+    snprintf(p.ax.bar_label, sizeof p.ax.bar_label, "BRDF value (1/sr)");
     snprintf(p.title, sizeof p.title, "BRDF slices");
     snprintf(p.caption, sizeof p.caption,
              "Disney-style slices: theta_h 0..90 deg across, theta_d 0..90 deg down, phi_d = 90 deg. "
@@ -174,9 +197,14 @@ pic pic_spheres(void)
                     } else {
                         f = variant(v, nl, nv, lv, alphas[ai], 0.04, 0.7) * nl * 2.2;
                     }
-                    c[0] = c[1] = c[2] = srgb(f + 0.02);
+                    c[0] = c[1] = c[2] = pic_srgb(f + 0.02);
                     put(&p, gap + ai * (S + gap) + x, gap + v * (S + gap) + y, c);
                 }
+    grid(&p, 6, N_VAR, S, gap);
+    for (ai = 0; ai < 6; ai++)
+        snprintf(p.ax.col_title[ai], sizeof p.ax.col_title[ai], "alpha = %g", alphas[ai]);
+    for (v = 0; v < N_VAR; v++)
+        snprintf(p.ax.row_title[v], sizeof p.ax.row_title[v], "%s", var_name[v]);
     snprintf(p.title, sizeof p.title, "Lit spheres across alpha");
     snprintf(p.caption, sizeof p.caption,
              "One directional light from the upper left, view along the axis, radiance = BRDF * N.L * 2.2, "
@@ -223,6 +251,14 @@ static pic panels(const double alphas[4], panel_cell cell, const void *ctx)
                 err_colour(cell(ctx, (x + 0.5) / S, 1 - (y + 0.5) / S, alphas[ai], y, S), c);
                 put(&p, gap + ai * (S + gap) + x, gap + y, c);
             }
+    grid(&p, 4, 1, S, gap);
+    for (ai = 0; ai < 4; ai++)
+        snprintf(p.ax.col_title[ai], sizeof p.ax.col_title[ai], "alpha = %g", alphas[ai]);
+    snprintf(p.ax.xlabel, sizeof p.ax.xlabel, "N.L");
+    snprintf(p.ax.ylabel, sizeof p.ax.ylabel, "N.V");
+    p.ax.xmin = 0, p.ax.xmax = 1, p.ax.ymin = 0, p.ax.ymax = 1;
+    p.ax.bar_lo = -7, p.ax.bar_hi = 0;
+    snprintf(p.ax.bar_label, sizeof p.ax.bar_label, "relative error");
     return p;
 }
 
@@ -239,6 +275,15 @@ pic pic_heatmap(int which)
     static const double alphas[4] = { 0.02, 0.1, 0.4, 1.0 };
     pic p = panels(alphas, model_cell, &which);
     snprintf(p.title, sizeof p.title, "%s", hm_name[which]);
+    if (which == 2) { /* one cosine: the panels are all the same (N.V, alpha) map */
+        p.ax.cols = 1;
+        snprintf(p.ax.col_title[0], sizeof p.ax.col_title[0], "every alpha");
+        snprintf(p.ax.xlabel, sizeof p.ax.xlabel, "N.V");
+        snprintf(p.ax.ylabel, sizeof p.ax.ylabel, "alpha");
+        p.ax.ymin = 1.0 / 1024, p.ax.ymax = 1, p.ax.ylog = 1;
+    } else if (which >= 3) {
+        snprintf(p.ax.xlabel, sizeof p.ax.xlabel, "N.L (L.V = N.L N.V)");
+    }
     if (which == 2)
         snprintf(p.caption, sizeof p.caption,
                  "Relative model error, log10 from -7 (dark) to 0 (white). x: N.V 0..1; y: alpha "
@@ -272,6 +317,8 @@ pic pic_heatmap_f32(void)
 {
     static const double alphas[4] = { 0.001, 0.02, 0.2, 1.0 };
     pic p = panels(alphas, f32_cell, NULL);
+    p.ax.bar_lo = -10, p.ax.bar_hi = -3;
+    snprintf(p.ax.xlabel, sizeof p.ax.xlabel, "N.L (plane of incidence)");
     snprintf(p.title, sizeof p.title, "brdf_hammon f32 (scalar) vs oracle");
     snprintf(p.caption, sizeof p.caption,
              "Relative arithmetic error of the f32 kernel, log10 from -10 (dark) to -3 (white), over N.L "
@@ -308,7 +355,9 @@ pic pic_heatmap_fx(int which)
 {
     static const double alphas[4] = { 0.001, 0.02, 0.2, 1.0 };
     pic p = panels(alphas, fx_cell, &which);
+    snprintf(p.ax.xlabel, sizeof p.ax.xlabel, "N.L (plane of incidence)");
     if (which == 0) {
+        p.ax.bar_lo = -10, p.ax.bar_hi = -3;
         snprintf(p.title, sizeof p.title, "brdf_hammon fixed point vs oracle at the same Q15 inputs");
         snprintf(p.caption, sizeof p.caption,
                  "Relative arithmetic error of facet_brdf_hammon_fx (UQ40.24) against the double oracle "
@@ -326,9 +375,9 @@ pic pic_heatmap_fx(int which)
     return p;
 }
 
-pic pic_colorbar(void)
+pic pic_colorbar(int W, int H)
 {
-    int W = 280, H = 14, x, y;
+    int x, y;
     pic p = pic_new(W, H);
     for (x = 0; x < W; x++)
         for (y = 0; y < H; y++) {

@@ -3,11 +3,28 @@
 #ifndef FACET_BENCH_PICTURES_H
 #define FACET_BENCH_PICTURES_H
 
+/* How the report labels a picture (report.c draws it as SVG around the
+ * PNG): a grid of cols x rows panels of pw x ph pixels, the first at (x0,
+ * y0), gap pixels apart; a title over each column and beside each row; per
+ * panel axes (ticks under the bottom row and left of the first column) with
+ * linear or log10 scales; and, for colour-mapped pictures, the colour bar's
+ * range in log10 units.  cols == 0: no labels. */
+typedef struct pic_axes {
+    int cols, rows, x0, y0, pw, ph, gap;
+    char col_title[12][40], row_title[16][48];
+    char xlabel[48], ylabel[48];
+    double xmin, xmax, ymin, ymax; /* value at the panel's left / right, bottom / top edge */
+    int xlog, ylog;                /* 1: the scale is log10 (ticks at powers of 2 or 10) */
+    double bar_lo, bar_hi;         /* colour bar: log10 of the value at its ends (bar_lo < bar_hi) */
+    char bar_label[80];            /* "" : no colour bar */
+} pic_axes;
+
 typedef struct pic {
     int w, h;
     unsigned char *rgb;
     char title[160];
     char caption[600];
+    pic_axes ax;
 } pic;
 
 /* Disney-style BRDF slices: theta_h across (0..90 deg), theta_d down
@@ -29,8 +46,12 @@ pic pic_heatmap_f32(void);
  * which 0: arithmetic error vs the oracle at the same Q15 inputs;
  * which 1: including the Q15 rounding of the inputs (vs the float dots) */
 pic pic_heatmap_fx(int which);
-/* the colour bar used by the heatmaps: log10 error from -7 to 0 */
-pic pic_colorbar(void);
+/* a horizontal colour bar of the heatmaps' ramp, W x H pixels (the report
+ * labels it from the picture's ax.bar_lo .. bar_hi) */
+pic pic_colorbar(int w, int h);
+
+/* linear value -> sRGB encoding (IEC 61966-2-1), clamped to [0, 1] */
+double pic_srgb(double x);
 
 void pic_free(pic *p);
 

@@ -4,6 +4,7 @@
 # armv7 (hard float; NEON objects alone get -mfpu=neon-vfpv4) and run under
 # qemu-user; then the facet command's tests through qemu.  Skipped, with the
 # reason, where the cross compiler or qemu is missing (.ci/run installs them).
+# lane: emulators
 . tests/suite_lib.sh
 for target in aarch64 armv7; do
     case $target in

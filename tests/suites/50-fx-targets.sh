@@ -17,8 +17,9 @@
 #                  float helper; the same check must reject an image that
 #                  calls the oracle; prints the image sizes
 # A missing toolchain or emulator skips its target with the reason.
+# lane: emulators
 . tests/suite_lib.sh
-B=build
+B=build/emu # its own tree: it runs beside the host suites (tests/check.sh)
 skip() { echo "SKIP $1: $2"; echo "$1: 0 passed, 0 failed, 1 skipped"; }
 have() { command -v "$1" > /dev/null 2>&1; }
 mk() { $MAKE -s -j"$JOBS" BUILD=$B "$@" > "$B/fx-$1.build.log" 2>&1; }
