@@ -23,7 +23,7 @@ FX_A32_CC ?= arm-linux-gnueabihf-gcc
 FX_CM_FLAGS = -mthumb -ffunction-sections -fdata-sections
 FX_CM_LINK  = --specs=rdimon.specs -nostartfiles -T tests/cortexm/mps2.ld tests/cortexm/startup.c
 
-.PHONY: fx-cortex-m fx-rv32 fx-linux-cross fx-portable
+.PHONY: fx-cortex-m fx-rv32 fx-linux-cross fx-portable fx-host-syms
 fx-cortex-m: $(BUILD)/fx/cortex-m0/test_fx_hash.elf $(BUILD)/fx/cortex-m4/test_fx_hash.elf \
              $(foreach c,0 4,$(foreach f,fw fw_fast fw_base fw_oracle,$(BUILD)/fx/cortex-m$c/$f.elf)) \
              $(BUILD)/fx/cortex-m0/fx_kernels.o $(BUILD)/fx/cortex-m4/fx_kernels.o \
@@ -54,6 +54,16 @@ $(BUILD)/fx/cortex-m%/fw_base.elf: $(FX_FW_DEPS)
 $(BUILD)/fx/cortex-m%/fw_oracle.elf: $(FX_FW_DEPS) src/oracle.c
 	@mkdir -p $(dir $@)
 	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_FW_FLAGS) -DFW_TIER=9 tests/cortexm/fw_main.c $(FX_SOURCES) src/oracle.c -o $@ -lm
+
+# every library source's global symbols ("src/x.c name"), compiled for the
+# host at -O0 for the names alone: what the firmware check forbids outside
+# the fixed-point sources (50-fx-targets.sh)
+fx-host-syms: $(BUILD)/fx/host-syms.txt
+$(BUILD)/fx/host-syms.txt: $(LIB_SRC) $(HEADERS) $(wildcard src/*.h)
+	@mkdir -p $(BUILD)/fx/host-syms
+	for f in $(LIB_SRC); do $(CC) $(BASEFLAGS) -O0 -g0 -c $$f -o $(BUILD)/fx/host-syms/x.o && \
+	    nm -g --defined-only $(BUILD)/fx/host-syms/x.o | awk -v f=$$f 'NF == 3 { print f, $$3 }' || exit 1; done > $@.tmp
+	mv $@.tmp $@
 
 # -Os objects: the size table (README) and the no-helper-call check
 $(BUILD)/fx/cortex-m%/fx_kernels.o: src/fx_kernels.c $(FX_HDRS)

@@ -12,8 +12,8 @@
 #                  --gc-sections, newlib) on M0 and M4, both tiers' batch:
 #                  runs on qemu (batch == scalar kernel), holds no symbol of
 #                  the library outside the fixed-point sources (f32 kernels,
-#                  dispatcher, CPU detection, samplers, oracle: the host
-#                  libfacet.a's other members), no libm function and no
+#                  dispatcher, CPU detection, samplers, oracle: src/*.c
+#                  compiled for the host, names only), no libm function and no
 #                  float helper; the same check must reject an image that
 #                  calls the oracle; prints the image sizes
 # A missing toolchain or emulator skips its target with the reason.
@@ -26,22 +26,22 @@ mk() { $MAKE -s -j"$JOBS" BUILD=$B "$@" > "$B/fx-$1.build.log" 2>&1; }
 mkdir -p $B
 
 # fw_bad ELF: the symbols of ELF that a firmware link of the fixed-point
-# sources must not hold: a global the host libfacet.a defines in a member
-# that is not one of them (fx_batch.o is libfacet's dispatched batch API,
-# which src/fx_only/fx_batch_scalar.c defines for firmware, with
+# sources must not hold: a global that a library source outside them
+# defines (src/*.c compiled for the host, names only: tests/fx.mk
+# fx-host-syms; src/fx_batch.c is libfacet's dispatched batch API, which
+# src/fx_only/fx_batch_scalar.c defines for firmware, with
 # facet_fx_port_name), a libm function, a soft-float helper
 fw_bad() {
     arm-none-eabi-nm "$1" | awk '{ print $NF }' | sort -u > "$B/fx-fw.syms"
-    { awk -v ok="$(for f in $($MAKE -s fx-sources) src/fx_batch.c; do basename "$f" .c; done | tr '\n' ' ')" '
-          BEGIN { n = split(ok, a, " "); for (i = 1; i <= n; i++) allowed[a[i] ".o:"] = 1 }
-          /:$/ { m = $0; next }
-          NF == 3 && $2 ~ /^[A-TV-Z]$/ && !(m in allowed) && $3 != "facet_fx_port_name" { print $3 }' "$B/fx-fw.lib.syms"
+    { awk -v ok="$($MAKE -s fx-sources) src/fx_batch.c" '
+          BEGIN { n = split(ok, a, " "); for (i = 1; i <= n; i++) allowed[a[i]] = 1 }
+          !($1 in allowed) && $2 != "facet_fx_port_name" { print $2 }' "$B/fx/host-syms.txt"
       grep -E '^(__aeabi_([fd]|[ui]?[il]2[fd])|__(add|sub|mul|div)[sd]f3|__float|__fix|__extend|__trunc|__ieee754|(sqrt|pow|exp|expm1|log|log1p|sin|cos|tan|atan2|cbrt|hypot)f?$)' "$B/fx-fw.syms"
     } | sort -u | comm -12 - "$B/fx-fw.syms"
 }
 fw_check() {
-    if ! mk lib || ! nm -g --defined-only $B/libfacet.a > "$B/fx-fw.lib.syms" 2>/dev/null; then
-        cat "$B/fx-lib.build.log"; echo "ERROR fx-firmware: host libfacet.a build failed"; return
+    if ! mk fx-host-syms || ! grep -q '^src/oracle.c facet_oracle_lambert$' "$B/fx/host-syms.txt"; then
+        cat "$B/fx-fx-host-syms.build.log"; echo "ERROR fx-firmware: the host symbol list failed"; return
     fi
     p=0 f=0
     for c in m0 m4; do
