@@ -28,7 +28,7 @@ else
 BENCH_SHADER_PEERS := peers_shader peers_shader_fm
 endif
 BENCH_HARNESS := cycles bench cli_bench loops_scalar loops_call loops_sse2 loops_avx2 loops_neon \
-                 loops_batch loops_tables peers peers_textbook fxhook $(BENCH_SHADER_PEERS)
+                 loops_batch loops_tables peers peers_textbook peers_sample fxhook $(BENCH_SHADER_PEERS)
 BENCH_HARNESS_OBJ := $(BENCH_HARNESS:%=$(BUILD)/bench/harness/%.o)
 BENCH_RASTER_OBJ  := $(patsubst %,$(BUILD)/bench/raster/%.o,raster raster_avx2 raster_sse2 raster_neon)
 BENCH_REPORT_OBJ  := $(patsubst %,$(BUILD)/bench/report/%.o,report symbols pictures png)
@@ -67,6 +67,10 @@ $(BENCH_SIMD_OBJ): $(BUILD)/bench/%.o: bench/%.c $(BENCH_DEPS)
 $(BUILD)/bench/harness/peers_textbook.o: bench/harness/peers_textbook.c bench/harness/peers.h $(HEADERS)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) -O2 -ffp-contract=off -c $< -o $@
+# the samplers' textbook peer, built the same way (its formulas: tests/sample_peer.h)
+$(BUILD)/bench/harness/peers_sample.o: bench/harness/peers_sample.c bench/harness/peers.h tests/sample_peer.h $(HEADERS)
+	@mkdir -p $(dir $@)
+	$(CC) $(WARN) -Iinclude -I. $(CFLAGS) -O2 -ffp-contract=off -c $< -o $@
 
 # shader-style: -O3, errno-free sqrt and fused multiply-add so the compiler
 # vectorizes it, at the width of the facet port it is compared with; and the
