@@ -20,6 +20,7 @@
 #include "pictures.h"
 #include "png.h"
 #include "raster/raster.h"
+#include "samplers.h"
 #include "facet_bench.h"
 
 static const char *outdir;
@@ -192,6 +193,13 @@ static const row *find_row(const char *kernel, const char *format, const char *p
 }
 
 static double est(double ticks) { return ticks / tpc; }
+
+/* find_row for samplers.c */
+static const bench_row *find_bench_row(const char *kernel, const char *format, const char *port, const char *path)
+{
+    const row *x = find_row(kernel, format, port, path);
+    return x ? &x->r : NULL;
+}
 
 /* ---- modelled cycles and sizes from report.sh --------------------------- */
 
@@ -1125,6 +1133,12 @@ int facet_bench_report(int argc, char **argv)
         section_arm();
         section_raster();
         section_pictures();
+        {
+            time_t ts = time(NULL);
+            say("importance sampling: cost table, picture of sampled directions, chi-square table ...");
+            report_samplers(md, html, outdir, quick, find_bench_row, tpc);
+            say("importance sampling section done in %ld s", (long)(time(NULL) - ts));
+        }
         fclose(md);
         fclose(html);
         md = m0;
