@@ -38,33 +38,35 @@ static void cost_table(FILE *md, FILE *html, report_find_fn find, double tpc)
     const char *ports[8];
     int np = 0, i, t;
     size_t p, si;
-    char c[20][64];
+    char c[24][64];
     for (p = 0; p < facet_port_count() && np < 8; p++) {
         int sup = 0;
         const char *pn = facet_port_at(p, &sup, NULL);
         if (sup)
             ports[np++] = pn;
     }
-    /* header: sampler, f32 per port, f32_fast per port, textbook, ratio */
+    /* header: sampler, f32 per port, f32_fast per port, textbook, the
+     * peer's time over the first (widest) port's and over the last's (scalar) */
     snprintf(c[0], sizeof c[0], "sampler");
     for (t = 0; t < 2; t++)
         for (i = 0; i < np; i++)
             snprintf(c[1 + t * np + i], sizeof c[0], "%s %s", t ? "f32_fast" : "f32", ports[i]);
     snprintf(c[1 + 2 * np], sizeof c[0], "textbook peer");
     snprintf(c[2 + 2 * np], sizeof c[0], "peer / %s f32", np ? ports[0] : "-");
+    snprintf(c[3 + 2 * np], sizeof c[0], "peer / %s f32", np ? ports[np - 1] : "-");
     fprintf(html, "<table><tr>");
-    for (i = 0; i < 3 + 2 * np; i++) {
+    for (i = 0; i < 4 + 2 * np; i++) {
         fprintf(md, "| %s ", c[i]);
         fprintf(html, "<th>%s</th>", c[i]);
     }
     fprintf(md, "|\n");
-    for (i = 0; i < 3 + 2 * np; i++)
+    for (i = 0; i < 4 + 2 * np; i++)
         fprintf(md, "|---");
     fprintf(md, "|\n");
     fprintf(html, "</tr>\n");
     for (si = 0; si < facet_sampler_count(); si++) {
         const char *kn = facet_sampler_at(si)->name;
-        const bench_row *peer = find(kn, "f32", "textbook", "peer"), *best = NULL;
+        const bench_row *peer = find(kn, "f32", "textbook", "peer"), *best = NULL, *last = NULL;
         int any = 0;
         snprintf(c[0], sizeof c[0], "%s", kn);
         for (t = 0; t < 2; t++)
@@ -79,6 +81,8 @@ static void cost_table(FILE *md, FILE *html, report_find_fn find, double tpc)
                 }
                 if (!t && i == 0)
                     best = r;
+                if (!t && i == np - 1)
+                    last = r;
             }
         if (!any)
             continue;
@@ -91,7 +95,11 @@ static void cost_table(FILE *md, FILE *html, report_find_fn find, double tpc)
             snprintf(c[2 + 2 * np], sizeof c[0], "%.1fx", peer->thr.median / best->thr.median);
         else
             snprintf(c[2 + 2 * np], sizeof c[0], "-");
-        cell_row(md, html, 3 + 2 * np, c);
+        if (peer && last && last->thr.median > 0)
+            snprintf(c[3 + 2 * np], sizeof c[0], "%.2fx", peer->thr.median / last->thr.median);
+        else
+            snprintf(c[3 + 2 * np], sizeof c[0], "-");
+        cell_row(md, html, 4 + 2 * np, c);
     }
     fprintf(md, "\n");
     fprintf(html, "</table>\n");
