@@ -17,10 +17,12 @@ BENCH_NATIVE := $(shell $(CC) -march=native -E -x c /dev/null >/dev/null 2>&1 &&
 # #include line: tests/sample.h (the bench judges error on the same samplers
 # as the tests), src/kernels.def and src/kernel_list.h (every loop is
 # generated from the library's kernel list), src/port.h (the port tables,
-# read by report/symbols.c).  -Ibench: a part's header from another part
+# read by report/symbols.c), src/sample_port.h (a sampler's call by its
+# kind, for the samplers' loops).  -Ibench: a part's header from another part
 # is included as "harness/bench.h", "raster/raster.h", ...
 BENCH_FLAGS   = $(BASEFLAGS) -D_GNU_SOURCE -I. -Ibench
-BENCH_DEPS    = $(HEADERS) $(wildcard bench/*.h bench/*/*.h) tests/sample.h src/kernel_list.h src/port.h
+BENCH_DEPS    = $(HEADERS) $(wildcard bench/*.h bench/*/*.h) tests/sample.h tests/sample_common.h src/kernel_list.h \
+                src/port.h src/sample_port.h
 
 ifneq ($(BENCH_X86),)
 BENCH_SHADER_PEERS := peers_shader_avx2 peers_shader_avx2_fm peers_shader_avx512 peers_shader_avx512_fm

@@ -586,7 +586,7 @@ static void srow(bench_row *r, const sdata *d, const char *format, const char *p
     r->lanes = lanes;
 }
 
-static void stime(bench_row *r, peer_sample_fn fn, sdata *d, const bench_opts *o)
+static void stime(bench_row *r, bench_sfn fn, sdata *d, const bench_opts *o)
 {
     work w;
     memset(&w, 0, sizeof w);
@@ -599,9 +599,9 @@ static void stime(bench_row *r, peer_sample_fn fn, sdata *d, const bench_opts *o
 
 /* Every sampler and pdf: the batch API (facet_sampler.f32_batch and
  * f32_fast_batch) on every port this CPU runs, as the kernels' batch rows,
- * then the textbook peer (peers_sample.c) where there is one.  Error: the
- * contracts' measure on min(n_err, 16384) samples, against the facet.h
- * bound.  No latency rows (the samplers have no inline loops here). */
+ * the inline and call loops (loops_tier.h), then the textbook peer
+ * (peers_sample.c) where there is one.  Error: the contracts' measure on
+ * min(n_err, 16384) samples, against the facet.h bound.  No latency rows. */
 static void run_samplers(const bench_opts *o, bench_sink sink, void *ctx, int *count)
 {
     size_t si, p;
@@ -637,6 +637,19 @@ static void run_samplers(const bench_opts *o, bench_sink sink, void *ctx, int *c
                 finish(&row, o, sink, ctx, count);
             }
             facet_set_port(saved_port ? saved_port : "auto");
+            /* the inline port kernels and the library call, as the kernels' */
+            for (p = 0; bench_loop_tables[p]; p++) {
+                const bench_loops *t = bench_loop_tables[p];
+                if (o->sampler_batch_only || strcmp(t->tier, tn) || !t->s || !t->available() ||
+                    !want_port(o, t->port))
+                    continue;
+                srow(&row, &d, tn, t->port, t->path, t->lanes);
+                row.bound = tier ? k->err_f32_fast : k->err_f32;
+                t->s[si](d.out, (const float *const *)d.in, d.n);
+                serr_of(&row.err, &d);
+                stime(&row, t->s[si], &d, o);
+                finish(&row, o, sink, ctx, count);
+            }
         }
         if (o->peers && (!o->format || !strcmp(o->format, "f32")) && want_port(o, "textbook")) {
             int same = 0;

@@ -1112,6 +1112,7 @@ int facet_bench_report(int argc, char **argv)
         o.n_err = 1 << 17;
     }
     o.progress = 1;
+    o.sampler_batch_only = 1; /* the samplers' table shows the batch rows */
     say("benchmarks: every kernel x format x port x path, and the peers ...");
     bench_run(&o, collect, NULL);
     say("model-error sweep of the approximations ...");
