@@ -17,10 +17,12 @@ BENCH_NATIVE := $(shell $(CC) -march=native -E -x c /dev/null >/dev/null 2>&1 &&
 # #include line: tests/sample.h (the bench judges error on the same samplers
 # as the tests), src/kernels.def and src/kernel_list.h (every loop is
 # generated from the library's kernel list), src/port.h (the port tables,
-# read by report/symbols.c).  -Ibench: a part's header from another part
+# read by report/symbols.c), src/sample_port.h (a sampler's call by its
+# kind, for the samplers' loops).  -Ibench: a part's header from another part
 # is included as "harness/bench.h", "raster/raster.h", ...
 BENCH_FLAGS   = $(BASEFLAGS) -D_GNU_SOURCE -I. -Ibench
-BENCH_DEPS    = $(HEADERS) $(wildcard bench/*.h bench/*/*.h) tests/sample.h src/kernel_list.h src/port.h
+BENCH_DEPS    = $(HEADERS) $(wildcard bench/*.h bench/*/*.h) tests/sample.h tests/sample_common.h src/kernel_list.h \
+                src/port.h src/sample_port.h
 
 ifneq ($(BENCH_X86),)
 BENCH_SHADER_PEERS := peers_shader_avx2 peers_shader_avx2_fm peers_shader_avx512 peers_shader_avx512_fm
@@ -28,10 +30,10 @@ else
 BENCH_SHADER_PEERS := peers_shader peers_shader_fm
 endif
 BENCH_HARNESS := cycles bench cli_bench loops_scalar loops_call loops_sse2 loops_avx2 loops_neon \
-                 loops_batch loops_tables peers peers_textbook fxhook $(BENCH_SHADER_PEERS)
+                 loops_batch loops_tables peers peers_textbook peers_sample fxhook $(BENCH_SHADER_PEERS)
 BENCH_HARNESS_OBJ := $(BENCH_HARNESS:%=$(BUILD)/bench/harness/%.o)
 BENCH_RASTER_OBJ  := $(patsubst %,$(BUILD)/bench/raster/%.o,raster raster_avx2 raster_sse2 raster_neon)
-BENCH_REPORT_OBJ  := $(patsubst %,$(BUILD)/bench/report/%.o,report symbols pictures png image_error geom)
+BENCH_REPORT_OBJ  := $(patsubst %,$(BUILD)/bench/report/%.o,report symbols pictures png image_error geom samplers)
 BENCH_OBJ := $(BUILD)/bench/facet_bench.o $(BENCH_HARNESS_OBJ) $(BENCH_REPORT_OBJ) $(BENCH_RASTER_OBJ)
 
 TEST_BIN    += $(BUILD)/tests/test_bench
@@ -67,6 +69,10 @@ $(BENCH_SIMD_OBJ): $(BUILD)/bench/%.o: bench/%.c $(BENCH_DEPS)
 $(BUILD)/bench/harness/peers_textbook.o: bench/harness/peers_textbook.c bench/harness/peers.h $(HEADERS)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) -O2 -ffp-contract=off -c $< -o $@
+# the samplers' textbook peer, built the same way (its formulas: tests/sample_peer.h)
+$(BUILD)/bench/harness/peers_sample.o: bench/harness/peers_sample.c bench/harness/peers.h tests/sample_peer.h $(HEADERS)
+	@mkdir -p $(dir $@)
+	$(CC) $(WARN) -Iinclude -I. $(CFLAGS) -O2 -ffp-contract=off -c $< -o $@
 
 # shader-style: -O3, errno-free sqrt and fused multiply-add so the compiler
 # vectorizes it, at the width of the facet port it is compared with; and the

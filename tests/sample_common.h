@@ -64,4 +64,62 @@ static void ss_inputs(smp_rng *r, const facet_sampler *k, float *in)
     }
 }
 
+/* The index of the input called name, or -1. */
+static inline int ss_input_index(const facet_sampler *k, const char *name)
+{
+    int i;
+    for (i = 0; i < k->n_inputs; i++)
+        if (!strcmp(k->inputs[i], name))
+            return i;
+    return -1;
+}
+
+/* The error measure of the samplers' contracts (facet.h), shared by
+ * tests/test_sample_accuracy.c and the bench (bench/harness/bench.c).
+ * The conditioning of a sampler at x: K = sum over its inputs of
+ * |h(x + d_i) - h(x)| / 2^-24 (oracle), d_i one step of 2^-24 for u1, u2
+ * (inward at the ends) and of 2^-24 |x_i| for the other inputs: how far the
+ * exact map moves when one input moves by about an ulp.  The error measure
+ * of a sampled vector is |h - h_oracle| / max(1, K / 16): the plain distance
+ * where the map is well-conditioned (K < 16: everywhere but near the rims),
+ * relative to K where it is not (the VNDF map near the cap rim, where
+ * Vh + c is short, moves by O(1) for one ulp of u1).  x holds
+ * FACET_SAMPLER_MAX_INPUTS values. */
+static inline double ss_sampler_cond(const facet_sampler *k, const double *x, const double *h0)
+{
+    double y[FACET_SAMPLER_MAX_INPUTS], h[FACET_SAMPLER_MAX_OUTPUTS], K = 0;
+    int i, o;
+    for (i = 0; i < k->n_inputs; i++) {
+        double d;
+        if (!strcmp(k->inputs[i], "gamma"))
+            continue;
+        memcpy(y, x, sizeof y);
+        if (k->inputs[i][0] == 'u')
+            d = x[i] >= 0.5 ? -0x1p-24 : 0x1p-24;
+        else
+            d = x[i] * 0x1p-24;
+        y[i] = x[i] + d;
+        k->oracle(h, y);
+        for (o = 0; o < k->n_outputs; o++)
+            K += fabs(h[o] - h0[o]) / 0x1p-24;
+    }
+    return K;
+}
+
+/* The conditioning of v.h for the pdfs that form it from the vectors:
+ * sum |v_i h_i| / |v.h| (1 where all terms have one sign). */
+static inline double ss_dot_cond(const facet_sampler *k, const float *const *in, long j)
+{
+    int v = ss_input_index(k, "vx"), h = ss_input_index(k, "hx"), i;
+    double s = 0, a = 0;
+    if (v < 0 || h < 0)
+        return 1;
+    for (i = 0; i < 3; i++) {
+        double t = (double)in[v + i][j] * in[h + i][j];
+        s += t;
+        a += fabs(t);
+    }
+    return s != 0 ? fmax(1.0, a / fabs(s)) : 1.0;
+}
+
 #endif

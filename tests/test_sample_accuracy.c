@@ -27,60 +27,6 @@ static int is_sampler(const facet_sampler *k) { return strstr(k->name, "sample")
 
 static int same(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
 
-static int input_index(const facet_sampler *k, const char *name)
-{
-    int i;
-    for (i = 0; i < k->n_inputs; i++)
-        if (!strcmp(k->inputs[i], name))
-            return i;
-    return -1;
-}
-
-/* The conditioning of a sampler at x: K = sum over its inputs of
- * |h(x + d_i) - h(x)| / 2^-24 (oracle), d_i one step of 2^-24 for u1, u2
- * (inward at the ends) and of 2^-24 |x_i| for the other inputs: how far the
- * exact map moves when one input moves by about an ulp.  The error measure
- * of a sampled vector is |h - h_oracle| / max(1, K / 16): the plain distance
- * where the map is well-conditioned (K < 16: everywhere but near the rims),
- * relative to K where it is not (the VNDF map near the cap rim, where
- * Vh + c is short, moves by O(1) for one ulp of u1). */
-static double sampler_cond(const facet_sampler *k, const double *x, const double *h0)
-{
-    double y[NIN], h[NOUT], K = 0;
-    int i, o;
-    for (i = 0; i < k->n_inputs; i++) {
-        double d;
-        if (!strcmp(k->inputs[i], "gamma"))
-            continue;
-        memcpy(y, x, sizeof y);
-        if (k->inputs[i][0] == 'u')
-            d = x[i] >= 0.5 ? -0x1p-24 : 0x1p-24;
-        else
-            d = x[i] * 0x1p-24;
-        y[i] = x[i] + d;
-        k->oracle(h, y);
-        for (o = 0; o < k->n_outputs; o++)
-            K += fabs(h[o] - h0[o]) / 0x1p-24;
-    }
-    return K;
-}
-
-/* The conditioning of v.h for the pdfs that form it from the vectors:
- * sum |v_i h_i| / |v.h| (1 where all terms have one sign). */
-static double dot_cond(const facet_sampler *k, const float *const *in, long j)
-{
-    int v = input_index(k, "vx"), h = input_index(k, "hx"), i;
-    double s = 0, a = 0;
-    if (v < 0 || h < 0)
-        return 1;
-    for (i = 0; i < 3; i++) {
-        double t = (double)in[v + i][j] * in[h + i][j];
-        s += t;
-        a += fabs(t);
-    }
-    return s != 0 ? fmax(1.0, a / fabs(s)) : 1.0;
-}
-
 int main(int argc, char **argv)
 {
     long n = argc > 1 ? atol(argv[1]) : getenv("FACET_TEST_QUICK") ? 20000 : 200000;
@@ -114,11 +60,11 @@ int main(int argc, char **argv)
             k->oracle(o, xd);
             for (i = 0; i < k->n_outputs; i++)
                 want[i][j] = o[i];
-            cond[j] = k->err_abs ? fmax(1.0, sampler_cond(k, xd, o) / 16) : 1.0;
+            cond[j] = k->err_abs ? fmax(1.0, ss_sampler_cond(k, xd, o) / 16) : 1.0;
         }
         if (!k->err_abs)
             for (j = 0; j < n; j++)
-                cond[j] = dot_cond(k, (const float *const *)in, j);
+                cond[j] = ss_dot_cond(k, (const float *const *)in, j);
         for (tier = 0; tier < 2; tier++) {
             double bound = tier ? k->err_f32_fast : k->err_f32;
             for (pi = 0; pi < n_ports; pi++) {

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "facet/oracle.h"
-#include "tests/sample.h" /* the samplers the tests judge error on */
+#include "tests/sample_common.h" /* the samplers the tests judge error on (and sample.h) */
 #include "bench.h"
 #include "loops.h"
 #include "peers.h"
@@ -73,6 +73,8 @@ typedef struct work {
     bench_fx_fn fx;           /* fixed point: raw Q15 inputs, raw outputs */
     void *fxout;
     const int32_t *const *fxin;
+    peer_sample_fn sfn;       /* a sampler's batch (facet's or a peer's): SoA outputs */
+    float *const *sout;
 } work;
 
 static void run_work(void *ctx, long reps)
@@ -85,6 +87,9 @@ static void run_work(void *ctx, long reps)
     } else if (w->fx) {
         for (r = 0; r < reps; r++)
             w->fx(w->fxout, w->fxin, w->n);
+    } else if (w->sfn) {
+        for (r = 0; r < reps; r++)
+            w->sfn(w->sout, w->in, w->n);
     } else {
         for (r = 0; r < reps; r++)
             w->fn(w->out, w->in, w->n);
@@ -476,6 +481,200 @@ static void run_fx(const bench_fx *fx, const kdata *d, const bench_opts *o, benc
     free(x.out);
 }
 
+/* ---- the importance samplers (facet.h, src/sample_kernels.def) ----------------- */
+
+typedef struct sdata {
+    const facet_sampler *k;
+    size_t n;
+    float *in[FACET_SAMPLER_MAX_INPUTS], *out[FACET_SAMPLER_MAX_OUTPUTS];
+    double *want[FACET_SAMPLER_MAX_OUTPUTS], *cond;
+} sdata;
+
+/* in-domain inputs from tests/sample_common.h (the accuracy test's), with
+ * gamma = 1 (GTR1, the closed form the peer computes too), the oracle's
+ * outputs and the conditioning of the contracts' error measure */
+static void sdata_make(sdata *d, const facet_sampler *k, size_t n, unsigned long long seed)
+{
+    smp_rng r;
+    size_t i;
+    int j;
+    memset(d, 0, sizeof *d);
+    d->k = k;
+    d->n = n;
+    r.s = seed ^ 0x5a3b1e00ull ^ (uint64_t)(strlen(k->name) * 131u + (unsigned char)k->name[4]) * 0x9e3779b97f4a7c15ull;
+    for (j = 0; j < k->n_inputs; j++)
+        d->in[j] = malloc(n * sizeof(float));
+    for (j = 0; j < k->n_outputs; j++) {
+        d->out[j] = malloc(n * sizeof(float));
+        d->want[j] = malloc(n * sizeof(double));
+    }
+    d->cond = malloc(n * sizeof(double));
+    for (i = 0; i < n; i++) {
+        float x[FACET_SAMPLER_MAX_INPUTS];
+        double xd[FACET_SAMPLER_MAX_INPUTS] = { 0 }, o[FACET_SAMPLER_MAX_OUTPUTS];
+        ss_inputs(&r, k, x);
+        for (j = 0; j < k->n_inputs; j++) {
+            if (!strcmp(k->inputs[j], "gamma"))
+                x[j] = 1.0f;
+            d->in[j][i] = x[j];
+            xd[j] = x[j];
+        }
+        k->oracle(o, xd);
+        for (j = 0; j < k->n_outputs; j++)
+            d->want[j][i] = o[j];
+        d->cond[i] = k->err_abs ? fmax(1.0, ss_sampler_cond(k, xd, o) / 16) : 1.0;
+    }
+    if (!k->err_abs)
+        for (i = 0; i < n; i++)
+            d->cond[i] = ss_dot_cond(k, (const float *const *)d->in, (long)i);
+}
+
+static void sdata_free(sdata *d)
+{
+    int j;
+    for (j = 0; j < FACET_SAMPLER_MAX_INPUTS; j++)
+        free(d->in[j]);
+    for (j = 0; j < FACET_SAMPLER_MAX_OUTPUTS; j++) {
+        free(d->out[j]);
+        free(d->want[j]);
+    }
+    free(d->cond);
+}
+
+/* the contracts' measure (facet.h, tests/test_sample_accuracy.c): vectors
+ * by Euclidean distance / max(1, K / 16), pdfs by relative error / the
+ * conditioning of v.h; max_rel and mean_rel hold it */
+static void serr_of(bench_err *e, const sdata *d)
+{
+    size_t i;
+    double sum = 0;
+    int j, na = d->k->n_inputs < FACET_MAX_INPUTS ? d->k->n_inputs : FACET_MAX_INPUTS;
+    memset(e, 0, sizeof *e);
+    e->max_rel = -1;
+    for (i = 0; i < d->n; i++) {
+        double x = 0;
+        if (d->k->err_abs) {
+            for (j = 0; j < d->k->n_outputs; j++) {
+                double t = d->out[j][i] - d->want[j][i];
+                x += t * t;
+            }
+            x = sqrt(x) / d->cond[i];
+            if (x != x)
+                x = INFINITY;
+        } else {
+            x = bench_rel_err(d->out[0][i], d->want[0][i]) / d->cond[i];
+        }
+        sum += x;
+        if (x > e->max_rel) {
+            e->max_rel = x;
+            e->got = d->out[0][i];
+            e->want = d->want[0][i];
+            for (j = 0; j < na; j++)
+                e->arg[j] = d->in[j][i];
+        }
+    }
+    e->n = (long)d->n;
+    e->mean_rel = sum / (double)d->n;
+}
+
+static void srow(bench_row *r, const sdata *d, const char *format, const char *port, const char *path,
+                 int lanes)
+{
+    memset(r, 0, sizeof *r);
+    r->kernel = d->k->name;
+    r->format = format;
+    r->port = port;
+    r->path = path;
+    r->note = "";
+    r->n_inputs = d->k->n_inputs < FACET_MAX_INPUTS ? d->k->n_inputs : FACET_MAX_INPUTS;
+    r->lanes = lanes;
+}
+
+static void stime(bench_row *r, bench_sfn fn, sdata *d, const bench_opts *o)
+{
+    work w;
+    memset(&w, 0, sizeof w);
+    w.sfn = fn;
+    w.sout = d->out;
+    w.in = (const float *const *)d->in;
+    w.n = o->n_time < d->n ? o->n_time : d->n;
+    r->thr = time_work(&w, (double)w.n, o);
+}
+
+/* Every sampler and pdf: the batch API (facet_sampler.f32_batch and
+ * f32_fast_batch) on every port this CPU runs, as the kernels' batch rows,
+ * the inline and call loops (loops_tier.h), then the textbook peer
+ * (peers_sample.c) where there is one.  Error: the contracts' measure on
+ * min(n_err, 16384) samples, against the facet.h bound.  No latency rows. */
+static void run_samplers(const bench_opts *o, bench_sink sink, void *ctx, int *count)
+{
+    size_t si, p;
+    int tier;
+    const char *saved_port = facet_port_name();
+    size_t n = o->n_err < 16384 ? o->n_err : 16384;
+    if (n < o->n_time)
+        n = o->n_time;
+    n = (n + 7) / 8 * 8;
+    for (si = 0; si < facet_sampler_count(); si++) {
+        const facet_sampler *k = facet_sampler_at(si);
+        sdata d;
+        bench_row row;
+        if (o->kernel && strcmp(o->kernel, k->name))
+            continue;
+        sdata_make(&d, k, n, o->seed);
+        for (tier = 0; tier < 2; tier++) {
+            const char *tn = tier ? "f32_fast" : "f32";
+            peer_sample_fn fn = tier ? k->f32_fast_batch : k->f32_batch;
+            if (o->format && strcmp(o->format, tn))
+                continue;
+            for (p = 0; p < facet_port_count(); p++) {
+                int sup = 0, lanes = 1;
+                const char *pn = facet_port_at(p, &sup, &lanes);
+                if (!sup || !want_port(o, pn) || facet_set_port(pn) != 0)
+                    continue;
+                srow(&row, &d, tn, pn, "batch", lanes);
+                row.bound = tier ? k->err_f32_fast : k->err_f32;
+                row.note = "facet_<sampler>_batch with facet_set_port(port) active";
+                fn(d.out, (const float *const *)d.in, d.n);
+                serr_of(&row.err, &d);
+                stime(&row, fn, &d, o);
+                finish(&row, o, sink, ctx, count);
+            }
+            facet_set_port(saved_port ? saved_port : "auto");
+            /* the inline port kernels and the library call, as the kernels' */
+            for (p = 0; bench_loop_tables[p]; p++) {
+                const bench_loops *t = bench_loop_tables[p];
+                if (o->sampler_batch_only || strcmp(t->tier, tn) || !t->s || !t->available() ||
+                    !want_port(o, t->port))
+                    continue;
+                srow(&row, &d, tn, t->port, t->path, t->lanes);
+                row.bound = tier ? k->err_f32_fast : k->err_f32;
+                t->s[si](d.out, (const float *const *)d.in, d.n);
+                serr_of(&row.err, &d);
+                stime(&row, t->s[si], &d, o);
+                finish(&row, o, sink, ctx, count);
+            }
+        }
+        if (o->peers && (!o->format || !strcmp(o->format, "f32")) && want_port(o, "textbook")) {
+            int same = 0;
+            peer_sample_fn fn = peer_sample_textbook(k->name, &same);
+            if (fn) {
+                srow(&row, &d, "f32", "textbook", "peer", 1);
+                row.note = same ? "tests/sample_peer.h: the direct formulas with libm, -O2"
+                                : "tests/sample_peer.h: Heitz 2018 as transcribed, libm, -O2 (another map of "
+                                  "(u1, u2) to h with the same law: error not comparable)";
+                fn(d.out, (const float *const *)d.in, d.n);
+                serr_of(&row.err, &d);
+                if (!same)
+                    row.err.max_rel = row.err.mean_rel = NAN;
+                stime(&row, fn, &d, o);
+                finish(&row, o, sink, ctx, count);
+            }
+        }
+        sdata_free(&d);
+    }
+}
+
 /* ---- everything ------------------------------------------------------------- */
 
 int bench_run(const bench_opts *o, bench_sink sink, void *ctx)
@@ -486,7 +685,7 @@ int bench_run(const bench_opts *o, bench_sink sink, void *ctx)
     int tier;
     const char *saved_port;
 
-    if (o->kernel && !facet_kernel_find(o->kernel))
+    if (o->kernel && !facet_kernel_find(o->kernel) && !facet_sampler_find(o->kernel))
         return -1;
     if (o->format && strcmp(o->format, "f32") && strcmp(o->format, "f32_fast") && strcmp(o->format, "fx") &&
         strcmp(o->format, "fx_fast"))
@@ -589,5 +788,7 @@ int bench_run(const bench_opts *o, bench_sink sink, void *ctx)
         }
         kdata_free(&d);
     }
+    if (!o->format || !strcmp(o->format, "f32") || !strcmp(o->format, "f32_fast"))
+        run_samplers(o, sink, ctx, &count);
     return count;
 }

@@ -20,6 +20,7 @@ typedef struct bench_opts {
     const char *port;     /* NULL: all available */
     const char *format;   /* NULL: all ("f32", "fx") */
     int progress;         /* progress lines on stderr */
+    int sampler_batch_only; /* 1: the samplers' batch and peer rows only (the report) */
 } bench_opts;
 
 void bench_defaults(bench_opts *o);

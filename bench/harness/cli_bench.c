@@ -20,6 +20,9 @@ static void usage(FILE *f)
             "API, the inline kernels and the library call, next to the peers (textbook;\n"
             "shader and shader_fm built for each port's vector width: shader_avx2,\n"
             "shader_avx512 on x86), and measures each one's error against the double oracle.\n"
+            "Then the importance samplers and pdfs ('facet list' names them; KERNEL may be\n"
+            "one): the batch API of both f32 tiers on every port, and the textbook peer\n"
+            "(tests/sample_peer.h); error in the samplers' measure (facet.h).\n"
             "Throughput: cycles per sample over an L1-resident SoA set (difference of R and\n"
             "2R passes); latency: cycles per call in a dependent chain.  >= 11 epochs after\n"
             "warm-up, pinned to one CPU; min, median, spread; '!' marks spread > 5%%.\n"
@@ -170,7 +173,7 @@ int facet_cmd_bench(int argc, char **argv)
             usage(stderr);
             return 2;
         } else if (!o.kernel) {
-            if (!facet_kernel_find(a)) {
+            if (!facet_kernel_find(a) && !facet_sampler_find(a)) {
                 fprintf(stderr, "facet-bench bench: unknown kernel '%s' (see 'facet list')\n", a);
                 return 2;
             }

@@ -15,6 +15,9 @@
 #include <stddef.h>
 
 typedef void (*bench_fn)(float *out, const float *const *in, size_t n);
+/* a sampler's loop (src/sample_kernels.def): out[o][i] = output o of the
+ * sampler at in[0][i], ...; n a multiple of the lane count */
+typedef void (*bench_sfn)(float *const *out, const float *const *in, size_t n);
 
 typedef struct bench_loop {
     bench_fn thr, chain;
@@ -27,6 +30,8 @@ typedef struct bench_loops {
     int (*available)(void);
     const bench_loop *k; /* facet_kernel_count() + 1 entries */
     const char *tier;   /* "f32" or "f32_fast" */
+    const bench_sfn *s; /* facet_sampler_count() throughput loops of the
+                         * samplers (inline and call paths), or NULL */
 } bench_loops;
 
 /* every loop table compiled for this target; NULL-terminated */

@@ -35,5 +35,5 @@ static const bench_loop k_fast_[] = {
     { 0, 0 },
 };
 
-const bench_loops bench_loops_batch = { "batch", "auto", 1, always, k_, "f32" };
-const bench_loops bench_loops_batch_fast = { "batch", "auto", 1, always, k_fast_, "f32_fast" };
+const bench_loops bench_loops_batch = { "batch", "auto", 1, always, k_, "f32", 0 };
+const bench_loops bench_loops_batch_fast = { "batch", "auto", 1, always, k_fast_, "f32_fast", 0 };

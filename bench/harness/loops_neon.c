@@ -30,6 +30,6 @@ static int avail(void) { return facet_port_supported("neon"); }
 #else
 static int never(void) { return 0; }
 static const bench_loop none[1];
-const bench_loops bench_loops_neon_inline = { "inline", "neon", 4, never, none, "f32" };
-const bench_loops bench_loops_neon_inline_fast = { "inline", "neon", 4, never, none, "f32_fast" };
+const bench_loops bench_loops_neon_inline = { "inline", "neon", 4, never, none, "f32", 0 };
+const bench_loops bench_loops_neon_inline_fast = { "inline", "neon", 4, never, none, "f32_fast", 0 };
 #endif

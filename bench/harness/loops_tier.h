@@ -4,6 +4,7 @@
 #include "facet.h"
 #include "loops.h"
 #include "src/kernel_list.h"
+#include "src/sample_port.h" /* FACET_SAMPLE_CALL: a sampler's call by its kind */
 
 #define LP_CAT_(a, b) a##b
 #define LP_CAT(a, b) LP_CAT_(a, b)
@@ -60,6 +61,31 @@ static const bench_loop LP_CAT(lp_k_, LP_TNAME)[] = {
     { LP_CAT(LP_TNAME, _thr_identity), LP_CAT(LP_TNAME, _chain_identity) },
 };
 
+/* Names generated here from src/sample_kernels.def: one throughput loop
+ * per sampler (inputs loaded, the sampler called, its outputs stored). */
+#define FACET_SAMPLER(name, NAME, kind, err, n_out, n_in, outs, ins)           \
+    static void LP_CAT(LP_TNAME, LP_CAT(_s_, name))(float *const *out, const float *const *in, size_t n_) \
+    {                                                                           \
+        size_t i;                                                               \
+        int j;                                                                  \
+        for (i = 0; i < n_; i += LP_W) {                                        \
+            LP_V a_[n_in], o_[n_out];                                           \
+            for (j = 0; j < n_in; j++)                                          \
+                a_[j] = LP_LOAD(in[j] + i);                                     \
+            FACET_SAMPLE_CALL(kind, LP_KT(name), o_, a_, n_in);                 \
+            for (j = 0; j < n_out; j++)                                         \
+                LP_STORE(out[j] + i, o_[j]);                                    \
+        }                                                                       \
+    }
+#include "src/sample_kernels.def"
+#undef FACET_SAMPLER
+
+static const bench_sfn LP_CAT(lp_s_, LP_TNAME)[] = {
+#define FACET_SAMPLER(name, ...) LP_CAT(LP_TNAME, LP_CAT(_s_, name)),
+#include "src/sample_kernels.def"
+#undef FACET_SAMPLER
+};
+
 const bench_loops LP_CAT(bench_loops_, LP_TNAME) = {
-    LP_PATH, LP_PORT, LP_W, LP_AVAIL, LP_CAT(lp_k_, LP_TNAME), LP_TIER,
+    LP_PATH, LP_PORT, LP_W, LP_AVAIL, LP_CAT(lp_k_, LP_TNAME), LP_TIER, LP_CAT(lp_s_, LP_TNAME),
 };

@@ -60,4 +60,14 @@ int peer_available(const peer_set *p);
 /* Returns the peer's function for facet kernel `name`, or NULL. */
 peer_term_fn peer_term(const peer_set *p, const char *name);
 
+/* The samplers' textbook peer (peers_sample.c, built like the textbook
+ * peer: tests/sample_peer.h's direct libm formulas, -O2): out[o][i] =
+ * output o of the sampler or pdf `name` (facet.h) at in[0][i], ..., or
+ * NULL where it has none.  *same_map (if not NULL): 1 where it computes
+ * the same map as facet's oracle (so its error against it means
+ * something), 0 for ggx_sample_vndf (Heitz's disk map: the same law, not
+ * the same point for a given (u1, u2)). */
+typedef void (*peer_sample_fn)(float *const *out, const float *const *in, size_t n);
+peer_sample_fn peer_sample_textbook(const char *name, int *same_map);
+
 #endif

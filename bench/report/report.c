@@ -22,6 +22,7 @@
 #include "geom.h"
 #include "png.h"
 #include "raster/raster.h"
+#include "samplers.h"
 #include "facet_bench.h"
 
 #define PI_REPORT 3.14159265358979323846
@@ -323,6 +324,13 @@ static const row *find_row(const char *kernel, const char *format, const char *p
 }
 
 static double est(double ticks) { return ticks / tpc; }
+
+/* find_row for samplers.c */
+static const bench_row *find_bench_row(const char *kernel, const char *format, const char *port, const char *path)
+{
+    const row *x = find_row(kernel, format, port, path);
+    return x ? &x->r : NULL;
+}
 
 /* ---- modelled cycles and sizes from report.sh --------------------------- */
 
@@ -1663,6 +1671,7 @@ int facet_bench_report(int argc, char **argv)
         o.n_err = 1 << 17;
     }
     o.progress = 1;
+    o.sampler_batch_only = 1; /* the samplers' table shows the batch rows */
     say("benchmarks: every kernel x format x port x path, and the peers ...");
     bench_run(&o, collect, NULL);
     say("model-error sweep of the approximations ...");
@@ -1680,6 +1689,12 @@ int facet_bench_report(int argc, char **argv)
     section_furnace();
     section_tradeoff();
     section_pictures();
+    {
+        time_t ts = time(NULL);
+        say("importance sampling: cost table, picture of sampled directions, chi-square table ...");
+        report_samplers(md, html, outdir, quick, find_bench_row, tpc);
+        say("importance sampling section done in %ld s", (long)(time(NULL) - ts));
+    }
     section_arm();
     section_raster();
     section_targets();

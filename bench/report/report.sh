@@ -57,5 +57,8 @@ done < "$out/batch-symbols.txt"
 echo "report: Cortex-M traces (qemu-system-arm) + llvm-mca ..."
 sh bench/cortexm/cortexm.sh "$build" "$out/arm.tsv"
 
+# the samplers' chi-square table (read by `facet-bench report`)
+sh bench/report/sample_chi2.sh "$build" "$out" || exit 1
+
 echo "report: measuring (benchmarks, tradeoffs, pictures, rasterizer) ..."
 "$bin" report "$out" ${FACET_REPORT_QUICK:+--quick}

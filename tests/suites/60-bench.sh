@@ -63,6 +63,19 @@ fi
 # every ggx_d row within its facet bound (error is a property, not a timing)
 n_bad=$(printf '%s' "$out" | grep -c '"within_bound": false')
 [ "$n_bad" -eq 0 ] && ok || bad "$n_bad ggx_d rows outside the bound"
+# the samplers: a batch row per f32 tier and port this CPU runs, each within
+# its facet.h bound, the inline loops, and the textbook peer row (bench.c
+# run_samplers)
+nsup=$(build/facet eval --help | sed -n 's/^ports compiled in://p' | sed 's/[a-z0-9]* (not on this CPU)//g' | wc -w)
+sout=$(build/facet-bench bench ggx_sample_vndf --json --quick 2>/dev/null); rc=$?
+sj=$(printf '%s' "$sout" | tr -d '\n')
+nb=$(printf '%s' "$sj" | grep -o '"kernel": "ggx_sample_vndf", "format": "f32[_a-z]*", "port": "[a-z0-9]*", "path": "batch"' | wc -l)
+[ $rc -eq 0 ] && [ "$nb" -eq $((2 * nsup)) ] && ok || bad "bench ggx_sample_vndf: exit $rc, $nb batch rows, want 2 tiers x $nsup ports this CPU runs"
+printf '%s' "$sj" | grep -q '"port": "textbook", "path": "peer"' && ok || bad "bench ggx_sample_vndf: no textbook peer row"
+printf '%s' "$sj" | grep -q '"kernel": "ggx_sample_vndf", "format": "f32", "port": "scalar", "path": "inline"' && ok ||
+    bad "bench ggx_sample_vndf: no scalar inline row"
+n_bad=$(printf '%s' "$sout" | grep -c '"within_bound": false')
+[ "$n_bad" -eq 0 ] && ok || bad "$n_bad ggx_sample_vndf rows outside the bound"
 # text form and bad input
 build/facet-bench bench lambert --quick --no-peers | grep -qE '^lambert +f32 +scalar +batch' && ok || bad "text table"
 build/facet-bench bench nosuch >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "unknown kernel: want exit 2"
