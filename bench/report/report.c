@@ -1589,10 +1589,51 @@ static int copy_file(const char *path, FILE *out)
  * tests/report.sh writes; absent in a bench-only run) and this run's bench
  * part, so a quick run after a full one replaces the bench part of both
  * rather than adding a second one beside the stale first. */
+/* accuracy.md split at its first section: the head (title, machine, date)
+ * opens the report, the accuracy tables close it (the long tables last) */
+static char *read_all(const char *path, size_t *n)
+{
+    FILE *f = fopen(path, "rb");
+    char *b = NULL;
+    long len;
+    *n = 0;
+    if (!f)
+        return NULL;
+    if (fseek(f, 0, SEEK_END) == 0 && (len = ftell(f)) >= 0 && fseek(f, 0, SEEK_SET) == 0) {
+        b = malloc((size_t)len + 1);
+        if (b) {
+            *n = fread(b, 1, (size_t)len, f);
+            b[*n] = 0;
+        }
+    }
+    fclose(f);
+    return b;
+}
+
+static size_t accuracy_split(const char *acc)
+{
+    const char *p = strstr(acc, "\n## ");
+    return p ? (size_t)(p - acc) + 1 : strlen(acc);
+}
+
+static void md_part_to_html(const char *text, size_t n, FILE *out)
+{
+    FILE *in = fmemopen((void *)text, n, "r");
+    if (!in || !n) {
+        if (in)
+            fclose(in);
+        return;
+    }
+    md_to_html(in, out);
+    fclose(in);
+}
+
 static void write_index(void)
 {
     char path[1024];
-    FILE *out, *in;
+    FILE *out;
+    char *acc;
+    size_t n, head;
     snprintf(path, sizeof path, "%s/index.html", outdir);
     out = fopen(path, "w");
     if (!out)
@@ -1603,16 +1644,20 @@ static void write_index(void)
           "text-align:left}th{background:#f0f0f0}figure{margin:1em 0}figcaption{font-size:12px;color:#444;"
           "max-width:900px}img{image-rendering:pixelated}</style></head><body>\n", out);
     snprintf(path, sizeof path, "%s/accuracy.md", outdir);
-    in = fopen(path, "r");
-    if (in) {
-        md_to_html(in, out);
-        fclose(in);
-    } else {
+    acc = read_all(path, &n);
+    head = acc ? accuracy_split(acc) : 0;
+    if (acc)
+        md_part_to_html(acc, head, out);
+    else
         fputs("<h1>facet report</h1>\n", out);
-    }
     fprintf(out, "<h1>%s</h1>\n", quick ? BENCH_QUICK_TITLE : BENCH_TITLE);
     snprintf(path, sizeof path, "%s/bench.html", outdir);
     copy_file(path, out);
+    if (acc && head < n) {
+        fputs("<h1>Accuracy (tests/report.sh)</h1>\n", out);
+        md_part_to_html(acc + head, n - head, out);
+    }
+    free(acc);
     fputs("</body></html>\n", out);
     fclose(out);
 }
@@ -1621,15 +1666,26 @@ static void write_report_md(void)
 {
     char path[1024];
     FILE *out;
+    char *acc;
+    size_t n, head;
     snprintf(path, sizeof path, "%s/report.md", outdir);
     out = fopen(path, "w");
     if (!out)
         return;
     snprintf(path, sizeof path, "%s/accuracy.md", outdir);
-    if (!copy_file(path, out))
+    acc = read_all(path, &n);
+    head = acc ? accuracy_split(acc) : 0;
+    if (acc)
+        fwrite(acc, 1, head, out);
+    else
         fputs("# facet report\n\n(bench part only: no accuracy.md from tests/report.sh here)\n", out);
     snprintf(path, sizeof path, "%s/bench.md", outdir);
     copy_file(path, out);
+    if (acc && head < n) {
+        fputs("\n# Accuracy (tests/report.sh)\n\n", out);
+        fwrite(acc + head, 1, n - head, out);
+    }
+    free(acc);
     fclose(out);
 }
 

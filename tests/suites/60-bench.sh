@@ -117,7 +117,13 @@ n=$(grep -c '^<h1>Benchmarks (bench/)' $r/index.html)
 [ "$n" -eq 1 ] && ok || bad "index.html has $n Benchmarks sections, want 1"
 [ "$(grep -c '^<h1>facet report' $r/index.html)" -eq 1 ] && ok || bad "index.html lacks the accuracy part"
 cmp -s $r/report.md $r/report.md.full && bad "report.md not rewritten by the quick run" || ok
-cat $r/accuracy.md $r/bench.md | cmp -s - $r/report.md && ok || bad "report.md is not accuracy.md + this run's bench.md"
+# the accuracy part's head (title, machine) opens the report, its tables close it
+{ awk '/^## /{exit} {print}' $r/accuracy.md; cat $r/bench.md; printf '\n# Accuracy (tests/report.sh)\n\n'
+  awk 'f || /^## /{f = 1; print}' $r/accuracy.md; } | cmp -s - $r/report.md && ok ||
+    bad "report.md is not accuracy.md's head + this run's bench.md + accuracy.md's tables"
+# the page opens with the chooser: it comes before every other section
+first=$(grep -m1 -n '^<h2>' $r/index.html | cut -d: -f2-)
+[ "$first" = "<h2>Which one to use</h2>" ] && ok || bad "index.html's first section is '$first', not the chooser"
 grep -q '^# Benchmarks (bench/), QUICK RUN$' $r/report.md && ok || bad "report.md not labelled as a quick run"
 grep -q '<title>facet report (quick run)</title>' $r/index.html && grep -q '^<h1>Benchmarks (bench/), QUICK RUN</h1>$' $r/index.html &&
     ok || bad "index.html not labelled as a quick run"
