@@ -168,8 +168,11 @@ uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alp
  * divides and takes roots with one hardware instruction where the core has
  * one: fresnel_schlick on avx2 / avx512 (AVX2 lanes) and on aarch64 neon.
  * Everything else, and everything on sse2, armv7 neon and scalar, runs the
- * scalar loop.  out may be the very same array as an input (32-bit
- * outputs); no other overlap. */
+ * scalar loop.  A firmware build (`make fx-sources`: src/fx_only/
+ * fx_batch_scalar.c instead of the dispatcher) has no ports: each batch is
+ * its own scalar loop, facet_fx_port_name() is "scalar", and --gc-sections
+ * keeps only the kernels called.  out may be the very same array as an
+ * input (32-bit outputs); no other overlap. */
 const char *facet_fx_port_name(void); /* "avx2", "neon" or "scalar" */
 void facet_noh_from_dots_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
                                   const int32_t *lov, size_t n);
