@@ -62,13 +62,21 @@ FXV_FAST_ fxv_u32 fxv_hi(fxv_u64 a) { return a.hi; }
 FXV_FAST_ fxv_u32 fxv_narrow(fxv_u64 a) { return a.lo; }
 
 /* the fast tier's ops */
-FXV_FAST_ fxv_u32 fxv_shr(fxv_u32 a, int k) { return vshlq_r_u32(a, -k); }
-FXV_FAST_ fxv_u32 fxv_shl(fxv_u32 a, int k) { return vshlq_r_u32(a, k); }
+/* the body's constant shifts (1 to 31, src/fx_fast_body.h) as immediates:
+ * macros, so the count reaches the intrinsic as a constant expression */
+#define fxv_shr(a, k) vshrq_n_u32((a), (k))
+#define fxv_shl(a, k) vshlq_n_u32((a), (k))
 FXV_FAST_ fxv_u32 fxv_shrv(fxv_u32 a, fxv_u32 n) { return vshlq_u32(a, vnegq_s32(vreinterpretq_s32_u32(n))); }
 FXV_FAST_ fxv_u32 fxv_shlv(fxv_u32 a, fxv_u32 n) { return vshlq_u32(a, vreinterpretq_s32_u32(n)); }
-/* a mask by a predicated move (VDUP into the lanes where a < b) */
+/* a mask by a predicated move (VDUP into the lanes where a < b); the
+ * select by a predicate from it (VPSEL; gcc 12 fails with an internal
+ * error on that form, so under gcc it is and / bic / orr) */
 FXV_FAST_ fxv_u32 fxv_lt(fxv_u32 a, fxv_u32 b) { return vdupq_m_n_u32(vdupq_n_u32(0), ~0u, vcmphiq_u32(b, a)); }
+#if defined(__clang__)
+FXV_FAST_ fxv_u32 fxv_sel(fxv_u32 m, fxv_u32 a, fxv_u32 b) { return vpselq_u32(a, b, vcmpneq_n_u32(m, 0)); }
+#else
 FXV_FAST_ fxv_u32 fxv_sel(fxv_u32 m, fxv_u32 a, fxv_u32 b) { return vorrq_u32(vandq_u32(a, m), vbicq_u32(b, m)); }
+#endif
 FXV_FAST_ fxv_u32 fxv_min(fxv_u32 a, fxv_u32 b) { return vminq_u32(a, b); }
 FXV_FAST_ fxv_u32 fxv_max(fxv_u32 a, fxv_u32 b) { return vmaxq_u32(a, b); }
 FXV_FAST_ fxv_u32 fxv_and(fxv_u32 a, fxv_u32 b) { return vandq_u32(a, b); }
