@@ -8,7 +8,7 @@
  * count.  Integer instructions only.  Bit-identical to the scalar
  * specification (tests/test_fx_ports.c and the pinned hashes, run on the
  * Cortex-M55 model by tests/suites/52-helium.sh).
- * The batch functions are tail-predicated (VCTP): lanes past the end are
+ * The batch functions' tails are predicated (VCTP): lanes past the end are
  * neither read nor written. */
 #include <arm_mve.h>
 #include <stdint.h>
@@ -95,14 +95,25 @@ FXV_FAST_ fxv_u32 fxv_lut(const uint32_t *t, fxv_u32 i) { return vldrwq_gather_s
 #include "../../src/fx_body.h"
 #include "../../src/fx_fast_body.h"
 
-/* predicated loads (0 in the lanes past the end) and stores; a uint64_t
- * lane is stored as its two words by two scatters (offsets 2j and 2j + 1) */
-#define FXH_LOAD_(q) vldrwq_z_s32(x##q + i, p)
+/* whole vectors by plain loads and stores, the tail (n % 4) by predicated
+ * ones (0 in the lanes past the end, which are neither read nor written);
+ * a uint64_t lane is stored as its two words: VST20/VST21 (interleaving),
+ * in the tail two predicated scatters (word offsets 2j and 2j + 1) */
+#define FXH_LOAD_(q) vldrwq_s32(x##q + i)
+#define FXH_LOADP_(q) vldrwq_z_s32(x##q + i, p)
 #define FXH_PARAM_(q) const int32_t *x##q
-#define fxh_store_int32_t(o, v, p) vstrwq_p_s32((o), vreinterpretq_s32_u32(v), (p))
-#define fxh_store_uint32_t(o, v, p) vstrwq_p_u32((o), (v), (p))
-#define fxh_store_uint64_t(o, v, p) fxh_store64_((o), (v), (p))
-FXV_FAST_ void fxh_store64_(uint64_t *o, fxv_u64 v, mve_pred16_t p)
+#define fxh_store_int32_t(o, v) vstrwq_s32((o), vreinterpretq_s32_u32(v))
+#define fxh_store_uint32_t(o, v) vstrwq_u32((o), (v))
+#define fxh_storep_int32_t(o, v, p) vstrwq_p_s32((o), vreinterpretq_s32_u32(v), (p))
+#define fxh_storep_uint32_t(o, v, p) vstrwq_p_u32((o), (v), (p))
+FXV_FAST_ void fxh_store_uint64_t(uint64_t *o, fxv_u64 v)
+{
+    uint32x4x2_t w;
+    w.val[0] = v.lo;
+    w.val[1] = v.hi;
+    vst2q_u32((uint32_t *)o, w);
+}
+FXV_FAST_ void fxh_storep_uint64_t(uint64_t *o, fxv_u64 v, mve_pred16_t p)
 {
     uint32x4_t even = vmulq_n_u32(vidupq_n_u32(0, 1), 2);
     vstrwq_scatter_shifted_offset_p_u32((uint32_t *)o, even, v.lo, p);
@@ -112,10 +123,12 @@ FXV_FAST_ void fxh_store64_(uint64_t *o, fxv_u64 v, mve_pred16_t p)
 #define FXH_DEF(fn, body, n, fx_type)                                                      \
     static void fn(fx_type *out, FACET_EACH_INPUT(n, FXH_PARAM_), size_t count)            \
     {                                                                                      \
-        size_t i;                                                                          \
-        for (i = 0; i < count; i += 4) {                                                   \
-            mve_pred16_t p = vctp32q((uint32_t)(count - i > 4 ? 4 : count - i));           \
-            fxh_store_##fx_type(out + i, body(FACET_EACH_INPUT(n, FXH_LOAD_)), p);          \
+        size_t i = 0;                                                                      \
+        for (; i + 4 <= count; i += 4)                                                     \
+            fxh_store_##fx_type(out + i, body(FACET_EACH_INPUT(n, FXH_LOAD_)));             \
+        if (i < count) {                                                                   \
+            mve_pred16_t p = vctp32q((uint32_t)(count - i));                               \
+            fxh_storep_##fx_type(out + i, body(FACET_EACH_INPUT(n, FXH_LOADP_)), p);        \
         }                                                                                  \
     }
 /* Names generated here from src/kernels.def: the precise tier on lanes
