@@ -25,6 +25,8 @@ echo "report: f32 accuracy sweep, $n random samples per kernel + grids + edges .
     echo
     cat "$out/accuracy_f32.md"
 } > "$out/report.md"
+# the Helium port's instruction counts (bench/qcount/)
+sh bench/qcount/report_md.sh >> "$out/report.md"
 # ---- bench: benchmarks, plots, rasterizer (bench/) ------------------------
 # (owned by bench/report/: appends bench.md to report.md and writes index.html)
 if [ -f bench/report/report.sh ]; then
