@@ -1,6 +1,6 @@
 /* cpu.c - the one place CPU features are read: CPUID and XCR0 on x86 (the
  * CPU has the instructions and the OS saves their registers), HWCAP on
- * armv7; aarch64 always has NEON.  src/dispatch.c asks it which ports this
+ * armv7; aarch64 always has NEON; MVFR1 on Armv8.1-M (Helium).  src/dispatch.c asks it which ports this
  * CPU runs; the bench and the rasterizer ask through facet_port_supported(). */
 #if defined(__linux__) && !defined(_GNU_SOURCE)
 #define _GNU_SOURCE /* getauxval */
@@ -15,6 +15,8 @@
 #if !defined(__aarch64__)
 #include <sys/auxv.h>
 #endif
+#elif defined(__ARM_FEATURE_MVE) && (__ARM_FEATURE_MVE & 2)
+#define FACET_HELIUM 1
 #endif
 
 #if FACET_X86
@@ -66,6 +68,17 @@ int facet_cpu_neon(void)
     unsigned long hw = getauxval(AT_HWCAP);
     return (hw & (1ul << 12)) && (hw & (1ul << 16)); /* HWCAP_NEON, HWCAP_VFPv4 */
 #endif
+}
+#endif
+
+#if FACET_HELIUM
+/* M-profile firmware runs privileged with no OS in between: MVFR1
+ * (0xE000EF44, the System Control Space) field MVE, bits 11:8, is 2 where
+ * the core has MVE integer and floating point (1: integer only, 0: none) */
+int facet_cpu_helium(void)
+{
+    unsigned long mvfr1 = *(volatile const unsigned long *)0xE000EF44ul;
+    return ((mvfr1 >> 8) & 0xFu) == 2u;
 }
 #endif
 

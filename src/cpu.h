@@ -13,6 +13,8 @@ int facet_cpu_avx512f(void);  /* AVX-512F, and the OS saves ZMM and opmask state
 #endif
 #elif defined(__aarch64__) || (defined(__arm__) && defined(__linux__))
 int facet_cpu_neon(void);     /* aarch64: always; armv7: NEON and VFPv4 in HWCAP */
+#elif defined(__ARM_FEATURE_MVE) && (__ARM_FEATURE_MVE & 2)
+int facet_cpu_helium(void);   /* MVE integer and floating point in MVFR1 */
 #endif
 
 #endif

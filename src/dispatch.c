@@ -5,11 +5,11 @@
  * batch entry points (the fx ones are in src/fx_batch.c and ask facet_fx_active_port()).
  *
  * Ports compiled in follow the target, best first: x86-64 -> avx512, avx2,
- * sse2 (i386: avx2, sse2); aarch64 / armv7 Linux -> neon; everywhere ->
- * scalar.  A port is "supported" when src/cpu.c says this CPU and OS run it.
+ * sse2 (i386: avx2, sse2); aarch64 / armv7 Linux -> neon; Armv8.1-M with
+ * MVE floating point (Cortex-M55 firmware) -> helium; everywhere -> scalar.  A port is "supported" when src/cpu.c says this CPU and OS run it.
  * Each port brings its f32 batches and, where it has any, fixed-point code
  * (src/port.h): avx512 and avx2 run the AVX2 fx code, aarch64 neon the NEON
- * fx code, the others the scalar fx loops.
+ * fx code, helium its own (ports/helium), the others the scalar fx loops.
  *
  * The choice is one pointer.  The first batch call computes the automatic
  * choice (FACET_PORT, else the best supported port) and installs it with a
@@ -27,6 +27,8 @@
 #define FACET_X86 1
 #elif defined(__aarch64__) || (defined(__arm__) && defined(__linux__))
 #define FACET_ARM 1
+#elif defined(__ARM_FEATURE_MVE) && (__ARM_FEATURE_MVE & 2)
+#define FACET_HELIUM 1 /* Armv8.1-M with MVE floating point (Cortex-M55, M85) */
 #endif
 
 typedef struct port_entry {
@@ -59,6 +61,10 @@ static const port_entry ports[] = {
 #else
     { &facet_port_neon_f32, &facet_port_neon_f32_fast, NULL, NULL, facet_cpu_neon }, /* armv7: see ports/neon/fx_neon.c */
 #endif
+#endif
+#if FACET_HELIUM
+    { &facet_port_helium_f32, &facet_port_helium_f32_fast, &facet_fx_port_helium, &facet_fx_fast_port_helium,
+      facet_cpu_helium },
 #endif
     { &facet_port_scalar_f32, &facet_port_scalar_f32_fast, NULL, NULL, always },
 };

@@ -41,11 +41,13 @@ extern const facet_f32_port facet_port_sse2_f32, facet_port_sse2_f32_fast;
 extern const facet_f32_port facet_port_avx2_f32, facet_port_avx2_f32_fast;
 extern const facet_f32_port facet_port_avx512_f32, facet_port_avx512_f32_fast;
 extern const facet_f32_port facet_port_neon_f32, facet_port_neon_f32_fast;
+extern const facet_f32_port facet_port_helium_f32, facet_port_helium_f32_fast;
 /* fx ports, one table per tier: src/fx_kernels.c and src/fx_fast.c (every
  * kernel, the scalar loops), ports/<isa>/fx_<isa>.c */
 extern const facet_fx_port facet_fx_port_scalar, facet_fx_fast_port_scalar;
 extern const facet_fx_port facet_fx_port_avx2, facet_fx_fast_port_avx2;
 extern const facet_fx_port facet_fx_port_neon, facet_fx_fast_port_neon;
+extern const facet_fx_port facet_fx_port_helium, facet_fx_fast_port_helium;
 
 
 /* the fx port of the active port for a tier (0: fx, 1: fx_fast), never

@@ -15,6 +15,8 @@
 #define SAMPLE_X86 1
 #elif defined(__aarch64__) || (defined(__arm__) && defined(__linux__))
 #define SAMPLE_ARM 1
+#elif defined(__ARM_FEATURE_MVE) && (__ARM_FEATURE_MVE & 2)
+#define SAMPLE_HELIUM 1
 #endif
 
 typedef struct { const facet_sample_port *f32, *f32_fast; } sample_entry;
@@ -30,6 +32,9 @@ static const sample_entry sample_ports[] = {
 #endif
 #if SAMPLE_ARM
     { &facet_sample_port_neon_f32, &facet_sample_port_neon_f32_fast },
+#endif
+#if SAMPLE_HELIUM
+    { &facet_sample_port_helium_f32, &facet_sample_port_helium_f32_fast },
 #endif
     { &facet_sample_port_scalar_f32, &facet_sample_port_scalar_f32_fast },
 };

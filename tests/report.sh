@@ -27,6 +27,8 @@ echo "report: f32 accuracy sweep, $n random samples per kernel + grids + edges .
     echo "Maximum relative error at the same float inputs (values below 2^-100 compared absolutely), $n random samples per kernel plus grids and edges; the bound is the one facet.h documents and the tests enforce."
     echo
     cat "$out/accuracy_f32.md"
+    # the Helium port's instruction counts (bench/qcount/)
+    sh bench/qcount/report_md.sh
 } > "$out/accuracy.md"
 cp "$out/accuracy.md" "$out/report.md"
 # ---- bench: benchmarks, plots, rasterizer (bench/) ------------------------

@@ -6,7 +6,7 @@ ifneq ($(filter aarch64%,$(TARGET)),)
 LIB_OBJ += $(BUILD)/ports/neon/f32_neon.o $(BUILD)/ports/neon/fx_neon.o
 NEON_FLAGS :=
 endif
-ifneq ($(filter arm%,$(TARGET)),)
+ifneq ($(filter arm%linux-gnueabihf,$(TARGET)),) # not arm-none-eabi (bare metal: ports/helium)
 LIB_OBJ += $(BUILD)/ports/neon/f32_neon.o
 NEON_FLAGS := -mfpu=neon-vfpv4 -mfloat-abi=hard
 endif
