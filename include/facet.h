@@ -11,8 +11,16 @@
  *     two-cosine kernels in [FACET_COS_MIN, 1]; L.V in [-1, 1]; alpha in
  *     [FACET_ALPHA_MIN, 1] (facet/common.h: 2^-20 and 2^-10).
  *   - Outside the domain every input is clamped to the nearest domain value;
- *     NaN and -Inf count as the low end, +Inf as the high end.  So finite or
- *     not, every input gives a finite, non-negative result and nothing traps.
+ *     -Inf counts as the low end, +Inf as the high end.
+ *   - NaN: a NaN in any input of a sample (quiet or signalling, either
+ *     sign, any payload) gives +0 for that sample, in both tiers, on every
+ *     port and in the batch, RGB and vector entry points alike: a value that
+ *     cannot light a pixel (the grazing-angle maximum it used to give
+ *     could).  Cost: one ordered compare and mask per two inputs
+ *     (keep_ord, 2 ops in "Cost:").  So finite or not, every input gives a
+ *     finite, non-negative result, never NaN, and nothing traps.  The
+ *     importance samplers below keep their own rules (NaN to a documented
+ *     substitute); fixed point (facet/fx.h) has integer inputs and no NaN.
  *   - Denormal inputs are values like any other, except on ports that run
  *     with flush-to-zero (armv7 NEON): there they act as 0 (the tests judge
  *     such a port at the flushed input), and an intermediate below 2^-126
@@ -28,7 +36,8 @@
  *     2^-k; FACET_ERR_* below are the bounds the tests enforce.  Where a
  *     bound has an absolute floor it is said so.
  *   - Cost: operations of the kernel body as a port with FMA executes them
- *     (clamp = 2, select = 2, fma = 1), counted by tests/test_op_counts.c;
+ *     (clamp = 2, select = 2, keep_ord = 2, fma = 1), counted by
+ *     tests/test_op_counts.c;
  *     rsqrt and rcp are listed apart: each is an estimate plus the port's
  *     refinement steps (see the port headers).
  *
@@ -68,21 +77,21 @@ extern "C" {
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1]; result in [0, 1].
  * Error: <= FACET_ERR_NOH_FROM_DOTS_F32 (2^-21.5); measured max 2^-22.12 (worst port,
  * 30 M samples) at (0.0587858558, 0.458401412, -0.495318681).
- * Cost: 13 ops (1 rsqrt, 0 rcp). */
+ * Cost: 17 ops (1 rsqrt, 0 rcp). */
 float facet_noh_from_dots_f32(float nol, float nov, float lov);
 
 /* L.H = V.H = |L + V| / 2 = sqrt((1 + L.V) / 2), via the same rsqrt.
  * Domain: L.V in [-1, 1]; L.V = -1 gives 0.
  * Error: <= FACET_ERR_LOH_FROM_DOTS_F32 (2^-22); measured max 2^-22.64 (worst port,
  * 30 M samples) at (0.0295905489).
- * Cost: 7 ops (1 rsqrt, 0 rcp). */
+ * Cost: 9 ops (1 rsqrt, 0 rcp). */
 float facet_loh_from_dots_f32(float lov);
 
 /* Schlick's Fresnel: F = F0 + (1 - F0) (1 - cos)^5, the power by three
  * multiplies.  Domain: f0, cos in [0, 1].  F(f0, 1) = f0, F(f0, 0) = 1.
  * Error: <= FACET_ERR_FRESNEL_SCHLICK_F32 (2^-21); measured max 2^-21.40 (worst port,
  * 30 M samples) at (2.34035488e-05, 0.494028538).
- * Cost: 13 ops (0 rsqrt, 0 rcp). */
+ * Cost: 15 ops (0 rsqrt, 0 rcp). */
 float facet_fresnel_schlick_f32(float f0, float cos_theta);
 
 /* GGX / Trowbridge-Reitz normal distribution:
@@ -92,7 +101,7 @@ float facet_fresnel_schlick_f32(float f0, float cos_theta);
  * D(0) = alpha^2/pi.  Domain: N.H in [0, 1], alpha in [FACET_ALPHA_MIN, 1].
  * Error: <= FACET_ERR_GGX_D_F32 (2^-20); measured max 2^-20.60 (worst port,
  * 30 M samples) at (0.999949455, 0.254411191).
- * Cost: 12 ops (0 rsqrt, 1 rcp). */
+ * Cost: 14 ops (0 rsqrt, 1 rcp). */
 float facet_ggx_d_f32(float noh, float alpha);
 
 /* Exact Smith masking for GGX:
@@ -100,7 +109,7 @@ float facet_ggx_d_f32(float noh, float alpha);
  * Domain: N.V in [0, 1]; G1(0) = 0, G1(1) = 1.
  * Error: <= FACET_ERR_SMITH_G1_F32 (2^-21); measured max 2^-21.66 (worst port,
  * 30 M samples) at (0.000242657741, 0.00600074418).
- * Cost: 15 ops (1 rsqrt, 1 rcp). */
+ * Cost: 17 ops (1 rsqrt, 1 rcp). */
 float facet_smith_g1_f32(float nov, float alpha);
 
 /* Exact height-correlated Smith G2 for GGX:
@@ -109,13 +118,13 @@ float facet_smith_g1_f32(float nov, float alpha);
  * Domain: N.L, N.V in [FACET_COS_MIN, 1].
  * Error: <= FACET_ERR_SMITH_G2_F32 (2^-21); measured max 2^-21.40 (worst port,
  * 30 M samples) at (0.492564738, 4.08501137e-06, 0.00407959009).
- * Cost: 26 ops (2 rsqrt, 1 rcp). */
+ * Cost: 30 ops (2 rsqrt, 1 rcp). */
 float facet_smith_g2_f32(float nol, float nov, float alpha);
 
 /* Uncorrelated Smith G2 = G1(N.L) G1(N.V), with one reciprocal.
  * Domain: as smith_g2.  Error: <= FACET_ERR_SMITH_G2_UNCORRELATED_F32 (2^-20.5); measured max 2^-20.95 (worst port,
  * 30 M samples) at (1.06287043e-05, 4.67698592e-05, 0.0156806652).
- * Cost: 26 ops (2 rsqrt, 1 rcp). */
+ * Cost: 30 ops (2 rsqrt, 1 rcp). */
 float facet_smith_g2_uncorrelated_f32(float nol, float nov, float alpha);
 
 /* Visibility: correlated G2 / (4 N.L N.V) with the numerator cancelled:
@@ -123,14 +132,14 @@ float facet_smith_g2_uncorrelated_f32(float nol, float nov, float alpha);
  * Domain: as smith_g2; largest at N.L = N.V = FACET_COS_MIN, alpha_min:
  * 0.5 / (2 COS_MIN alpha_min) = 2^28.  Error: <= FACET_ERR_SMITH_VIS_F32 (2^-21); measured max 2^-21.62 (worst port,
  * 30 M samples) at (3.14775752e-06, 0.126348287, 0.00824174657).
- * Cost: 23 ops (2 rsqrt, 1 rcp). */
+ * Cost: 27 ops (2 rsqrt, 1 rcp). */
 float facet_smith_vis_f32(float nol, float nov, float alpha);
 
 /* Hammon's G1 approximation (= Schlick-GGX with k = alpha/2):
  *   G1 ~ 2 N.V / (N.V (2 - alpha) + alpha)
  * Domain: N.V in [0, 1].  Error: <= FACET_ERR_SMITH_G1_HAMMON_F32 (2^-21.5); measured max 2^-22.26 (worst port,
  * 30 M samples) at (0.516059339, 0.018353641).
- * Cost: 9 ops (0 rsqrt, 1 rcp). */
+ * Cost: 11 ops (0 rsqrt, 1 rcp). */
 float facet_smith_g1_hammon_f32(float nov, float alpha);
 
 /* Hammon's G2 approximation:
@@ -138,14 +147,14 @@ float facet_smith_g1_hammon_f32(float nov, float alpha);
  * the lerp evaluated as (1 - alpha) 2 N.L N.V + alpha (N.L + N.V).
  * Domain: N.L, N.V in [FACET_COS_MIN, 1].  Error: <= FACET_ERR_SMITH_G2_HAMMON_F32 (2^-21); measured max 2^-21.83 (worst port,
  * 30 M samples) at (1.45550921e-05, 0.00873631984, 0.00181798683).
- * Cost: 16 ops (0 rsqrt, 1 rcp). */
+ * Cost: 20 ops (0 rsqrt, 1 rcp). */
 float facet_smith_g2_hammon_f32(float nol, float nov, float alpha);
 
 /* Hammon's visibility: G2_hammon / (4 N.L N.V) = 0.5 / lerp(2 N.L N.V, N.L + N.V, alpha).
  * Domain: as smith_g2_hammon; max 0.5/(2 alpha_min COS_MIN) = 2.7e8.
  * Error: <= FACET_ERR_SMITH_VIS_HAMMON_F32 (2^-21.5); measured max 2^-22.09 (worst port,
  * 30 M samples) at (0.713193238, 0.713202953, 0.00830200501).
- * Cost: 13 ops (0 rsqrt, 1 rcp). */
+ * Cost: 17 ops (0 rsqrt, 1 rcp). */
 float facet_smith_vis_hammon_f32(float nol, float nov, float alpha);
 
 /* Hammon's GGX diffuse (a BRDF value, not yet times N.L):
@@ -160,7 +169,7 @@ float facet_smith_vis_hammon_f32(float nol, float nov, float alpha);
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, albedo.
  * Error: <= FACET_ERR_DIFFUSE_HAMMON_F32 (2^-20); measured max 2^-20.59 (worst port,
  * 30 M samples) at (0.331329554, 0.331329554, 0.999999702, 0.0131228399, 0.645663142).
- * Cost: 44 ops (1 rsqrt, 1 rcp). */
+ * Cost: 50 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, float albedo);
 
 /* The whole model, per light:
@@ -174,7 +183,7 @@ float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, flo
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, f0, albedo.
  * Error: <= FACET_ERR_BRDF_HAMMON_F32 (2^-18.5); measured max 2^-19.30 (worst port,
  * 30 M samples) at (0.683041394, 0.683041394, -0.0669089183, 0.00208292552, 3.8500432e-11, 4.40309833e-09).
- * Cost: 97 ops (1 rsqrt, 3 rcp). */
+ * Cost: 103 ops (1 rsqrt, 3 rcp). */
 float facet_brdf_hammon_f32(float nol, float nov, float lov, float alpha,
                             float f0, float albedo);
 
@@ -189,7 +198,7 @@ void facet_brdf_hammon_rgb_f32(float out[3], float nol, float nov, float lov,
 /* Lambert: albedo / pi.  Domain: albedo in [0, 1].
  * Error: <= FACET_ERR_LAMBERT_F32 (2^-22.5); measured max 2^-23.26 (worst port,
  * 30 M samples) at (0.196352884).
- * Cost: 3 ops (0 rsqrt, 0 rcp). */
+ * Cost: 5 ops (0 rsqrt, 0 rcp). */
 float facet_lambert_f32(float albedo);
 
 /* ---- batch API -------------------------------------------------------------

@@ -34,6 +34,11 @@ FACET_INLINE __m256 facet_avx2_clamp(__m256 x, __m256 lo, __m256 hi)
 {
     return _mm256_min_ps(_mm256_max_ps(x, lo), hi);
 }
+/* r where neither a nor b is NaN, else +0: one ordered compare and a mask */
+FACET_INLINE __m256 facet_avx2_keep_ord(__m256 r, __m256 a, __m256 b)
+{
+    return _mm256_and_ps(r, _mm256_cmp_ps(a, b, _CMP_ORD_Q));
+}
 #ifdef FACET_AVX2_TEST_WORST_ESTIMATES
 /* Test builds only: estimates off by exactly the architectural bound
  * 1.5 * 2^-12, the sign taken from bit 12 of x so that it varies. */

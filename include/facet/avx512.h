@@ -33,6 +33,12 @@ FACET_INLINE __m512 facet_avx512_clamp(__m512 x, __m512 lo, __m512 hi)
 {
     return _mm512_min_ps(_mm512_max_ps(x, lo), hi);
 }
+/* r where neither a nor b is NaN, else +0: an ordered compare into a mask
+ * register and a zero-masked move */
+FACET_INLINE __m512 facet_avx512_keep_ord(__m512 r, __m512 a, __m512 b)
+{
+    return _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(a, b, _CMP_ORD_Q), r);
+}
 
 #ifdef FACET_AVX512_TEST_WORST_ESTIMATES
 /* Test builds only: estimates off by just under the architectural bound

@@ -40,6 +40,13 @@ FACET_INLINE float32x4_t facet_neon_clamp(float32x4_t x, float32x4_t lo, float32
     x = vbslq_f32(vcgtq_f32(x, lo), x, lo);
     return vbslq_f32(vcltq_f32(x, hi), x, hi);
 }
+/* r where neither a nor b is NaN, else +0: vmaxq is NaN when either
+ * operand is (aarch64 and armv7 alike), so one self-compare of it finds both */
+FACET_INLINE float32x4_t facet_neon_keep_ord(float32x4_t r, float32x4_t a, float32x4_t b)
+{
+    float32x4_t m = vmaxq_f32(a, b);
+    return vreinterpretq_f32_u32(vandq_u32(vreinterpretq_u32_f32(r), vceqq_f32(m, m)));
+}
 FACET_INLINE float32x4_t facet_neon_rcp(float32x4_t x)
 {
     float32x4_t r = vrecpeq_f32(x);

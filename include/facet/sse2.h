@@ -36,6 +36,11 @@ FACET_INLINE __m128 facet_sse2_clamp(__m128 x, __m128 lo, __m128 hi)
 {
     return _mm_min_ps(_mm_max_ps(x, lo), hi);
 }
+/* r where neither a nor b is NaN, else +0: cmpordps and a mask */
+FACET_INLINE __m128 facet_sse2_keep_ord(__m128 r, __m128 a, __m128 b)
+{
+    return _mm_and_ps(r, _mm_cmpord_ps(a, b));
+}
 FACET_INLINE __m128 facet_sse2_rcp(__m128 x) { return _mm_div_ps(_mm_set1_ps(1.0f), x); }
 FACET_INLINE __m128 facet_sse2_rsqrt(__m128 x) { return _mm_div_ps(_mm_set1_ps(1.0f), _mm_sqrt_ps(x)); }
 FACET_INLINE __m128 facet_sse2_sqr_err(__m128 a, __m128 p)
