@@ -236,6 +236,97 @@ void facet_brdf_hammon_f32_batch(float *out, const float *nol, const float *nov,
                                  const float *alpha, const float *f0, const float *albedo, size_t n);
 void facet_lambert_f32_batch(float *out, const float *albedo, size_t n);
 
+/* ---- RGB batches, uniform materials, the vector entry ----------------------
+ * A material whose parameters are the same for many samples, passed once:
+ *   alpha     GGX width (perceptual roughness^2), clamped as the kernels
+ *   f0        specular reflectance at normal incidence, linear RGB
+ *   albedo    diffuse albedo, linear RGB
+ * Distinct struct types, with named fields, so that f0 and albedo, or the
+ * directions below, cannot be swapped by position in a call. */
+typedef struct facet_material_f32 {
+    float alpha;
+    float f0[3];
+    float albedo[3];
+} facet_material_f32;
+
+/* brdf_hammon for RGB f0 and albedo over n samples, the geometry (D, Vis,
+ * 1 - L.H, the diffuse shape) computed once per sample: channel c of
+ * sample i equals facet_brdf_hammon_f32_batch's result for (nol[i], nov[i],
+ * lov[i], alpha[i], f0 of channel c, albedo of channel c) on the same port,
+ * bit for bit (so the bounds, the domain and the NaN rule are brdf_hammon's:
+ * a NaN in the geometry zeroes the sample's three channels, one in a
+ * channel's f0 or albedo that channel).  Runs on the active port, any n,
+ * any alignment; an output may be the very same array (same layout) as an
+ * input, no other overlap.  Cost per sample: one brdf_hammon geometry and
+ * three channel tails (about 1.7x one brdf_hammon, not 3x; measured in
+ * bench/: `facet-bench bench --rgb`).
+ *   _batch:               planar: out[c][i], f0[c][i], albedo[c][i]
+ *   _batch_interleaved:   out[3i + c], f0[3i + c], albedo[3i + c]
+ *   _batch_material:      one uniform material m for all n samples, planar
+ *                         out[c][i]; measured at least as fast as _batch
+ *   _batch_material_interleaved: the same, out[3i + c]
+ * and the same for the fast tier (_f32_fast_batch...). */
+void facet_brdf_hammon_rgb_f32_batch(float *const out[3], const float *nol, const float *nov,
+                                     const float *lov, const float *alpha,
+                                     const float *const f0[3], const float *const albedo[3],
+                                     size_t n);
+void facet_brdf_hammon_rgb_f32_batch_interleaved(float *out, const float *nol, const float *nov,
+                                                 const float *lov, const float *alpha,
+                                                 const float *f0, const float *albedo, size_t n);
+void facet_brdf_hammon_rgb_f32_batch_material(float *const out[3], const float *nol,
+                                              const float *nov, const float *lov,
+                                              const facet_material_f32 *m, size_t n);
+void facet_brdf_hammon_rgb_f32_batch_material_interleaved(float *out, const float *nol,
+                                                          const float *nov, const float *lov,
+                                                          const facet_material_f32 *m, size_t n);
+void facet_brdf_hammon_rgb_f32_fast_batch(float *const out[3], const float *nol, const float *nov,
+                                          const float *lov, const float *alpha,
+                                          const float *const f0[3], const float *const albedo[3],
+                                          size_t n);
+void facet_brdf_hammon_rgb_f32_fast_batch_interleaved(float *out, const float *nol,
+                                                      const float *nov, const float *lov,
+                                                      const float *alpha, const float *f0,
+                                                      const float *albedo, size_t n);
+void facet_brdf_hammon_rgb_f32_fast_batch_material(float *const out[3], const float *nol,
+                                                   const float *nov, const float *lov,
+                                                   const facet_material_f32 *m, size_t n);
+void facet_brdf_hammon_rgb_f32_fast_batch_material_interleaved(float *out, const float *nol,
+                                                               const float *nov, const float *lov,
+                                                               const facet_material_f32 *m,
+                                                               size_t n);
+
+/* The vector entry, for per-pixel shaders: unit vectors in one struct with
+ * named fields (n: the shading normal, l: towards the light, v: towards the
+ * viewer), so that they cannot be passed in the wrong order by position. */
+typedef struct facet_vec3_f32 {
+    float x, y, z;
+} facet_vec3_f32;
+
+typedef struct facet_dirs_f32 {
+    facet_vec3_f32 n, l, v;
+} facet_dirs_f32;
+
+/* out[c] = brdf_hammon(N.L, N.V, L.V, m->alpha, m->f0[c], m->albedo[c]) * N.L,
+ * the radiance factor of one light per unit of its irradiance (multiply by
+ * the light's colour).  The dots are formed here (plain float products and
+ * sums), then facet_brdf_hammon_rgb_f32.
+ * Below-horizon rule: the light below the shading horizon, N.L <= 0, gives
+ * exactly 0 in every channel; the view below it, N.V <= 0 (interpolated or
+ * normal-mapped normals at silhouettes), is evaluated at N.V =
+ * FACET_COS_MIN, the kernel's clamp, so silhouettes do not turn black.
+ * NaN in any component of n, l, v or in the material: 0 in the affected
+ * channels (the kernels' NaN rule; a NaN direction gives NaN dots).  N.L
+ * above 1 (vectors not quite unit) counts as 1 in the factor.
+ * Error: the kernel's bound at the dots as formed (2^-18.5; the dots' own
+ * rounding is the caller's geometry), plus one rounding for the factor.
+ * Cost: 15 ops for the dots and the factor, then facet_brdf_hammon_rgb_f32
+ * (the scalar port: per-pixel figures in README "Per-pixel use"). */
+void facet_shade_hammon_rgb_f32(float out[3], const facet_dirs_f32 *dirs,
+                                const facet_material_f32 *m);
+/* the same on facet_brdf_hammon_rgb_f32_fast */
+void facet_shade_hammon_rgb_f32_fast(float out[3], const facet_dirs_f32 *dirs,
+                                     const facet_material_f32 *m);
+
 /* ---- the fast tier (f32_fast) ------------------------------------------
  * facet_<kernel>_f32_fast, facet_<kernel>_f32_fast_batch and, in each port
  * header, facet_<kernel>_f32_fast_<port>: the same formula, domain,
