@@ -37,7 +37,7 @@ TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 HEADERS  := $(wildcard include/*.h include/facet/*.h include/facet/detail/*.h) src/kernels.def src/sample_kernels.def
 # The fixed-point kernels on their own (firmware): the kernels of both tiers,
 # their batch API on the scalar loop, the kernel table.  Compile with -Iinclude.
-FX_SOURCES := src/fx_core.c src/fx_kernels.c src/fx_fast.c src/fx_batch.c src/fx_table.c \
+FX_SOURCES := src/fx_core.c src/fx_kernels.c src/fx_fast.c src/fx_batch.c src/fx_table.c src/fx_rgb.c \
               src/fx_only/fx_active_scalar.c
 
 # Parts add their own rules here (ports/<isa>/port.mk, tests/*.mk, bench/*.mk);
