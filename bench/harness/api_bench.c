@@ -17,6 +17,7 @@
 #include "tests/sample.h"
 #include "cycles.h"
 #include "facet_bench.h"
+#include "raster/raster.h"
 
 #define N 1024
 
@@ -141,6 +142,23 @@ static void fx_fast_rgb(long reps)
 
 static void work_(void *ctx, long reps) { ((void (*)(long))ctx)(reps); }
 
+/* the rasterizer's shading pass (bench/raster), one frame per rep */
+static rs_gbuf *rg_;
+static void r_scalar(long reps) { long r; for (r = 0; r < reps; r++) rs_shade_scalar(rg_); }
+static void r_avx2(long reps) { long r; for (r = 0; r < reps; r++) rs_shade_avx2(rg_); }
+static void r_batch(long reps) { long r; for (r = 0; r < reps; r++) rs_shade_batch(rg_); }
+static void r_rgb(long reps) { long r; for (r = 0; r < reps; r++) rs_shade_rgb(rg_); }
+static void r_material(long reps) { long r; for (r = 0; r < reps; r++) rs_shade_material(rg_); }
+static void r_pixel(long reps) { long r; for (r = 0; r < reps; r++) rs_shade_pixel(rg_); }
+
+static void measure_frame(const char *what, void (*fn)(long), int quick)
+{
+    cyc_stat s = cyc_measure(work_, (void *)fn, 1, 1, quick ? 11 : 11);
+    printf("%-8s %-44s %9.3f %9.3f %6.1f%%%s  (%.1f / %.1f per shaded pixel)\n", facet_port_name(), what,
+           s.min / 1e6, s.median / 1e6, 100 * s.spread, s.noisy ? "!" : "", s.min / rg_->n,
+           s.median / rg_->n);
+}
+
 static void measure(const char *port, const char *what, void (*fn)(long), int quick)
 {
     long reps = quick ? 1 : cyc_calibrate_reps(work_, (void *)fn, 2e6);
@@ -214,6 +232,18 @@ int facet_bench_api(int argc, char **argv)
     measure("scalar", "fx: brdf_hammon_rgb_fx_batch", fx_rgb, quick);
     measure("scalar", "fx_fast: brdf_hammon_fx_fast x 3 channels", fx_fast_mono3, quick);
     measure("scalar", "fx_fast: brdf_hammon_rgb_fx_fast_batch", fx_fast_rgb, quick);
+    /* the rasterizer's frame (shading pass only), every path on the auto port */
+    rg_ = rs_render(quick ? 96 : 480, quick ? 64 : 320);
+    printf("# rasterizer %dx%d, %d shaded pixels, %d lights: M%s per frame (shading pass), min and median\n",
+           rg_->w, rg_->h, rg_->n, rg_->n_lights, cyc_unit());
+    measure_frame("raster: scalar inline (RGB kernel per pixel)", r_scalar, quick);
+    if (rs_shade_avx2(rg_))
+        measure_frame("raster: AVX2 inline (8 px, RGB kernel)", r_avx2, quick);
+    measure_frame("raster: batch, 3 brdf_hammon calls per light", r_batch, quick);
+    measure_frame("raster: RGB batch, 1 call per light", r_rgb, quick);
+    measure_frame("raster: RGB batch, uniform material per run", r_material, quick);
+    measure_frame("raster: per pixel, shade_hammon_rgb_f32", r_pixel, quick);
+    rs_free(rg_);
     sink_ = oi[0] + op[0][0] + (float)qo[0][0];
     (void)smp_inputs;
     return 0;
