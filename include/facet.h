@@ -258,8 +258,8 @@ typedef struct facet_material_f32 {
  * channel's f0 or albedo that channel).  Runs on the active port, any n,
  * any alignment; an output may be the very same array (same layout) as an
  * input, no other overlap.  Cost per sample: one brdf_hammon geometry and
- * three channel tails (about 1.7x one brdf_hammon, not 3x; measured in
- * bench/: `facet-bench bench --rgb`).
+ * three channel tails (`build/facet-bench api`, README "Per-pixel use":
+ * RGB_FIGURES).
  *   _batch:               planar: out[c][i], f0[c][i], albedo[c][i]
  *   _batch_interleaved:   out[3i + c], f0[3i + c], albedo[3i + c]
  *   _batch_material:      one uniform material m for all n samples, planar

@@ -140,7 +140,6 @@ static void fx_fast_rgb(long reps)
         facet_brdf_hammon_rgb_fx_fast_batch(o, qnl, qnv, qlv, qal, f, a, N);
 }
 
-static void work_(void *ctx, long reps) { ((void (*)(long))ctx)(reps); }
 
 /* the rasterizer's shading pass (bench/raster), one frame per rep */
 static rs_gbuf *rg_;
@@ -151,20 +150,36 @@ static void r_rgb(long reps) { long r; for (r = 0; r < reps; r++) rs_shade_rgb(r
 static void r_material(long reps) { long r; for (r = 0; r < reps; r++) rs_shade_material(rg_); }
 static void r_pixel(long reps) { long r; for (r = 0; r < reps; r++) rs_shade_pixel(rg_); }
 
-static void measure_frame(const char *what, void (*fn)(long), int quick)
+
+/* Interleaved rounds: each round times one pass of every entry (rdtsc
+ * around the call); per entry the minimum over the rounds (and the median)
+ * per unit.  Interruptions by the other load on a shared VM only add time,
+ * so the minimum of direct timings is the robust figure, and entries
+ * compared with each other were measured in the same rounds. */
+typedef struct entry { const char *port, *what; void (*fn)(long); double units; } entry;
+
+static int cmp_d(const void *a, const void *b)
 {
-    cyc_stat s = cyc_measure(work_, (void *)fn, 1, 1, quick ? 11 : 11);
-    printf("%-8s %-44s %9.3f %9.3f %6.1f%%%s  (%.1f / %.1f per shaded pixel)\n", facet_port_name(), what,
-           s.min / 1e6, s.median / 1e6, 100 * s.spread, s.noisy ? "!" : "", s.min / rg_->n,
-           s.median / rg_->n);
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
 }
 
-static void measure(const char *port, const char *what, void (*fn)(long), int quick)
+static void run_entries(const entry *e, int n, int rounds, const char *suffix)
 {
-    long reps = quick ? 1 : cyc_calibrate_reps(work_, (void *)fn, 2e6);
-    cyc_stat s = cyc_measure(work_, (void *)fn, reps, N, quick ? 11 : 21);
-    printf("%-8s %-44s %9.2f %9.2f %6.1f%%%s\n", port, what, s.min, s.median, 100 * s.spread,
-           s.noisy ? "!" : "");
+    static double t[16][401];
+    int r, i;
+    for (i = 0; i < n; i++)
+        e[i].fn(1); /* warm-up */
+    for (r = 0; r < rounds; r++)
+        for (i = 0; i < n; i++) {
+            uint64_t t0 = cyc_now();
+            e[i].fn(1);
+            t[i][r] = (double)(cyc_now() - t0) / e[i].units;
+        }
+    for (i = 0; i < n; i++) {
+        qsort(t[i], (size_t)rounds, sizeof(double), cmp_d);
+        printf("%-8s %-48s %10.2f %10.2f%s\n", e[i].port, e[i].what, t[i][0], t[i][rounds / 2], suffix);
+    }
 }
 
 int facet_bench_api(int argc, char **argv)
@@ -207,42 +222,58 @@ int facet_bench_api(int argc, char **argv)
         mat.f0[c] = 0.04f + 0.01f * c;
         mat.albedo[c] = 0.8f - 0.3f * c;
     }
-    printf("# facet-bench api: %s per RGB sample (clock %s; %s), N = %d, one run\n", cyc_unit(), cyc_source(),
+    printf("# facet-bench api: %s per RGB sample (clock %s; %s), N = %d, interleaved rounds, one run\n", cyc_unit(), cyc_source(),
            cyc_is_cycles() ? "core cycles" : "not core cycles", N);
-    printf("%-8s %-44s %9s %9s %7s\n", "port", "entry point", "min", "median", "spread");
+    printf("%-8s %-48s %10s %10s\n", "port", "entry point (per RGB sample)", "min", "median");
     for (pi = 0; pi < facet_port_count(); pi++) {
         int sup;
         const char *pn = facet_port_at(pi, &sup, NULL);
         if (!sup)
             continue;
         facet_set_port(pn);
-        measure(pn, "brdf_hammon_f32_batch x 3 channels", mono3, quick);
-        measure(pn, "brdf_hammon_rgb_f32_batch (planar arrays)", rgb_planar, quick);
-        measure(pn, "brdf_hammon_rgb_f32_batch_interleaved", rgb_interleaved, quick);
-        measure(pn, "brdf_hammon_rgb_f32_batch_material (uniform)", rgb_material, quick);
-        measure(pn, "brdf_hammon_rgb_f32_batch_material_interleaved", rgb_material_interleaved, quick);
-        measure(pn, "brdf_hammon_rgb_f32_fast_batch (planar arrays)", rgb_fast_planar, quick);
-        measure(pn, "brdf_hammon_rgb_f32_fast_batch_material", rgb_fast_material, quick);
-        measure(pn, "per pixel: ..._batch_material_interleaved n=1", pp_batch1, quick);
+        {
+            entry e[] = {
+                { pn, "brdf_hammon_f32_batch x 3 channels", mono3, N },
+                { pn, "brdf_hammon_rgb_f32_batch (planar arrays)", rgb_planar, N },
+                { pn, "brdf_hammon_rgb_f32_batch_interleaved", rgb_interleaved, N },
+                { pn, "brdf_hammon_rgb_f32_batch_material (uniform)", rgb_material, N },
+                { pn, "brdf_hammon_rgb_f32_batch_material_interleaved", rgb_material_interleaved, N },
+                { pn, "brdf_hammon_rgb_f32_fast_batch (planar arrays)", rgb_fast_planar, N },
+                { pn, "brdf_hammon_rgb_f32_fast_batch_material", rgb_fast_material, N },
+                { pn, "per pixel: _batch_material_interleaved, n = 1", pp_batch1, N },
+                { pn, "per pixel: brdf_hammon_rgb_f32 (scalar call)", pp_scalar_call, N },
+                { pn, "per pixel: shade_hammon_rgb_f32 (N, L, V)", pp_shade, N },
+            };
+            run_entries(e, (int)(sizeof e / sizeof e[0]), quick ? 5 : 200, "");
+        }
     }
     facet_set_port("auto");
-    measure("scalar", "per pixel: brdf_hammon_rgb_f32 (call)", pp_scalar_call, quick);
-    measure("scalar", "per pixel: shade_hammon_rgb_f32 (N, L, V)", pp_shade, quick);
-    measure("scalar", "fx: brdf_hammon_fx x 3 channels", fx_mono3, quick);
-    measure("scalar", "fx: brdf_hammon_rgb_fx_batch", fx_rgb, quick);
-    measure("scalar", "fx_fast: brdf_hammon_fx_fast x 3 channels", fx_fast_mono3, quick);
-    measure("scalar", "fx_fast: brdf_hammon_rgb_fx_fast_batch", fx_fast_rgb, quick);
+    {
+        entry e[] = {
+            { "scalar", "fx: brdf_hammon_fx x 3 channels", fx_mono3, N },
+            { "scalar", "fx: brdf_hammon_rgb_fx_batch", fx_rgb, N },
+            { "scalar", "fx_fast: brdf_hammon_fx_fast x 3 channels", fx_fast_mono3, N },
+            { "scalar", "fx_fast: brdf_hammon_rgb_fx_fast_batch", fx_fast_rgb, N },
+        };
+        run_entries(e, 4, quick ? 5 : 60, "");
+    }
     /* the rasterizer's frame (shading pass only), every path on the auto port */
     rg_ = rs_render(quick ? 96 : 480, quick ? 64 : 320);
-    printf("# rasterizer %dx%d, %d shaded pixels, %d lights: M%s per frame (shading pass), min and median\n",
+    printf("# rasterizer %dx%d, %d shaded pixels, %d lights: M%s per frame (shading pass only), min and median\n",
            rg_->w, rg_->h, rg_->n, rg_->n_lights, cyc_unit());
-    measure_frame("raster: scalar inline (RGB kernel per pixel)", r_scalar, quick);
-    if (rs_shade_avx2(rg_))
-        measure_frame("raster: AVX2 inline (8 px, RGB kernel)", r_avx2, quick);
-    measure_frame("raster: batch, 3 brdf_hammon calls per light", r_batch, quick);
-    measure_frame("raster: RGB batch, 1 call per light", r_rgb, quick);
-    measure_frame("raster: RGB batch, uniform material per run", r_material, quick);
-    measure_frame("raster: per pixel, shade_hammon_rgb_f32", r_pixel, quick);
+    {
+        const char *pn = facet_port_name();
+        entry e[] = {
+            { pn, "raster: scalar inline (RGB kernel per pixel)", r_scalar, 1e6 },
+            { pn, "raster: batch, 3 brdf_hammon calls per light", r_batch, 1e6 },
+            { pn, "raster: RGB batch, 1 call per light", r_rgb, 1e6 },
+            { pn, "raster: RGB batch, uniform material per run", r_material, 1e6 },
+            { pn, "raster: per pixel, shade_hammon_rgb_f32", r_pixel, 1e6 },
+            { pn, "raster: AVX2 inline (8 px, RGB kernel)", r_avx2, 1e6 },
+        };
+        int ne = rs_shade_avx2(rg_) ? 6 : 5;
+        run_entries(e, ne, quick ? 3 : 41, "  M per frame");
+    }
     rs_free(rg_);
     sink_ = oi[0] + op[0][0] + (float)qo[0][0];
     (void)smp_inputs;

@@ -161,8 +161,8 @@ uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alp
  * tail, the diffuse shape) computed once: out[c] equals
  * facet_brdf_hammon_fx(nol, nov, lov, alpha, f0[c], albedo[c]) bit for bit
  * (the same operations per channel; tests/test_fx_rgb.c), on every target.
- * Cost: one geometry and three channel tails (measured: bench/, `facet-bench
- * rgb`). */
+ * Cost: one geometry and three channel tails (`build/facet-bench api`:
+ * RGBFX_FIGURES). */
 void facet_brdf_hammon_rgb_fx(uint64_t out[3], int32_t nol, int32_t nov, int32_t lov,
                               int32_t alpha, const int32_t f0[3], const int32_t albedo[3]);
 /* batches of it: planar (out[c][i], f0[c][i], albedo[c][i]) and interleaved
