@@ -259,7 +259,10 @@ typedef struct facet_material_f32 {
  * any alignment; an output may be the very same array (same layout) as an
  * input, no other overlap.  Cost per sample: one brdf_hammon geometry and
  * three channel tails (`build/facet-bench api`, README "Per-pixel use":
- * RGB_FIGURES).
+ * 0.49x to 0.66x the time of three brdf_hammon batches
+ * on every port; the material forms 5-8% faster than planar arrays of the
+ * same values; the interleaved forms gather through the stack, 1.5x to
+ * 2.5x slower than planar on the vector ports).
  *   _batch:               planar: out[c][i], f0[c][i], albedo[c][i]
  *   _batch_interleaved:   out[3i + c], f0[3i + c], albedo[3i + c]
  *   _batch_material:      one uniform material m for all n samples, planar
