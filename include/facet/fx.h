@@ -35,6 +35,12 @@
  * before that rounding; see src/fx_core.h.  No value is an error marker:
  * every raw output is the rounded (or saturated) function value.
  *
+ * NaN: fixed point has none.  Inputs are int32 and every pattern is a value
+ * (clamped to the domain); the library has no float-to-fixed conversion, so
+ * the f32 NaN rule (facet.h: a NaN input gives 0) has nothing to apply to.
+ * The `facet` command's Q15 parser refuses `nan` and `inf` (exit status 2);
+ * a caller converting floats itself decides what a NaN becomes.
+ *
  * Arithmetic: uint32/uint64 only (no signed overflow), no float, no libgcc
  * helper, no dependence on a hardware divider; 32x32->64 products are one
  * UMULL where the core has it and four 16x16 MULS on ARMv6-M (exact either
