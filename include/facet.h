@@ -259,10 +259,10 @@ typedef struct facet_material_f32 {
  * any alignment; an output may be the very same array (same layout) as an
  * input, no other overlap.  Cost per sample: one brdf_hammon geometry and
  * three channel tails (`build/facet-bench api`, README "Per-pixel use":
- * 0.49x to 0.66x the time of three brdf_hammon batches
- * on every port; the material forms 5-8% faster than planar arrays of the
- * same values; the interleaved forms gather through the stack, 1.5x to
- * 2.5x slower than planar on the vector ports).
+ * 0.48x to 0.64x the time of three brdf_hammon batches
+ * on every port; the material forms 6-11% faster than planar arrays of the
+ * same values; the interleaved forms gather through the stack, 1.9x to
+ * 2.6x slower than planar on the vector ports).
  *   _batch:               planar: out[c][i], f0[c][i], albedo[c][i]
  *   _batch_interleaved:   out[3i + c], f0[3i + c], albedo[3i + c]
  *   _batch_material:      one uniform material m for all n samples, planar
@@ -322,8 +322,9 @@ typedef struct facet_dirs_f32 {
  * above 1 (vectors not quite unit) counts as 1 in the factor.
  * Error: the kernel's bound at the dots as formed (2^-18.5; the dots' own
  * rounding is the caller's geometry), plus one rounding for the factor.
- * Cost: 15 ops for the dots and the factor, then facet_brdf_hammon_rgb_f32
- * (the scalar port: per-pixel figures in README "Per-pixel use"). */
+ * Cost: 15 scalar ops for the three dots, 2 compares and 3 multiplies for
+ * the factor, then facet_brdf_hammon_rgb_f32 (the scalar port: measured
+ * within noise of that call alone, README "Per-pixel use"). */
 void facet_shade_hammon_rgb_f32(float out[3], const facet_dirs_f32 *dirs,
                                 const facet_material_f32 *m);
 /* the same on facet_brdf_hammon_rgb_f32_fast */

@@ -168,8 +168,8 @@ uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alp
  * facet_brdf_hammon_fx(nol, nov, lov, alpha, f0[c], albedo[c]) bit for bit
  * (the same operations per channel; tests/test_fx_rgb.c), on every target.
  * Cost: one geometry and three channel tails (`build/facet-bench api`:
- * 0.49x the time of three
- * facet_brdf_hammon_fx calls, 0.55x in fx_fast, on x86-64). */
+ * 0.48x the time of three
+ * facet_brdf_hammon_fx calls, 0.63x in fx_fast, on x86-64). */
 void facet_brdf_hammon_rgb_fx(uint64_t out[3], int32_t nol, int32_t nov, int32_t lov,
                               int32_t alpha, const int32_t f0[3], const int32_t albedo[3]);
 /* batches of it: planar (out[c][i], f0[c][i], albedo[c][i]) and interleaved
