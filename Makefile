@@ -38,9 +38,9 @@ TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 HEADERS  := $(wildcard include/*.h include/facet/*.h include/facet/detail/*.h) src/kernels.def src/sample_kernels.def
 # The fixed-point kernels on their own (firmware): the kernels of both tiers,
 # their batch API as plain loops (no port table, no dispatcher: with
-# --gc-sections a firmware keeps only the kernels it calls), the kernel
-# table.  Compile with -Iinclude.
-FX_SOURCES := src/fx_core.c src/fx_kernels.c src/fx_fast.c src/fx_table.c \
+# --gc-sections a firmware keeps only the kernels it calls), the RGB forms,
+# the kernel table.  Compile with -Iinclude.
+FX_SOURCES := src/fx_core.c src/fx_kernels.c src/fx_fast.c src/fx_table.c src/fx_rgb.c \
               src/fx_only/fx_batch_scalar.c
 
 # Parts add their own rules here (ports/<isa>/port.mk, tests/*.mk, bench/*.mk);

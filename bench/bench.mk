@@ -29,7 +29,7 @@ BENCH_SHADER_PEERS := peers_shader_avx2 peers_shader_avx2_fm peers_shader_avx512
 else
 BENCH_SHADER_PEERS := peers_shader peers_shader_fm
 endif
-BENCH_HARNESS := cycles bench cli_bench loops_scalar loops_call loops_sse2 loops_avx2 loops_neon \
+BENCH_HARNESS := cycles bench cli_bench api_bench loops_scalar loops_call loops_sse2 loops_avx2 loops_neon \
                  loops_batch loops_tables peers peers_textbook peers_sample fxhook $(BENCH_SHADER_PEERS)
 BENCH_HARNESS_OBJ := $(BENCH_HARNESS:%=$(BUILD)/bench/harness/%.o)
 BENCH_RASTER_OBJ  := $(patsubst %,$(BUILD)/bench/raster/%.o,raster raster_avx2 raster_sse2 raster_neon)

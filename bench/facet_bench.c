@@ -16,6 +16,8 @@ static void usage(FILE *f)
     fprintf(f, "usage: facet-bench <verb> [options]\n"
                "verbs:\n"
                "  bench [KERNEL]       cycles per sample of every kernel, port and format\n"
+               "  api                  the RGB, uniform-material, per-pixel and fx RGB entry\n"
+               "                       points, timed in one run (issue 15)\n"
                "  report OUTDIR        the benchmark part of `make report` (bench.md, index.html)\n"
                "  batch-symbols        each port's batch function per kernel, as an offset from\n"
                "                       facet_port_supported in this binary\n"
@@ -27,6 +29,7 @@ static const struct {
     int (*run)(int argc, char **argv);
 } verbs[] = {
     { "bench", facet_cmd_bench },
+    { "api", facet_bench_api },
     { "report", facet_bench_report },
     { "batch-symbols", facet_bench_batch_symbols },
 };

@@ -4,6 +4,7 @@
 #define FACET_BENCH_VERBS_H
 
 int facet_cmd_bench(int argc, char **argv);         /* harness/cli_bench.c */
+int facet_bench_api(int argc, char **argv);         /* harness/api_bench.c */
 int facet_bench_report(int argc, char **argv);      /* report/report.c */
 int facet_bench_batch_symbols(int argc, char **argv); /* report/symbols.c */
 

@@ -290,6 +290,9 @@ static void test_raster(void)
     } while (0)
     PATH("scalar", (rs_shade_scalar(g), 1));
     PATH("batch", (rs_shade_batch(g), 1));
+    PATH("rgb", (rs_shade_rgb(g), 1));
+    PATH("material", (rs_shade_material(g), 1));
+    PATH("pixel", (rs_shade_pixel(g), 1));
     PATH("avx2", rs_shade_avx2(g));
     PATH("sse2", rs_shade_sse2(g));
     PATH("neon", rs_shade_neon(g));

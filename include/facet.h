@@ -11,8 +11,16 @@
  *     two-cosine kernels in [FACET_COS_MIN, 1]; L.V in [-1, 1]; alpha in
  *     [FACET_ALPHA_MIN, 1] (facet/common.h: 2^-20 and 2^-10).
  *   - Outside the domain every input is clamped to the nearest domain value;
- *     NaN and -Inf count as the low end, +Inf as the high end.  So finite or
- *     not, every input gives a finite, non-negative result and nothing traps.
+ *     -Inf counts as the low end, +Inf as the high end.
+ *   - NaN: a NaN in any input of a sample (quiet or signalling, either
+ *     sign, any payload) gives +0 for that sample, in both tiers, on every
+ *     port and in the batch, RGB and vector entry points alike: a value that
+ *     cannot light a pixel (the grazing-angle maximum it used to give
+ *     could).  Cost: one ordered compare and mask per two inputs
+ *     (keep_ord, 2 ops in "Cost:").  So finite or not, every input gives a
+ *     finite, non-negative result, never NaN, and nothing traps.  The
+ *     importance samplers below keep their own rules (NaN to a documented
+ *     substitute); fixed point (facet/fx.h) has integer inputs and no NaN.
  *   - Denormal inputs are values like any other, except on ports that run
  *     with flush-to-zero (armv7 NEON): there they act as 0 (the tests judge
  *     such a port at the flushed input), and an intermediate below 2^-126
@@ -28,7 +36,8 @@
  *     2^-k; FACET_ERR_* below are the bounds the tests enforce.  Where a
  *     bound has an absolute floor it is said so.
  *   - Cost: operations of the kernel body as a port with FMA executes them
- *     (clamp = 2, select = 2, fma = 1), counted by tests/test_op_counts.c;
+ *     (clamp = 2, select = 2, keep_ord = 2, fma = 1), counted by
+ *     tests/test_op_counts.c;
  *     rsqrt and rcp are listed apart: each is an estimate plus the port's
  *     refinement steps (see the port headers).
  *
@@ -68,21 +77,21 @@ extern "C" {
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1]; result in [0, 1].
  * Error: <= FACET_ERR_NOH_FROM_DOTS_F32 (2^-21.5); measured max 2^-22.12 (worst port,
  * 30 M samples) at (0.0587858558, 0.458401412, -0.495318681).
- * Cost: 13 ops (1 rsqrt, 0 rcp). */
+ * Cost: 17 ops (1 rsqrt, 0 rcp). */
 float facet_noh_from_dots_f32(float nol, float nov, float lov);
 
 /* L.H = V.H = |L + V| / 2 = sqrt((1 + L.V) / 2), via the same rsqrt.
  * Domain: L.V in [-1, 1]; L.V = -1 gives 0.
  * Error: <= FACET_ERR_LOH_FROM_DOTS_F32 (2^-22); measured max 2^-22.64 (worst port,
  * 30 M samples) at (0.0295905489).
- * Cost: 7 ops (1 rsqrt, 0 rcp). */
+ * Cost: 9 ops (1 rsqrt, 0 rcp). */
 float facet_loh_from_dots_f32(float lov);
 
 /* Schlick's Fresnel: F = F0 + (1 - F0) (1 - cos)^5, the power by three
  * multiplies.  Domain: f0, cos in [0, 1].  F(f0, 1) = f0, F(f0, 0) = 1.
  * Error: <= FACET_ERR_FRESNEL_SCHLICK_F32 (2^-21); measured max 2^-21.40 (worst port,
  * 30 M samples) at (2.34035488e-05, 0.494028538).
- * Cost: 13 ops (0 rsqrt, 0 rcp). */
+ * Cost: 15 ops (0 rsqrt, 0 rcp). */
 float facet_fresnel_schlick_f32(float f0, float cos_theta);
 
 /* GGX / Trowbridge-Reitz normal distribution:
@@ -92,7 +101,7 @@ float facet_fresnel_schlick_f32(float f0, float cos_theta);
  * D(0) = alpha^2/pi.  Domain: N.H in [0, 1], alpha in [FACET_ALPHA_MIN, 1].
  * Error: <= FACET_ERR_GGX_D_F32 (2^-20); measured max 2^-20.60 (worst port,
  * 30 M samples) at (0.999949455, 0.254411191).
- * Cost: 12 ops (0 rsqrt, 1 rcp). */
+ * Cost: 14 ops (0 rsqrt, 1 rcp). */
 float facet_ggx_d_f32(float noh, float alpha);
 
 /* Exact Smith masking for GGX:
@@ -100,7 +109,7 @@ float facet_ggx_d_f32(float noh, float alpha);
  * Domain: N.V in [0, 1]; G1(0) = 0, G1(1) = 1.
  * Error: <= FACET_ERR_SMITH_G1_F32 (2^-21); measured max 2^-21.66 (worst port,
  * 30 M samples) at (0.000242657741, 0.00600074418).
- * Cost: 15 ops (1 rsqrt, 1 rcp). */
+ * Cost: 17 ops (1 rsqrt, 1 rcp). */
 float facet_smith_g1_f32(float nov, float alpha);
 
 /* Exact height-correlated Smith G2 for GGX:
@@ -109,13 +118,13 @@ float facet_smith_g1_f32(float nov, float alpha);
  * Domain: N.L, N.V in [FACET_COS_MIN, 1].
  * Error: <= FACET_ERR_SMITH_G2_F32 (2^-21); measured max 2^-21.40 (worst port,
  * 30 M samples) at (0.492564738, 4.08501137e-06, 0.00407959009).
- * Cost: 26 ops (2 rsqrt, 1 rcp). */
+ * Cost: 30 ops (2 rsqrt, 1 rcp). */
 float facet_smith_g2_f32(float nol, float nov, float alpha);
 
 /* Uncorrelated Smith G2 = G1(N.L) G1(N.V), with one reciprocal.
  * Domain: as smith_g2.  Error: <= FACET_ERR_SMITH_G2_UNCORRELATED_F32 (2^-20.5); measured max 2^-20.95 (worst port,
  * 30 M samples) at (1.06287043e-05, 4.67698592e-05, 0.0156806652).
- * Cost: 26 ops (2 rsqrt, 1 rcp). */
+ * Cost: 30 ops (2 rsqrt, 1 rcp). */
 float facet_smith_g2_uncorrelated_f32(float nol, float nov, float alpha);
 
 /* Visibility: correlated G2 / (4 N.L N.V) with the numerator cancelled:
@@ -123,14 +132,14 @@ float facet_smith_g2_uncorrelated_f32(float nol, float nov, float alpha);
  * Domain: as smith_g2; largest at N.L = N.V = FACET_COS_MIN, alpha_min:
  * 0.5 / (2 COS_MIN alpha_min) = 2^28.  Error: <= FACET_ERR_SMITH_VIS_F32 (2^-21); measured max 2^-21.62 (worst port,
  * 30 M samples) at (3.14775752e-06, 0.126348287, 0.00824174657).
- * Cost: 23 ops (2 rsqrt, 1 rcp). */
+ * Cost: 27 ops (2 rsqrt, 1 rcp). */
 float facet_smith_vis_f32(float nol, float nov, float alpha);
 
 /* Hammon's G1 approximation (= Schlick-GGX with k = alpha/2):
  *   G1 ~ 2 N.V / (N.V (2 - alpha) + alpha)
  * Domain: N.V in [0, 1].  Error: <= FACET_ERR_SMITH_G1_HAMMON_F32 (2^-21.5); measured max 2^-22.26 (worst port,
  * 30 M samples) at (0.516059339, 0.018353641).
- * Cost: 9 ops (0 rsqrt, 1 rcp). */
+ * Cost: 11 ops (0 rsqrt, 1 rcp). */
 float facet_smith_g1_hammon_f32(float nov, float alpha);
 
 /* Hammon's G2 approximation:
@@ -138,14 +147,14 @@ float facet_smith_g1_hammon_f32(float nov, float alpha);
  * the lerp evaluated as (1 - alpha) 2 N.L N.V + alpha (N.L + N.V).
  * Domain: N.L, N.V in [FACET_COS_MIN, 1].  Error: <= FACET_ERR_SMITH_G2_HAMMON_F32 (2^-21); measured max 2^-21.83 (worst port,
  * 30 M samples) at (1.45550921e-05, 0.00873631984, 0.00181798683).
- * Cost: 16 ops (0 rsqrt, 1 rcp). */
+ * Cost: 20 ops (0 rsqrt, 1 rcp). */
 float facet_smith_g2_hammon_f32(float nol, float nov, float alpha);
 
 /* Hammon's visibility: G2_hammon / (4 N.L N.V) = 0.5 / lerp(2 N.L N.V, N.L + N.V, alpha).
  * Domain: as smith_g2_hammon; max 0.5/(2 alpha_min COS_MIN) = 2.7e8.
  * Error: <= FACET_ERR_SMITH_VIS_HAMMON_F32 (2^-21.5); measured max 2^-22.09 (worst port,
  * 30 M samples) at (0.713193238, 0.713202953, 0.00830200501).
- * Cost: 13 ops (0 rsqrt, 1 rcp). */
+ * Cost: 17 ops (0 rsqrt, 1 rcp). */
 float facet_smith_vis_hammon_f32(float nol, float nov, float alpha);
 
 /* Hammon's GGX diffuse (a BRDF value, not yet times N.L):
@@ -160,7 +169,7 @@ float facet_smith_vis_hammon_f32(float nol, float nov, float alpha);
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, albedo.
  * Error: <= FACET_ERR_DIFFUSE_HAMMON_F32 (2^-20); measured max 2^-20.59 (worst port,
  * 30 M samples) at (0.331329554, 0.331329554, 0.999999702, 0.0131228399, 0.645663142).
- * Cost: 44 ops (1 rsqrt, 1 rcp). */
+ * Cost: 50 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, float albedo);
 
 /* The whole model, per light:
@@ -174,7 +183,7 @@ float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, flo
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, f0, albedo.
  * Error: <= FACET_ERR_BRDF_HAMMON_F32 (2^-18.5); measured max 2^-19.30 (worst port,
  * 30 M samples) at (0.683041394, 0.683041394, -0.0669089183, 0.00208292552, 3.8500432e-11, 4.40309833e-09).
- * Cost: 97 ops (1 rsqrt, 3 rcp). */
+ * Cost: 103 ops (1 rsqrt, 3 rcp). */
 float facet_brdf_hammon_f32(float nol, float nov, float lov, float alpha,
                             float f0, float albedo);
 
@@ -189,7 +198,7 @@ void facet_brdf_hammon_rgb_f32(float out[3], float nol, float nov, float lov,
 /* Lambert: albedo / pi.  Domain: albedo in [0, 1].
  * Error: <= FACET_ERR_LAMBERT_F32 (2^-22.5); measured max 2^-23.26 (worst port,
  * 30 M samples) at (0.196352884).
- * Cost: 3 ops (0 rsqrt, 0 rcp). */
+ * Cost: 5 ops (0 rsqrt, 0 rcp). */
 float facet_lambert_f32(float albedo);
 
 /* ---- batch API -------------------------------------------------------------
@@ -226,6 +235,101 @@ void facet_diffuse_hammon_f32_batch(float *out, const float *nol, const float *n
 void facet_brdf_hammon_f32_batch(float *out, const float *nol, const float *nov, const float *lov,
                                  const float *alpha, const float *f0, const float *albedo, size_t n);
 void facet_lambert_f32_batch(float *out, const float *albedo, size_t n);
+
+/* ---- RGB batches, uniform materials, the vector entry ----------------------
+ * A material whose parameters are the same for many samples, passed once:
+ *   alpha     GGX width (perceptual roughness^2), clamped as the kernels
+ *   f0        specular reflectance at normal incidence, linear RGB
+ *   albedo    diffuse albedo, linear RGB
+ * Distinct struct types, with named fields, so that f0 and albedo, or the
+ * directions below, cannot be swapped by position in a call. */
+typedef struct facet_material_f32 {
+    float alpha;
+    float f0[3];
+    float albedo[3];
+} facet_material_f32;
+
+/* brdf_hammon for RGB f0 and albedo over n samples, the geometry (D, Vis,
+ * 1 - L.H, the diffuse shape) computed once per sample: channel c of
+ * sample i equals facet_brdf_hammon_f32_batch's result for (nol[i], nov[i],
+ * lov[i], alpha[i], f0 of channel c, albedo of channel c) on the same port,
+ * bit for bit (so the bounds, the domain and the NaN rule are brdf_hammon's:
+ * a NaN in the geometry zeroes the sample's three channels, one in a
+ * channel's f0 or albedo that channel).  Runs on the active port, any n,
+ * any alignment; an output may be the very same array (same layout) as an
+ * input, no other overlap.  Cost per sample: one brdf_hammon geometry and
+ * three channel tails (`build/facet-bench api`, README "Per-pixel use":
+ * 0.48x to 0.64x the time of three brdf_hammon batches
+ * on every port; the material forms 6-11% faster than planar arrays of the
+ * same values; the interleaved forms gather through the stack, 1.9x to
+ * 2.6x slower than planar on the vector ports).
+ *   _batch:               planar: out[c][i], f0[c][i], albedo[c][i]
+ *   _batch_interleaved:   out[3i + c], f0[3i + c], albedo[3i + c]
+ *   _batch_material:      one uniform material m for all n samples, planar
+ *                         out[c][i]; measured at least as fast as _batch
+ *   _batch_material_interleaved: the same, out[3i + c]
+ * and the same for the fast tier (_f32_fast_batch...). */
+void facet_brdf_hammon_rgb_f32_batch(float *const out[3], const float *nol, const float *nov,
+                                     const float *lov, const float *alpha,
+                                     const float *const f0[3], const float *const albedo[3],
+                                     size_t n);
+void facet_brdf_hammon_rgb_f32_batch_interleaved(float *out, const float *nol, const float *nov,
+                                                 const float *lov, const float *alpha,
+                                                 const float *f0, const float *albedo, size_t n);
+void facet_brdf_hammon_rgb_f32_batch_material(float *const out[3], const float *nol,
+                                              const float *nov, const float *lov,
+                                              const facet_material_f32 *m, size_t n);
+void facet_brdf_hammon_rgb_f32_batch_material_interleaved(float *out, const float *nol,
+                                                          const float *nov, const float *lov,
+                                                          const facet_material_f32 *m, size_t n);
+void facet_brdf_hammon_rgb_f32_fast_batch(float *const out[3], const float *nol, const float *nov,
+                                          const float *lov, const float *alpha,
+                                          const float *const f0[3], const float *const albedo[3],
+                                          size_t n);
+void facet_brdf_hammon_rgb_f32_fast_batch_interleaved(float *out, const float *nol,
+                                                      const float *nov, const float *lov,
+                                                      const float *alpha, const float *f0,
+                                                      const float *albedo, size_t n);
+void facet_brdf_hammon_rgb_f32_fast_batch_material(float *const out[3], const float *nol,
+                                                   const float *nov, const float *lov,
+                                                   const facet_material_f32 *m, size_t n);
+void facet_brdf_hammon_rgb_f32_fast_batch_material_interleaved(float *out, const float *nol,
+                                                               const float *nov, const float *lov,
+                                                               const facet_material_f32 *m,
+                                                               size_t n);
+
+/* The vector entry, for per-pixel shaders: unit vectors in one struct with
+ * named fields (n: the shading normal, l: towards the light, v: towards the
+ * viewer), so that they cannot be passed in the wrong order by position. */
+typedef struct facet_vec3_f32 {
+    float x, y, z;
+} facet_vec3_f32;
+
+typedef struct facet_dirs_f32 {
+    facet_vec3_f32 n, l, v;
+} facet_dirs_f32;
+
+/* out[c] = brdf_hammon(N.L, N.V, L.V, m->alpha, m->f0[c], m->albedo[c]) * N.L,
+ * the radiance factor of one light per unit of its irradiance (multiply by
+ * the light's colour).  The dots are formed here (plain float products and
+ * sums), then facet_brdf_hammon_rgb_f32.
+ * Below-horizon rule: the light below the shading horizon, N.L <= 0, gives
+ * exactly 0 in every channel; the view below it, N.V <= 0 (interpolated or
+ * normal-mapped normals at silhouettes), is evaluated at N.V =
+ * FACET_COS_MIN, the kernel's clamp, so silhouettes do not turn black.
+ * NaN in any component of n, l, v or in the material: 0 in the affected
+ * channels (the kernels' NaN rule; a NaN direction gives NaN dots).  N.L
+ * above 1 (vectors not quite unit) counts as 1 in the factor.
+ * Error: the kernel's bound at the dots as formed (2^-18.5; the dots' own
+ * rounding is the caller's geometry), plus one rounding for the factor.
+ * Cost: 15 scalar ops for the three dots, 2 compares and 3 multiplies for
+ * the factor, then facet_brdf_hammon_rgb_f32 (the scalar port: measured
+ * within noise of that call alone, README "Per-pixel use"). */
+void facet_shade_hammon_rgb_f32(float out[3], const facet_dirs_f32 *dirs,
+                                const facet_material_f32 *m);
+/* the same on facet_brdf_hammon_rgb_f32_fast */
+void facet_shade_hammon_rgb_f32_fast(float out[3], const facet_dirs_f32 *dirs,
+                                     const facet_material_f32 *m);
 
 /* ---- the fast tier (f32_fast) ------------------------------------------
  * facet_<kernel>_f32_fast, facet_<kernel>_f32_fast_batch and, in each port

@@ -3,7 +3,7 @@
  *   BATCH_PORT   port name token (scalar, sse2, ...)
  *   BATCH_TIER   f32 or f32_fast (included once per tier)
  *   BATCH_W      lanes
- *   BATCH_V      vector type
+ *   BATCH_V      vector type (also for src/rgb_batch_body.h)
  *   BATCH_LOAD(p) / BATCH_STORE(p, v)   unaligned load / store
  * Whole vectors straight from the arrays; the tail (n % W) through a padded
  * stack copy, so every n and every alignment takes the same code.  All of a
@@ -46,9 +46,13 @@
 #include "kernels.def"
 #undef FACET_KERNEL
 
+/* the RGB batch (needs BATCH_V, the port's vector type) */
+#include "rgb_batch_body.h"
+
 const facet_f32_port BATCH_CAT(facet_port_, BATCH_PORT, BATCH_CAT(_, BATCH_TIER, )) = {
     BATCH_CAT_STR(BATCH_PORT), BATCH_W,
 #define FACET_KERNEL(name, NAME, n, ...) BATCH_FN(name),
 #include "kernels.def"
 #undef FACET_KERNEL
+    BATCH_FN(brdf_hammon_rgb),
 };

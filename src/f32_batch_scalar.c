@@ -6,6 +6,7 @@
 #define BATCH_W 1
 #define BATCH_LOAD(p) (*(p))
 #define BATCH_STORE(p, v) (*(p) = (v))
+#define BATCH_V float
 #define BATCH_TIER f32
 #include "batch_body.h"
 #undef BATCH_TIER
@@ -14,7 +15,6 @@
 #undef BATCH_TIER
 
 /* the samplers' batch functions and table (src/sample_batch_body.h) */
-#define BATCH_V float
 #define BATCH_TIER f32
 #include "sample_batch_body.h"
 #undef BATCH_TIER

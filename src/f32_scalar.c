@@ -31,3 +31,24 @@ void facet_brdf_hammon_rgb_f32_fast(float out[3], float nol, float nov, float lo
 {
     facet_brdf_hammon_rgb_f32_fast_scalar(out, nol, nov, lov, alpha, f0, albedo);
 }
+
+/* the vector entry: the dots, the kernel, the below-horizon rule, the N.L factor */
+static float dot3_(const facet_vec3_f32 *a, const facet_vec3_f32 *b)
+{
+    return a->x * b->x + a->y * b->y + a->z * b->z;
+}
+
+#define SHADE_(name, rgb)                                                               \
+    void name(float out[3], const facet_dirs_f32 *d, const facet_material_f32 *m)       \
+    {                                                                                   \
+        float nol = dot3_(&d->n, &d->l), nov = dot3_(&d->n, &d->v);                     \
+        float lov = dot3_(&d->l, &d->v), brdf[3], k;                                    \
+        int c;                                                                          \
+        rgb(brdf, nol, nov, lov, m->alpha, m->f0, m->albedo);                           \
+        /* 0 below the horizon and for NaN (the compare is false) */                    \
+        k = nol > 0.0f ? (nol < 1.0f ? nol : 1.0f) : 0.0f;                              \
+        for (c = 0; c < 3; c++)                                                         \
+            out[c] = brdf[c] * k;                                                       \
+    }
+SHADE_(facet_shade_hammon_rgb_f32, facet_brdf_hammon_rgb_f32_scalar)
+SHADE_(facet_shade_hammon_rgb_f32_fast, facet_brdf_hammon_rgb_f32_fast_scalar)

@@ -20,6 +20,15 @@
 #include "kernels.def"
 #undef FACET_KERNEL
 
+void facet_brdf_hammon_rgb_fx_fast(uint64_t out[3], int32_t nol, int32_t nov, int32_t lov,
+                                   int32_t alpha, const int32_t f0[3], const int32_t albedo[3])
+{
+    fxf_brdf_geom G = fxf_fast_brdf_geometry(nol, nov, lov, alpha);
+    int c;
+    for (c = 0; c < 3; c++)
+        out[c] = fxf_fast_brdf_channel(&G, f0[c], albedo[c]);
+}
+
 /* ---- the scalar port's batches: src/fx_scalar_loops.h ----------------- */
 #define FX_TIER fx_fast
 #define FX_SCALAR_VAR facet_fx_fast_port_scalar

@@ -405,8 +405,10 @@ FXF_INLINE fxv_u32 fxf_p5(fxv_u32 x)
  *   a rough = x2 2^-(24 + k), x2 = hi(2 hi(mh, A floor(2^20/10)), q), to Q25.
  * Each term's relative error <= 2^-14.8 (the P sums), its truncations
  * <= 2^-25 absolute: below the output's LSB (2^-24) even at albedo = 1. */
-FXF_INLINE fxv_u32 fxw_diffuse26(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 alb, fxv_u32 s,
-                                    fxv_u32 c, fxv_u32 x, fxv_u32 k, fxf_root lh)
+/* split in two for the RGB form (the shape before albedo enters, then the
+ * albedo part); integer sums, so the same bits as one expression */
+FXF_INLINE fxv_u32 fxw_diffuse26_shape(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 s,
+                                       fxv_u32 c, fxv_u32 x, fxv_u32 k, fxf_root lh)
 {
     fxv_u32 pp = fxw_mulhi(fxf_p5(nl), fxf_p5(nv));                                   /* Q30 */
     fxv_u32 k1 = fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), a), fxv_k32(FXW_C105));       /* Q30 <= 2^30.07 */
@@ -422,10 +424,20 @@ FXF_INLINE fxv_u32 fxw_diffuse26(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 alb,
      * <= 0.45 t (1 + 128 sqrt(t/2)) with t < 2^(1 - k)] */
     fxv_u32 x1 = fxw_mulhi(mh, fxv_mul32(a, fxv_k32(FXW_TENTH)));
     fxv_u32 rough = fxv_shrv(fxv_shl(fxw_mulhi(fxv_shl(x1, 1), q), 1), k);
+    return fxv_add32(fxv_shr(fxv_add32(smooth, fxv_k32(8)), 4), rough);
+}
+
+FXF_INLINE fxv_u32 fxw_diffuse26_albedo(fxv_u32 shape, fxv_u32 a, fxv_u32 alb)
+{
     fxv_u32 multi = fxw_mulhi(fxv_shl(fxv_mul32(alb, a), 1), fxv_k32(FXW_MULTI));    /* Q31 */
-    fxv_u32 b = fxv_add32(fxv_add32(fxv_shr(fxv_add32(smooth, fxv_k32(8)), 4), rough),
-                          fxv_shr(fxv_add32(multi, fxv_k32(32)), 6));
+    fxv_u32 b = fxv_add32(shape, fxv_shr(fxv_add32(multi, fxv_k32(32)), 6));
     return fxw_mulhi(b, fxv_mul32(alb, fxv_k32(FXW_INV_PI)));                         /* alb/pi Q33 -> Q26 */
+}
+
+FXF_INLINE fxv_u32 fxw_diffuse26(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 alb, fxv_u32 s,
+                                    fxv_u32 c, fxv_u32 x, fxv_u32 k, fxf_root lh)
+{
+    return fxw_diffuse26_albedo(fxw_diffuse26_shape(nl, nv, a, s, c, x, k, lh), a, alb);
 }
 
 FXF_INLINE fxv_u32 fxf_fast_diffuse_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
@@ -457,36 +469,35 @@ FXF_INLINE fxv_u32 fxf_fast_diffuse_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov
  *   spec = sp 2^-Es, Es an exponent lane (biased by 256; spec < 2^33)
  * brdf Q29 in 64 bits = spec sp 2^(29 - Es) (one 32x32->64 product by a
  * power of two <= 2^31) + diffuse Q26 2^3, rounded once to UQ40.24. */
-FXF_INLINE fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
-                                           fxv_i32 f0_in, fxv_i32 albedo)
+/* What brdf_hammon computes before f0 and albedo enter; the RGB form
+ * (facet_brdf_hammon_rgb_fx_fast) shares it across channels, and per
+ * channel runs the same operations, so each channel is brdf_hammon's bits. */
+typedef struct fxf_brdf_geom {
+    fxv_u32 a, y5, k5, ka, k, g2, ee, em, kd, rd, shape;
+} fxf_brdf_geom;
+
+FXF_INLINE fxf_brdf_geom fxf_fast_brdf_geometry(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha)
 {
-    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha), f0 = fxf_unit(f0_in);
+    fxf_brdf_geom G;
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
     fxf_dots g = fxf_dots_of(nl, nv, lov);
     fxf_root lh = fxf_sqrt32(g.c);
     fxv_u32 k = fxv_shl(lh.h, 1), x = fxv_shlv(g.c, k);             /* 2t = x 2^-(30 + k) */
-    fxv_u32 r1, uu, ku, ym, y2, y4, y5, k5, kf, jj, ft, fs, kF, ka, a2t, g2, num;
-    fxv_u32 as, ee, em, etop, mtop, e2, dm, kd, rd, sp, ks, es, sl, sr;
-    fxv_u64 spec, d64;
-    /* Fresnel */
+    fxv_u32 r1, uu, ku, ym, y2, y4, a2t;
+    fxv_u32 as, ee, em, etop, mtop, e2, dm;
+    /* Fresnel's y^5 */
     r1 = fxf_rcp20(fxv_add32(fxv_k32(1u << 31), fxv_shlv(lh.s, fxv_sub32(fxv_k32(11), lh.h)))); /* (1 + L.H) Q31 */
     uu = fxv_max(g.u, fxv_k32(1));
     ku = fxv_clz(uu);
     ym = fxw_mulhi(fxv_shlv(uu, ku), fxv_shl(r1, 12));
     y2 = fxw_mulhi(ym, ym);
     y4 = fxw_mulhi(y2, y2);
-    y5 = fxw_mulhi(y4, ym);
-    k5 = fxv_add32(fxv_shl(ku, 2), ku);
-    kf = fxv_sub32(fxv_clz(f0), fxv_k32(16));            /* f0 = 0: 16 */
-    jj = fxv_min(k5, kf);
-    ft = fxw_mulhi(y5, fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), f0), 16));
-    fs = fxv_add32(fxv_shlv(f0, fxv_add32(jj, fxv_k32(15))),
-                   fxv_shrv(ft, fxv_min(fxv_sub32(fxv_add32(k5, fxv_k32(1)), jj), fxv_k32(31))));
-    kF = fxv_min(fxv_clz(fs), fxv_k32(31)); /* fs = 0 (F < 2^-46): spec 0 */
-    /* (a 2t)^2 F */
-    ka = fxv_clz(a);
-    a2t = fxw_mulhi(fxv_shlv(a, ka), x);
-    g2 = fxw_mulhi(a2t, a2t);
-    num = fxw_mulhi(g2, fxv_shlv(fs, kF));              /* 2^-(2ka + 2k + jj + kF - 8) */
+    G.y5 = fxw_mulhi(y4, ym);
+    G.k5 = fxv_add32(fxv_shl(ku, 2), ku);
+    /* (a 2t)^2 */
+    G.ka = fxv_clz(a);
+    a2t = fxw_mulhi(fxv_shlv(a, G.ka), x);
+    G.g2 = fxw_mulhi(a2t, a2t);
     /* e^2 m */
     as = fxv_mul32(a, g.s);
     etop = fxw_top(fxv_add64(fxv_mulw(as, as), fxv_mulw(g.w, fxv_k32(1u << 30))), &ee);
@@ -496,28 +507,55 @@ FXF_INLINE fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, f
     mtop = fxv_add32(fxw_mulhi(fxv_shl(fxv_mul32(nl, nv), 1), fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), a), 17)), as);
     em = fxv_clz(mtop);
     mtop = fxv_shlv(mtop, em);
-    em = fxv_add32(em, fxv_k32(17));
+    G.em = fxv_add32(em, fxv_k32(17));
+    G.ee = ee;
     /* e = etop 2^-(28 + ee), m = mtop 2^-(13 + em) */
     e2 = fxw_mulhi(etop, etop);                        /* 2^-(24 + 2 ee) */
     dm = fxw_mulhi(e2, mtop);                          /* 2^-(5 + 2 ee + em) [>= 2^29] */
-    kd = fxv_clz(dm);
-    rd = fxf_rcp20(fxv_shlv(dm, kd));     /* 1/(e^2 m) = rd 2^(2ee + em + kd - 46) */
-    sp = fxw_mulhi(fxw_mulhi(num, fxv_shl(rd, 12)), fxv_k32(FXW_INV_2PI));
+    G.kd = fxv_clz(dm);
+    G.rd = fxf_rcp20(fxv_shlv(dm, G.kd));   /* 1/(e^2 m) = rd 2^(2ee + em + kd - 46) */
+    G.a = a;
+    G.k = k;
+    G.shape = fxw_diffuse26_shape(nl, nv, a, g.s, g.c, x, k, lh);
+    return G;
+}
+
+FXF_INLINE fxv_u64 fxf_fast_brdf_channel(const fxf_brdf_geom *G, fxv_i32 f0_in, fxv_i32 albedo)
+{
+    fxv_u32 f0 = fxf_unit(f0_in);
+    fxv_u32 kf, jj, ft, fs, kF, num, sp, ks, es, sl, sr;
+    fxv_u64 spec, d64;
+    /* F = f0 + (1 - f0) y^5 */
+    kf = fxv_sub32(fxv_clz(f0), fxv_k32(16));            /* f0 = 0: 16 */
+    jj = fxv_min(G->k5, kf);
+    ft = fxw_mulhi(G->y5, fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), f0), 16));
+    fs = fxv_add32(fxv_shlv(f0, fxv_add32(jj, fxv_k32(15))),
+                   fxv_shrv(ft, fxv_min(fxv_sub32(fxv_add32(G->k5, fxv_k32(1)), jj), fxv_k32(31))));
+    kF = fxv_min(fxv_clz(fs), fxv_k32(31)); /* fs = 0 (F < 2^-46): spec 0 */
+    num = fxw_mulhi(G->g2, fxv_shlv(fs, kF));              /* 2^-(2ka + 2k + jj + kF - 8) */
+    sp = fxw_mulhi(fxw_mulhi(num, fxv_shl(G->rd, 12)), fxv_k32(FXW_INV_2PI));
     /* spec = sp 2^-Es, Es = 2ka + 2k + jj + kF + 18 - 2ee - em - kd [sp >=
      * 2^21], normalised: + ks, held biased by 256 [Es >= -2: spec < 2^33];
      * Q29: sp 2^(29 - Es) < 2^62, a left shift sl <= 30 or a right one */
     ks = fxv_min(fxv_clz(sp), fxv_k32(31));
     sp = fxv_shlv(sp, ks);
-    es = fxv_sub32(fxv_add32(fxv_add32(fxv_add32(fxv_shl(fxv_add32(ka, k), 1), jj), fxv_add32(kF, ks)),
+    es = fxv_sub32(fxv_add32(fxv_add32(fxv_add32(fxv_shl(fxv_add32(G->ka, G->k), 1), jj), fxv_add32(kF, ks)),
                              fxv_k32(274)),
-                   fxv_add32(fxv_add32(fxv_shl(ee, 1), em), kd));
+                   fxv_add32(fxv_add32(fxv_shl(G->ee, 1), G->em), G->kd));
     sl = fxv_sub32(fxv_k32(285), fxv_min(es, fxv_k32(285)));
     sr = fxv_min(fxv_sub32(fxv_max(es, fxv_k32(285)), fxv_k32(285)), fxv_k32(31));
     spec = fxv_mulw(fxv_shrv(sp, sr), fxv_shlv(fxv_k32(1), sl));
     /* diffuse Q26 to Q29 plus half a Q26 unit: the mean of its last floor */
-    d64 = fxv_mulw(fxv_add32(fxv_shl(fxw_diffuse26(nl, nv, a, fxf_unit(albedo), g.s, g.c, x, k, lh), 1), fxv_k32(1)),
+    d64 = fxv_mulw(fxv_add32(fxv_shl(fxw_diffuse26_albedo(G->shape, G->a, fxf_unit(albedo)), 1), fxv_k32(1)),
                    fxv_k32(4));
     return fxb_rshr64(fxv_add64(spec, d64), 5);
+}
+
+FXF_INLINE fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
+                                           fxv_i32 f0_in, fxv_i32 albedo)
+{
+    fxf_brdf_geom G = fxf_fast_brdf_geometry(nol, nov, lov, alpha);
+    return fxf_fast_brdf_channel(&G, f0_in, albedo);
 }
 
 #endif

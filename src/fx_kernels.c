@@ -231,8 +231,9 @@ static uint32_t one_minus_pow5_q30_(uint32_t x)
     return (1u << 30) - fxv_narrow(fxb_rshr64(fxb_p_y4_hi(y, y), 13));
 }
 
-/* diffuse as fxf from the shared pieces; nl, nv, a, alb raw, t31 raised */
-static fxf diffuse_fxf_(uint32_t nl, uint32_t nv, uint64_t t31, uint32_t a, uint32_t alb)
+/* diffuse as fxf from the shared pieces; nl, nv, a, alb raw, t31 raised.
+ * In two parts for the RGB form: single (no albedo), then the albedo part. */
+static fxf diffuse_single_(uint32_t nl, uint32_t nv, uint64_t t31, uint32_t a)
 {
     uint32_t s = nl + nv;
     fxf t = fxf_u64(t31, -31);
@@ -241,9 +242,18 @@ static fxf diffuse_fxf_(uint32_t nl, uint32_t nv, uint64_t t31, uint32_t a, uint
     fxf rough = fxf_div(fxf_mul(tt, sum), fxf_u64(20u * s, -15));
     fxf smooth = fxf_mul(fxf_mul(fxf_u64(one_minus_pow5_q30_(nl), -30),
                                  fxf_u64(one_minus_pow5_q30_(nv), -30)), k_(C105_M, -31));
-    fxf single = fxf_add(fxf_mul(fxf_u64(ONE - a, -15), smooth), fxf_mul(fxf_u64(a, -15), rough));
+    return fxf_add(fxf_mul(fxf_u64(ONE - a, -15), smooth), fxf_mul(fxf_u64(a, -15), rough));
+}
+
+static fxf diffuse_albedo_(fxf single, uint32_t a, uint32_t alb)
+{
     fxf multi = fxf_mul(fxf_mul(fxf_u64(alb, -15), fxf_u64(a, -15)), k_(MULTI_M, -33));
     return fxf_mul(fxf_mul(fxf_u64(alb, -15), k_(INV_PI_M, -33)), fxf_add(single, multi));
+}
+
+static fxf diffuse_fxf_(uint32_t nl, uint32_t nv, uint64_t t31, uint32_t a, uint32_t alb)
+{
+    return diffuse_albedo_(diffuse_single_(nl, nv, t31, a), a, alb);
 }
 
 /* Error: FACET_FX_ERR_DIFFUSE_HAMMON (measured).  Cost: 1 sqrt, 1 division,
@@ -269,11 +279,18 @@ uint32_t facet_diffuse_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t 
  * Cost: 2 sqrt, 3 division, ~30 fxf ops. */
 #define TWO_PI_M 0xC90FDAA2u /* round(2 pi 2^29), e = -29 */
 
-uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
-                              int32_t f0, int32_t albedo)
+/* What brdf_hammon computes before f0 and albedo enter, shared by the RGB
+ * form; per channel the same fxf operations in the same order, so each
+ * channel is facet_brdf_hammon_fx's bits. */
+typedef struct brdf_geom_ {
+    fxf y5, a2t2, den, single;
+    uint32_t a;
+} brdf_geom_;
+
+static brdf_geom_ brdf_geometry_(int32_t nol, int32_t nov, int32_t lov, int32_t alpha)
 {
+    brdf_geom_ G;
     uint32_t nl = cos_(nol), nv = cos_(nov), a = alpha_(alpha), s = nl + nv;
-    uint32_t f0r = unit_(f0);
     uint64_t s2 = fx_mul64(s, s), t31 = t31_(t_(lov), s);
     uint64_t e60 = ((t31 - s2) << 30) + mul64x32(s2, a * a);
     fxf e = fxf_u64(e60, -60);
@@ -281,13 +298,37 @@ uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alp
     fxf lh = fxf_sqrt(fxf_u64(t31, -32));
     fxf y = fxf_div(fxf_u64((1ull << 32) - t31, -32), fxf_add(k_(0x80000000u, -31), lh));
     fxf y2 = fxf_mul(y, y);
-    fxf f = fxf_add(fxf_u64(f0r, -15), fxf_mul(fxf_u64(ONE - f0r, -15),
-                                               fxf_mul(fxf_mul(y2, y2), y)));
-    fxf den = fxf_mul(fxf_mul(fxf_mul(e, e), fxf_u64(hammon_m45_(nl, nv, a), -45)),
-                      k_(TWO_PI_M, -29));
-    fxf spec = fxf_div(fxf_mul(fxf_mul(a2t, a2t), f), den);
-    fxf r = fxf_add(spec, diffuse_fxf_(nl, nv, t31, a, unit_(albedo)));
+    G.y5 = fxf_mul(fxf_mul(y2, y2), y);
+    G.den = fxf_mul(fxf_mul(fxf_mul(e, e), fxf_u64(hammon_m45_(nl, nv, a), -45)), k_(TWO_PI_M, -29));
+    G.a2t2 = fxf_mul(a2t, a2t);
+    G.single = diffuse_single_(nl, nv, t31, a);
+    G.a = a;
+    return G;
+}
+
+static uint64_t brdf_channel_(const brdf_geom_ *G, int32_t f0, int32_t albedo)
+{
+    uint32_t f0r = unit_(f0);
+    fxf f = fxf_add(fxf_u64(f0r, -15), fxf_mul(fxf_u64(ONE - f0r, -15), G->y5));
+    fxf spec = fxf_div(fxf_mul(G->a2t2, f), G->den);
+    fxf r = fxf_add(spec, diffuse_albedo_(G->single, G->a, unit_(albedo)));
     return fxf_fixed(r, FACET_FX_BRDF_FRAC, FACET_FX_MAX_BRDF);
+}
+
+uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
+                              int32_t f0, int32_t albedo)
+{
+    brdf_geom_ G = brdf_geometry_(nol, nov, lov, alpha);
+    return brdf_channel_(&G, f0, albedo);
+}
+
+void facet_brdf_hammon_rgb_fx(uint64_t out[3], int32_t nol, int32_t nov, int32_t lov,
+                              int32_t alpha, const int32_t f0[3], const int32_t albedo[3])
+{
+    brdf_geom_ G = brdf_geometry_(nol, nov, lov, alpha);
+    int c;
+    for (c = 0; c < 3; c++)
+        out[c] = brdf_channel_(&G, f0[c], albedo[c]);
 }
 
 /* ---- the scalar port's batches: src/fx_scalar_loops.h ----------------- */

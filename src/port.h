@@ -12,6 +12,17 @@
 #define FACET_F32_PARAM_(q) const float *x##q
 #define FACET_FX_PARAM_(q) const int32_t *x##q
 
+/* The streams of an RGB batch (src/rgb_batch_body.h): each a pointer and an
+ * element stride, 1 = planar, 3 = interleaved, 0 = one uniform value. */
+typedef struct facet_rgb_io {
+    float *out[3];
+    ptrdiff_t out_stride;
+    const float *alpha;
+    ptrdiff_t alpha_stride;
+    const float *f0[3], *albedo[3];
+    ptrdiff_t material_stride;
+} facet_rgb_io;
+
 /* f32: out[i] = facet_<name>_f32(x0[i], ...), any n, out may be an input */
 typedef struct facet_f32_port {
     const char *name;
@@ -20,6 +31,9 @@ typedef struct facet_f32_port {
     void (*name)(float *out, FACET_EACH_INPUT(n, FACET_F32_PARAM_), size_t count);
 #include "kernels.def"
 #undef FACET_KERNEL
+    /* brdf_hammon with RGB f0 and albedo, the geometry once per sample */
+    void (*brdf_hammon_rgb)(const facet_rgb_io *io, const float *nol, const float *nov,
+                            const float *lov, size_t count);
 } facet_f32_port;
 
 /* fx: bit-identical to the scalar specification (src/fx_kernels.c).  A

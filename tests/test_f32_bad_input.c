@@ -1,20 +1,35 @@
 /* test_f32_bad_input.c - the domain contract of facet.h for every kernel:
  * each bad value in each input position (others random and valid) gives a
  * finite, non-negative result, bit-equal to the kernel evaluated at the
- * documented substitute (NaN, -Inf, below-domain -> the low end; +Inf,
- * above-domain -> the high end).  Also the named special points. */
+ * documented substitute (-Inf, below-domain -> the low end; +Inf,
+ * above-domain -> the high end), and every NaN class (quiet, signalling,
+ * either sign, payloads) in each input position gives +0 (the NaN rule).
+ * Also the named special points. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <float.h>
+#include <stdint.h>
+#include <string.h>
 #include "harness.h"
 #include "sample.h"
 #include "facet/oracle.h"
 
 static int same(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
 
+/* every NaN class: quiet and signalling, both signs, small and full payloads */
+static const uint32_t nan_bits[] = { 0x7fc00000u, 0xffc00000u, 0x7f800001u, 0xff800001u, 0x7fa00000u,
+                                     0x7fc12345u, 0x7fbfffffu, 0x7fffffffu, 0xffffffffu, 0xff812345u };
+#define N_NAN ((int)(sizeof nan_bits / sizeof nan_bits[0]))
+static float nan_at(int i)
+{
+    float f;
+    memcpy(&f, &nan_bits[i], sizeof f);
+    return f;
+}
+
 int main(void)
 {
-    const float bad[] = { NAN, -NAN, INFINITY, -INFINITY, 0.0f, -0.0f, 1.4e-45f, -1.4e-45f,
+    const float bad[] = { INFINITY, -INFINITY, 0.0f, -0.0f, 1.4e-45f, -1.4e-45f,
                           1e-39f, -1e-30f, -1.0f, -2.0f, 1.0000001f, 2.0f, 1e30f, FLT_MAX, -FLT_MAX };
     const int n_bad = (int)(sizeof bad / sizeof bad[0]);
     smp_rng rng = { 12345 };
@@ -36,7 +51,7 @@ int main(void)
                     memcpy(ref_in, in, sizeof in);
                     in[pos] = v;
                     /* the documented substitute */
-                    ref_in[pos] = (v != v || v < lo) ? lo : v > hi ? hi : v;
+                    ref_in[pos] = v < lo ? lo : v > hi ? hi : v;
                     got = f(in);
                     want = f(ref_in);
                     if (!(got == got) || got == INFINITY || got == -INFINITY)
@@ -55,6 +70,29 @@ int main(void)
                             nan_out++;
                     }
                 }
+        /* the NaN rule: every NaN class in every position, others valid,
+         * out of domain or themselves NaN, gives +0 */
+        {
+            int nan_bad = 0;
+            for (rep = 0; rep < 20; rep++)
+                for (pos = 0; pos < k->n_inputs; pos++)
+                    for (b = 0; b < N_NAN; b++) {
+                        float in[FACET_MAX_INPUTS], got;
+                        int j;
+                        smp_inputs(&rng, k, in);
+                        if (rep % 4 == 1) /* the others out of domain */
+                            for (j = 0; j < k->n_inputs; j++)
+                                in[j] = bad[(rep + j + b) % n_bad];
+                        if (rep % 4 == 2) /* the others NaN too */
+                            for (j = 0; j < k->n_inputs; j++)
+                                in[j] = nan_at((b + j) % N_NAN);
+                        in[pos] = nan_at(b);
+                        got = f(in);
+                        if (!same(got, 0.0f))
+                            nan_bad++;
+                    }
+            CHECK(nan_bad == 0, "%s%s: %d samples with a NaN input are not +0", k->name, tier, nan_bad);
+        }
         CHECK(nan_out == 0, "%s%s: %d bad inputs gave NaN or Inf", k->name, tier, nan_out);
         CHECK(neg_out == 0, "%s%s: %d bad inputs gave a negative result", k->name, tier, neg_out);
         CHECK(mismatch == 0, "%s%s: %d bad inputs differ from the documented clamped value", k->name, tier,
@@ -105,6 +143,39 @@ int main(void)
                     bad_rgb++;
         }
         CHECK(bad_rgb == 0, "brdf_hammon_rgb differs from brdf_hammon in %d channels", bad_rgb);
+        /* the NaN rule per channel: a NaN in the geometry zeroes every channel,
+         * one in f0[c] or albedo[c] channel c only (both tiers) */
+        bad_rgb = 0;
+        for (i = 0; i < 4000; i++) {
+            float in[4], f0[3], alb[3], out[3], outf[3];
+            int c, pos = i % 10;
+            smp_geometry(&rng, &in[0], &in[1], &in[2]);
+            in[3] = smp_alpha(&rng);
+            for (c = 0; c < 3; c++) {
+                f0[c] = smp_unit(&rng);
+                alb[c] = smp_unit(&rng);
+            }
+            if (pos < 4)
+                in[pos] = nan_at(i % N_NAN);
+            else if (pos < 7)
+                f0[pos - 4] = nan_at(i % N_NAN);
+            else
+                alb[pos - 7] = nan_at(i % N_NAN);
+            facet_brdf_hammon_rgb_f32(out, in[0], in[1], in[2], in[3], f0, alb);
+            facet_brdf_hammon_rgb_f32_fast(outf, in[0], in[1], in[2], in[3], f0, alb);
+            for (c = 0; c < 3; c++) {
+                int zero = pos < 4 || pos - 4 == c || pos - 7 == c;
+                if (!same(out[c], facet_brdf_hammon_f32(in[0], in[1], in[2], in[3], f0[c], alb[c])) ||
+                    !same(outf[c], facet_brdf_hammon_f32_fast(in[0], in[1], in[2], in[3], f0[c], alb[c])) ||
+                    (zero && !same(out[c], 0.0f)) ||
+                    (zero && !same(outf[c], 0.0f)))
+                    bad_rgb++;
+            }
+        }
+        CHECK(bad_rgb == 0, "brdf_hammon_rgb: %d channels break the NaN rule", bad_rgb);
+        /* the case: NaN cosines no longer give the grazing maximum */
+        CHECK(same(facet_brdf_hammon_f32(NAN, NAN, 0.1f, 0.16f, 0.04f, 0.5f), 0.0f),
+              "brdf_hammon(NaN, NaN, 0.1, 0.16, ...) = 0");
     }
     return th_done();
 }

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <float.h>
+#include <stdint.h>
 #include "harness.h"
 #include "sample.h"
 
@@ -117,30 +118,45 @@ static void test_port(const char *port, int lanes)
 
         /* bad input: finite, >= 0, equal to the port's value at the substitute */
         {
-            const float bad[] = { NAN, -NAN, INFINITY, -INFINITY, -0.0f, 1.4e-45f, -1e-30f, -1.0f,
-                                  -2.0f, 1.0000001f, 2.0f, 1e30f, -FLT_MAX, FLT_MAX };
+            /* NaN (every class: quiet, signalling, both signs, payloads) -> +0;
+             * the other bad values -> the kernel at the clamped value */
+            static const uint32_t bits[] = { 0x7fc00000u, 0xffc00000u, 0x7f800001u, 0xff800001u,
+                                             0x7fa00000u, 0x7fc12345u, 0x7fbfffffu, 0x7fffffffu,
+                                             0xffffffffu, 0xff812345u, 0x7f800000u, 0xff800000u };
+            const float fin[] = { -0.0f, 1.4e-45f, -1e-30f, -1.0f, -2.0f, 1.0000001f, 2.0f, 1e30f,
+                                  -FLT_MAX, FLT_MAX };
+            float bad[sizeof bits / sizeof bits[0] + sizeof fin / sizeof fin[0]];
             const int n_bad = (int)(sizeof bad / sizeof bad[0]);
-            int pos, bad_val = 0, bad_sub = 0;
+            int pos, bad_val = 0, bad_sub = 0, bad_nan = 0;
+            /* every bad value in every lane position */
+            const int nb = 3 * lanes + 1 > 2 * n_bad ? 3 * lanes + 1 : 2 * n_bad + 1;
+            for (j = 0; j < (int)(sizeof bits / sizeof bits[0]); j++)
+                memcpy(&bad[j], &bits[j], sizeof(float));
+            for (i = 0; i < (int)(sizeof fin / sizeof fin[0]); i++)
+                bad[j + i] = fin[i];
             for (pos = 0; pos < k->n_inputs; pos++) {
                 float save[MAXN];
                 memcpy(save, src[pos], sizeof save);
-                for (j = 0; j < 3 * lanes + 1; j++)
+                for (j = 0; j < nb; j++)
                     src[pos][j] = bad[j % n_bad];
-                run(k, src, 0, 3 * lanes + 1, 0, out);
-                for (j = 0; j < 3 * lanes + 1; j++) {
+                run(k, src, 0, nb, 0, out);
+                for (j = 0; j < nb; j++) {
                     float v = src[pos][j], lo = smp_domain_lo(k, pos);
                     if (!(out[j] == out[j]) || out[j] > FLT_MAX || out[j] < 0.0f || same(out[j], -0.0f))
                         bad_val++;
-                    src[pos][j] = (v != v || v < lo) ? lo : v > 1.0f ? 1.0f : v;
+                    if (v != v && !same(out[j], 0.0f))
+                        bad_nan++;
+                    src[pos][j] = v != v ? 0.5f : v < lo ? lo : v > 1.0f ? 1.0f : v;
                 }
-                run(k, src, 0, 3 * lanes + 1, 0, ref + 128);
-                for (j = 0; j < 3 * lanes + 1; j++)
-                    if (!same(out[j], ref[128 + j]))
+                run(k, src, 0, nb, 0, ref + 128);
+                for (j = 0; j < nb; j++)
+                    if (!(bad[j % n_bad] != bad[j % n_bad]) && !same(out[j], ref[128 + j]))
                         bad_sub++;
                 memcpy(src[pos], save, sizeof save);
             }
             CHECK(bad_val == 0, "%s/%s: %d bad inputs gave NaN, Inf or a negative value", port, k->name, bad_val);
             CHECK(bad_sub == 0, "%s/%s: %d bad inputs differ from the clamped value", port, k->name, bad_sub);
+            CHECK(bad_nan == 0, "%s/%s: %d samples with a NaN input are not +0", port, k->name, bad_nan);
         }
     }
 }

@@ -3,6 +3,7 @@
  * a counting op layer (one evaluation, every op tallied).  Counting rules,
  * as a port with FMA executes them: add, sub, mul, fma, fnma, min, max,
  * sqr_err = 1; clamp = 2 (max, min); sel_lt = 2 (compare, blend);
+ * keep_ord = 2 (ordered compare, mask: the NaN rule);
  * rcp and rsqrt = 1 each, reported separately (their refinement steps are
  * the port's: see each port header). */
 #include <stdio.h>
@@ -25,6 +26,7 @@ static float cnt_min(float a, float b) { n_ops++; return a < b ? a : b; }
 static float cnt_max(float a, float b) { n_ops++; return a > b ? a : b; }
 static float cnt_sel_lt(float a, float b, float x, float y) { n_ops += 2; return a < b ? x : y; }
 static float cnt_clamp(float x, float lo, float hi) { n_ops += 2; x = x > lo ? x : lo; return x < hi ? x : hi; }
+static float cnt_keep_ord(float r, float a, float b) { n_ops += 2; return a == a && b == b ? r : 0.0f; }
 static float cnt_rcp(float x) { n_rcp++; return 1.0f / x; }
 static float cnt_rsqrt(float x) { n_rsqrt++; return 1.0f / (float)sqrt(x); }
 static float cnt_sqr_err(float a, float p) { n_ops++; return (float)((double)a * a - p); }

@@ -29,6 +29,7 @@ static float cnt_min(float a, float b) { n_ops++; return a < b ? a : b; }
 static float cnt_max(float a, float b) { n_ops++; return a > b ? a : b; }
 static float cnt_sel_lt(float a, float b, float x, float y) { n_ops += 2; return a < b ? x : y; }
 static float cnt_clamp(float x, float lo, float hi) { n_ops += 2; x = x > lo ? x : lo; return x < hi ? x : hi; }
+static float cnt_keep_ord(float r, float a, float b) { n_ops += 2; return a == a && b == b ? r : 0.0f; }
 static float cnt_rcp(float x) { n_rcp++; return 1.0f / x; }
 static float cnt_rsqrt(float x) { n_rsqrt++; return 1.0f / (float)sqrt(x); }
 static float cnt_sqr_err(float a, float p) { n_ops++; return (float)((double)a * a - p); }

@@ -222,7 +222,7 @@ rs_gbuf *rs_render(int w, int h)
     rs_gbuf *g = calloc(1, sizeof *g);
     float eye[3] = { 0.0f, 1.3f, 6.2f }, at[3] = { 0.0f, -0.2f, 0.0f };
     size_t np = (size_t)w * (size_t)h, k;
-    int i, c, s;
+    int i, c, s, mi;
     memset(&R, 0, sizeof R);
     R.w = w;
     R.h = h;
@@ -262,9 +262,18 @@ rs_gbuf *rs_render(int w, int h)
     }
     for (s = 0; s < 8; s++)
         g->s[s] = fa((size_t)g->cap);
-    for (k = 0, i = 0; k < np; k++) {
+    /* pixels grouped by material (runs, for the uniform-material path),
+     * in scan order within a material */
+    for (mi = 0, i = 0; mi < N_SPHERES + 1; mi++) {
+        g->run_start[mi] = i;
+        g->mat[mi].alpha = mats[mi].alpha;
+        for (c = 0; c < 3; c++) {
+            g->mat[mi].f0[c] = mats[mi].f0[c];
+            g->mat[mi].albedo[c] = mats[mi].alb[c];
+        }
+    for (k = 0; k < np; k++) {
         const material *m;
-        if (!R.mat[k])
+        if (R.mat[k] != mi + 1)
             continue;
         m = &mats[R.mat[k] - 1];
         g->idx[i] = (int)k;
@@ -277,6 +286,9 @@ rs_gbuf *rs_render(int w, int h)
         }
         i++;
     }
+        g->run_len[mi] = i - g->run_start[mi];
+    }
+    g->n_runs = N_SPHERES + 1;
     /* padding: a valid pixel facing the camera, never written back */
     for (i = g->n; i < g->cap; i++) {
         g->pz[i] = 0; g->nz[i] = 1; g->alpha[i] = 0.5f;
@@ -383,6 +395,90 @@ void rs_shade_batch(rs_gbuf *g)
                 o[i] += b[i] * sc[i] * e;
         }
     }
+}
+
+/* the dots of every pixel for light l into nol, nov, lov, sc (scratch) */
+static void dots_all(rs_gbuf *g, int l)
+{
+    int i;
+    for (i = 0; i < g->n; i++)
+        geom(g, i, l, &g->s[0][i], &g->s[1][i], &g->s[2][i], &g->s[3][i]);
+}
+
+void rs_shade_rgb(rs_gbuf *g)
+{
+    float *b[3] = { g->s[4], g->s[5], g->s[6] }, *sc = g->s[3];
+    const float *f0[3] = { g->f0[0], g->f0[1], g->f0[2] }, *alb[3] = { g->alb[0], g->alb[1], g->alb[2] };
+    int i, l, c, n = g->n;
+    for (c = 0; c < 3; c++)
+        memset(g->out[c], 0, (size_t)n * sizeof(float));
+    for (l = 0; l < g->n_lights; l++) {
+        dots_all(g, l);
+        facet_brdf_hammon_rgb_f32_batch(b, g->s[0], g->s[1], g->s[2], g->alpha, f0, alb, (size_t)n);
+        for (c = 0; c < 3; c++) {
+            float e = g->light[l].e[c], *o = g->out[c];
+            for (i = 0; i < n; i++)
+                o[i] += b[c][i] * sc[i] * e;
+        }
+    }
+}
+
+void rs_shade_material(rs_gbuf *g)
+{
+    float *sc = g->s[3];
+    int i, l, c, r, n = g->n;
+    for (c = 0; c < 3; c++)
+        memset(g->out[c], 0, (size_t)n * sizeof(float));
+    for (l = 0; l < g->n_lights; l++) {
+        dots_all(g, l);
+        for (r = 0; r < g->n_runs; r++) {
+            int s0 = g->run_start[r];
+            float *b[3] = { g->s[4] + s0, g->s[5] + s0, g->s[6] + s0 };
+            facet_brdf_hammon_rgb_f32_batch_material(b, g->s[0] + s0, g->s[1] + s0, g->s[2] + s0, &g->mat[r],
+                                                     (size_t)g->run_len[r]);
+        }
+        for (c = 0; c < 3; c++) {
+            float e = g->light[l].e[c], *o = g->out[c], *bc = g->s[4 + c];
+            for (i = 0; i < n; i++)
+                o[i] += bc[i] * sc[i] * e;
+        }
+    }
+}
+
+/* per pixel through the vector entry: unit N, V and L per light */
+void rs_shade_pixel(rs_gbuf *g)
+{
+    int r, i, l, c;
+    for (r = 0; r < g->n_runs; r++)
+        for (i = g->run_start[r]; i < g->run_start[r] + g->run_len[r]; i++) {
+            float acc[3] = { 0, 0, 0 }, inv, att, k[3];
+            facet_dirs_f32 d;
+            d.n.x = g->nx[i]; d.n.y = g->ny[i]; d.n.z = g->nz[i];
+            inv = 1.0f / sqrtf(d.n.x * d.n.x + d.n.y * d.n.y + d.n.z * d.n.z);
+            d.n.x *= inv; d.n.y *= inv; d.n.z *= inv;
+            d.v.x = g->cam[0] - g->px[i]; d.v.y = g->cam[1] - g->py[i]; d.v.z = g->cam[2] - g->pz[i];
+            inv = 1.0f / sqrtf(d.v.x * d.v.x + d.v.y * d.v.y + d.v.z * d.v.z);
+            d.v.x *= inv; d.v.y *= inv; d.v.z *= inv;
+            for (l = 0; l < g->n_lights; l++) {
+                const rs_light *L = &g->light[l];
+                att = 1.0f;
+                if (L->point) {
+                    float r2;
+                    d.l.x = L->v[0] - g->px[i]; d.l.y = L->v[1] - g->py[i]; d.l.z = L->v[2] - g->pz[i];
+                    r2 = d.l.x * d.l.x + d.l.y * d.l.y + d.l.z * d.l.z;
+                    inv = 1.0f / sqrtf(r2);
+                    d.l.x *= inv; d.l.y *= inv; d.l.z *= inv;
+                    att = 1.0f / r2;
+                } else {
+                    d.l.x = L->v[0]; d.l.y = L->v[1]; d.l.z = L->v[2];
+                }
+                facet_shade_hammon_rgb_f32(k, &d, &g->mat[r]);
+                for (c = 0; c < 3; c++)
+                    acc[c] += k[c] * att * L->e[c];
+            }
+            for (c = 0; c < 3; c++)
+                g->out[c][i] = acc[c];
+        }
 }
 
 void rs_shade_oracle(rs_gbuf *g)

@@ -16,6 +16,13 @@
  *   neon     facet_brdf_hammon_f32_neon, 4 pixels per call (raster_neon.c)
  *   batch    deferred: the dots of all pixels for a light into arrays, one
  *            facet_brdf_hammon_f32_batch call per light and channel
+ *   rgb      deferred, one facet_brdf_hammon_rgb_f32_batch call per light
+ *            (the geometry once per pixel; per-pixel material arrays)
+ *   material deferred, one facet_brdf_hammon_rgb_f32_batch_material call per
+ *            light and material run (the G-buffer is grouped by material:
+ *            no material arrays read at all)
+ *   pixel    the per-pixel vector entry facet_shade_hammon_rgb_f32 (N, L,
+ *            V and the material), one call per pixel and light
  *   fx       facet_brdf_hammon_fx per pixel, light and channel: the float
  *            dots rounded to Q15 (ties up), N.L and N.V raised to the fx
  *            cos floor 2^-8, the UQ40.24 result converted back to float
@@ -25,6 +32,9 @@
 #define FACET_BENCH_RASTER_H
 
 #include <stddef.h>
+#include "facet.h"
+
+#define RS_MAX_RUNS 16
 
 typedef struct rs_light {
     int point;          /* 0: directional (dir = towards the light), 1: point */
@@ -42,6 +52,10 @@ typedef struct rs_gbuf {
     float *out[3];              /* shaded linear radiance */
     float *s[8];                /* scratch arrays for the batch path */
     float cam[3];
+    /* the pixels are grouped by material: run r is [run_start, + run_len),
+     * all of material mat[r] (the uniform-material path) */
+    int n_runs, run_start[RS_MAX_RUNS], run_len[RS_MAX_RUNS];
+    facet_material_f32 mat[RS_MAX_RUNS];
     int n_lights;
     rs_light light[2];
     long triangles;             /* triangles rasterized */
@@ -52,6 +66,9 @@ void rs_free(rs_gbuf *g);
 
 void rs_shade_scalar(rs_gbuf *g);
 void rs_shade_batch(rs_gbuf *g);
+void rs_shade_rgb(rs_gbuf *g);
+void rs_shade_material(rs_gbuf *g);
+void rs_shade_pixel(rs_gbuf *g);
 void rs_shade_oracle(rs_gbuf *g);
 /* the SIMD paths: 0 where the port is not compiled in or not on this CPU
  * (facet_port_supported), else 1 */

@@ -1161,7 +1161,10 @@ static int shade(rs_gbuf *g, int path)
     case 2: return rs_shade_sse2(g);
     case 3: rs_shade_batch(g); return 1;
     case 4: return rs_shade_neon(g);
-    default: return rs_shade_fx(g);
+    case 5: return rs_shade_fx(g);
+    case 6: rs_shade_rgb(g); return 1;
+    case 7: rs_shade_material(g); return 1;
+    default: rs_shade_pixel(g); return 1;
     }
 }
 
@@ -1177,10 +1180,13 @@ static double raster_avx2_per_eval = -1, raster_batch_per_eval = -1;
 
 static void section_raster(void)
 {
-    static const char *names[6] = { "scalar inline", "AVX2 inline (8 px)", "SSE2 inline (4 px)",
-                                    "batch (deferred)", "NEON inline (4 px)", "fixed point" };
-    static const char *files[6] = { "raster_scalar.png", "raster_avx2.png", "raster_sse2.png",
-                                    "raster_batch.png", "raster_neon.png", "raster_fx.png" };
+    static const char *names[9] = { "scalar inline", "AVX2 inline (8 px)", "SSE2 inline (4 px)",
+                                    "batch (deferred, 3 calls per light)", "NEON inline (4 px)", "fixed point",
+                                    "RGB batch (deferred, 1 call per light)",
+                                    "RGB batch, uniform material per run", "per pixel: shade_hammon_rgb_f32 (N, L, V)" };
+    static const char *files[9] = { "raster_scalar.png", "raster_avx2.png", "raster_sse2.png",
+                                    "raster_batch.png", "raster_neon.png", "raster_fx.png",
+                                    "raster_rgb.png", "raster_material.png", "raster_pixel.png" };
     int W = quick ? 96 : 480, H = quick ? 64 : 320, p;
     rs_gbuf *g;
     unsigned char *ref, *img;
@@ -1202,7 +1208,7 @@ static void section_raster(void)
          "Difference: 8-bit sRGB against the same frame shaded by the double oracle, over shaded pixels.",
          W, H, g->triangles, g->n, g->n_lights, 3 * g->n_lights);
     thead(7, "path", "ticks/pixel", "est. cyc/pixel", "est. cyc/BRDF eval", "spread", "max diff", "mean diff");
-    for (p = 0; p < 6; p++) {
+    for (p = 0; p < 9; p++) {
         shade_ctx c;
         cyc_stat s;
         long reps;

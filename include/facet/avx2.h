@@ -15,6 +15,7 @@
 #error "facet/avx2.h needs AVX2 and FMA (-mavx2 -mfma)"
 #endif
 #include <immintrin.h>
+#include <stddef.h>
 #include "facet/common.h"
 
 FACET_INLINE __m256 facet_avx2_set(float x) { return _mm256_set1_ps(x); }
@@ -33,6 +34,11 @@ FACET_INLINE __m256 facet_avx2_sel_lt(__m256 a, __m256 b, __m256 x, __m256 y)
 FACET_INLINE __m256 facet_avx2_clamp(__m256 x, __m256 lo, __m256 hi)
 {
     return _mm256_min_ps(_mm256_max_ps(x, lo), hi);
+}
+/* r where neither a nor b is NaN, else +0: one ordered compare and a mask */
+FACET_INLINE __m256 facet_avx2_keep_ord(__m256 r, __m256 a, __m256 b)
+{
+    return _mm256_and_ps(r, _mm256_cmp_ps(a, b, _CMP_ORD_Q));
 }
 #ifdef FACET_AVX2_TEST_WORST_ESTIMATES
 /* Test builds only: estimates off by exactly the architectural bound
@@ -85,6 +91,31 @@ FACET_INLINE __m256 facet_avx2_rsqrt_fast(__m256 x)
     __m256 y = facet_avx2_rsqrt_est_(x);
     __m256 e = _mm256_fnmadd_ps(_mm256_mul_ps(x, y), y, _mm256_set1_ps(1.0f));
     return _mm256_fmadd_ps(_mm256_mul_ps(_mm256_set1_ps(0.5f), y), e, y);
+}
+
+/* Tails, so that a loop over any n needs no padding by the caller:
+ * facet_avx2_load_n(p, r) loads r floats (0 <= r <= 8) from p into the first
+ * r lanes and 0.5 (inside every kernel's domain) into the others, reading
+ * nothing past p + r; facet_avx2_store_n(p, v, r) stores the first r lanes,
+ * writing nothing else.  Masked (vmaskmovps): no stack copy.  The loop:
+ *     for (i = 0; i + 8 <= n; i += 8)
+ *         store(out + i, kernel(load(x + i), ...));
+ *     if (i < n)
+ *         facet_avx2_store_n(out + i, kernel(facet_avx2_load_n(x + i, n - i), ...), n - i);
+ * All loads of a block come before its store, so out may be one of the
+ * inputs.  Tested at every n mod 8 (tests/test_tails.c). */
+FACET_INLINE __m256i facet_avx2_mask_n_(size_t r)
+{
+    return _mm256_cmpgt_epi32(_mm256_set1_epi32((int)r), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+}
+FACET_INLINE __m256 facet_avx2_load_n(const float *p, size_t r)
+{
+    __m256i m = facet_avx2_mask_n_(r);
+    return _mm256_blendv_ps(_mm256_set1_ps(0.5f), _mm256_maskload_ps(p, m), _mm256_castsi256_ps(m));
+}
+FACET_INLINE void facet_avx2_store_n(float *p, __m256 v, size_t r)
+{
+    _mm256_maskstore_ps(p, facet_avx2_mask_n_(r), v);
 }
 
 #define FACET_V __m256

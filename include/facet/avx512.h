@@ -14,6 +14,7 @@
 #error "facet/avx512.h needs AVX-512F (-mavx512f)"
 #endif
 #include <immintrin.h>
+#include <stddef.h>
 #include "facet/common.h"
 
 FACET_INLINE __m512 facet_avx512_set(float x) { return _mm512_set1_ps(x); }
@@ -32,6 +33,12 @@ FACET_INLINE __m512 facet_avx512_sel_lt(__m512 a, __m512 b, __m512 x, __m512 y)
 FACET_INLINE __m512 facet_avx512_clamp(__m512 x, __m512 lo, __m512 hi)
 {
     return _mm512_min_ps(_mm512_max_ps(x, lo), hi);
+}
+/* r where neither a nor b is NaN, else +0: an ordered compare into a mask
+ * register and a zero-masked move */
+FACET_INLINE __m512 facet_avx512_keep_ord(__m512 r, __m512 a, __m512 b)
+{
+    return _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(a, b, _CMP_ORD_Q), r);
 }
 
 #ifdef FACET_AVX512_TEST_WORST_ESTIMATES
@@ -68,6 +75,26 @@ FACET_INLINE __m512 facet_avx512_sqr_err(__m512 a, __m512 p) { return _mm512_fms
  * error < 2^-14 each). */
 FACET_INLINE __m512 facet_avx512_rcp_fast(__m512 x) { return facet_avx512_rcp_est_(x); }
 FACET_INLINE __m512 facet_avx512_rsqrt_fast(__m512 x) { return facet_avx512_rsqrt_est_(x); }
+
+/* Tails, so that a loop over any n needs no padding by the caller:
+ * facet_avx512_load_n(p, r) loads r floats (0 <= r <= 16) from p into the first
+ * r lanes and 0.5 (inside every kernel's domain) into the others, reading
+ * nothing past p + r; facet_avx512_store_n(p, v, r) stores the first r lanes,
+ * writing nothing else.  Masked (AVX-512 mask registers): no stack copy.  The loop:
+ *     for (i = 0; i + 16 <= n; i += 16)
+ *         store(out + i, kernel(load(x + i), ...));
+ *     if (i < n)
+ *         facet_avx512_store_n(out + i, kernel(facet_avx512_load_n(x + i, n - i), ...), n - i);
+ * All loads of a block come before its store, so out may be one of the
+ * inputs.  Tested at every n mod 16 (tests/test_tails.c). */
+FACET_INLINE __m512 facet_avx512_load_n(const float *p, size_t r)
+{
+    return _mm512_mask_loadu_ps(_mm512_set1_ps(0.5f), (__mmask16)((1u << r) - 1u), p);
+}
+FACET_INLINE void facet_avx512_store_n(float *p, __m512 v, size_t r)
+{
+    _mm512_mask_storeu_ps(p, (__mmask16)((1u << r) - 1u), v);
+}
 
 #define FACET_V __m512
 #define FACET_OP(op) facet_avx512_##op

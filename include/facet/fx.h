@@ -35,6 +35,12 @@
  * before that rounding; see src/fx_core.h.  No value is an error marker:
  * every raw output is the rounded (or saturated) function value.
  *
+ * NaN: fixed point has none.  Inputs are int32 and every pattern is a value
+ * (clamped to the domain); the library has no float-to-fixed conversion, so
+ * the f32 NaN rule (facet.h: a NaN input gives 0) has nothing to apply to.
+ * The `facet` command's Q15 parser refuses `nan` and `inf` (exit status 2);
+ * a caller converting floats itself decides what a NaN becomes.
+ *
  * Arithmetic: uint32/uint64 only (no signed overflow), no float, no libgcc
  * helper, no dependence on a hardware divider; 32x32->64 products are one
  * UMULL where the core has it and four 16x16 MULS on ARMv6-M (exact either
@@ -156,6 +162,28 @@ uint32_t facet_diffuse_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t 
  * ~30 fxf. */
 uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                               int32_t f0, int32_t albedo);
+
+/* brdf_hammon for an RGB f0 and albedo, the geometry (D, Vis, the Fresnel
+ * tail, the diffuse shape) computed once: out[c] equals
+ * facet_brdf_hammon_fx(nol, nov, lov, alpha, f0[c], albedo[c]) bit for bit
+ * (the same operations per channel; tests/test_fx_rgb.c), on every target.
+ * Cost: one geometry and three channel tails (`build/facet-bench api`:
+ * 0.48x the time of three
+ * facet_brdf_hammon_fx calls, 0.63x in fx_fast, on x86-64). */
+void facet_brdf_hammon_rgb_fx(uint64_t out[3], int32_t nol, int32_t nov, int32_t lov,
+                              int32_t alpha, const int32_t f0[3], const int32_t albedo[3]);
+/* batches of it: planar (out[c][i], f0[c][i], albedo[c][i]) and interleaved
+ * (out[3i + c], f0[3i + c], albedo[3i + c]); the scalar loop on every port
+ * (as brdf_hammon's fx batch); out must not overlap an input (64-bit
+ * outputs).  The fast tier: facet_brdf_hammon_rgb_fx_fast[_batch...] below. */
+void facet_brdf_hammon_rgb_fx_batch(uint64_t *const out[3], const int32_t *nol, const int32_t *nov,
+                                    const int32_t *lov, const int32_t *alpha,
+                                    const int32_t *const f0[3], const int32_t *const albedo[3],
+                                    size_t n);
+void facet_brdf_hammon_rgb_fx_batch_interleaved(uint64_t *out, const int32_t *nol,
+                                                const int32_t *nov, const int32_t *lov,
+                                                const int32_t *alpha, const int32_t *f0,
+                                                const int32_t *albedo, size_t n);
 
 /* ---- batches: out[i] = kernel(in1[i], ...), i < n ----------------------
  * Bit-identical to the scalar kernel on every port, for every int32 input
@@ -340,6 +368,18 @@ uint32_t facet_diffuse_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int
  * Cost: 275 / 1060 (1051 / 4221). */
 uint64_t facet_brdf_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                    int32_t f0, int32_t albedo);
+/* the RGB form and its batches, as facet_brdf_hammon_rgb_fx above: each
+ * channel equals facet_brdf_hammon_fx_fast bit for bit */
+void facet_brdf_hammon_rgb_fx_fast(uint64_t out[3], int32_t nol, int32_t nov, int32_t lov,
+                                   int32_t alpha, const int32_t f0[3], const int32_t albedo[3]);
+void facet_brdf_hammon_rgb_fx_fast_batch(uint64_t *const out[3], const int32_t *nol,
+                                         const int32_t *nov, const int32_t *lov,
+                                         const int32_t *alpha, const int32_t *const f0[3],
+                                         const int32_t *const albedo[3], size_t n);
+void facet_brdf_hammon_rgb_fx_fast_batch_interleaved(uint64_t *out, const int32_t *nol,
+                                                     const int32_t *nov, const int32_t *lov,
+                                                     const int32_t *alpha, const int32_t *f0,
+                                                     const int32_t *albedo, size_t n);
 
 /* ---- fast tier batches: out[i] = facet_<kernel>_fx_fast(in1[i], ...) ---
  * Dispatched like the precise batches (one port choice for every format):

@@ -42,6 +42,13 @@ FACET_INLINE float32x4_t facet_helium_sel_lt(float32x4_t a, float32x4_t b, float
 {
     return vpselq_f32(x, y, vcmpgtq_f32(b, a));
 }
+/* r where neither a nor b is NaN, else +0 (the NaN rule, f32_body.h NAN0_):
+ * an equality self-compare is false only for NaN */
+FACET_INLINE float32x4_t facet_helium_keep_ord(float32x4_t r, float32x4_t a, float32x4_t b)
+{
+    mve_pred16_t p = (mve_pred16_t)(vcmpeqq_f32(a, a) & vcmpeqq_f32(b, b));
+    return vpselq_f32(r, vdupq_n_f32(0.0f), p);
+}
 /* compare-and-select, not vmaxnm (which would return the number): a NaN
  * input must become lo */
 FACET_INLINE float32x4_t facet_helium_clamp(float32x4_t x, float32x4_t lo, float32x4_t hi)

@@ -19,6 +19,7 @@
 #error "facet/neon.h on armv7 needs VFPv4 fused multiply-add (-mfpu=neon-vfpv4)"
 #endif
 #include <arm_neon.h>
+#include <stddef.h>
 #include "facet/common.h"
 
 FACET_INLINE float32x4_t facet_neon_set(float x) { return vdupq_n_f32(x); }
@@ -39,6 +40,13 @@ FACET_INLINE float32x4_t facet_neon_clamp(float32x4_t x, float32x4_t lo, float32
 {
     x = vbslq_f32(vcgtq_f32(x, lo), x, lo);
     return vbslq_f32(vcltq_f32(x, hi), x, hi);
+}
+/* r where neither a nor b is NaN, else +0: vmaxq is NaN when either
+ * operand is (aarch64 and armv7 alike), so one self-compare of it finds both */
+FACET_INLINE float32x4_t facet_neon_keep_ord(float32x4_t r, float32x4_t a, float32x4_t b)
+{
+    float32x4_t m = vmaxq_f32(a, b);
+    return vreinterpretq_f32_u32(vandq_u32(vreinterpretq_u32_f32(r), vceqq_f32(m, m)));
 }
 FACET_INLINE float32x4_t facet_neon_rcp(float32x4_t x)
 {
@@ -76,6 +84,34 @@ FACET_INLINE float32x4_t facet_neon_rsqrt_fast(float32x4_t x)
     y = vmulq_f32(y, vrsqrtsq_f32(vmulq_f32(x, y), y));
     e = vfmsq_f32(vdupq_n_f32(1.0f), vmulq_f32(x, y), y);
     return vfmaq_f32(y, vmulq_n_f32(y, 0.5f), e);
+}
+
+/* Tails, so that a loop over any n needs no padding by the caller:
+ * facet_neon_load_n(p, r) loads r floats (0 <= r <= 4) from p into the first
+ * r lanes and 0.5 (inside every kernel's domain) into the others, reading
+ * nothing past p + r; facet_neon_store_n(p, v, r) stores the first r lanes,
+ * writing nothing else.  Scalar-finished: through a 4-float stack copy.  The loop:
+ *     for (i = 0; i + 4 <= n; i += 4)
+ *         store(out + i, kernel(load(x + i), ...));
+ *     if (i < n)
+ *         facet_neon_store_n(out + i, kernel(facet_neon_load_n(x + i, n - i), ...), n - i);
+ * All loads of a block come before its store, so out may be one of the
+ * inputs.  Tested at every n mod 4 (tests/test_tails.c). */
+FACET_INLINE float32x4_t facet_neon_load_n(const float *p, size_t r)
+{
+    float t[4] = { 0.5f, 0.5f, 0.5f, 0.5f };
+    size_t j;
+    for (j = 0; j < r && j < 4; j++)
+        t[j] = p[j];
+    return vld1q_f32(t);
+}
+FACET_INLINE void facet_neon_store_n(float *p, float32x4_t v, size_t r)
+{
+    float t[4];
+    size_t j;
+    vst1q_f32(t, v);
+    for (j = 0; j < r && j < 4; j++)
+        p[j] = t[j];
 }
 
 #define FACET_V float32x4_t

@@ -24,6 +24,11 @@
  * the specular peak, grazing angles, L.V near +-1, and L.V near -1 with
  * cosines down to FACET_COS_MIN (agreement 4e-15 relative); i.e. about 10^8
  * times below the f32 bounds it judges.
+ *
+ * NaN: the functions below clamp a NaN input to the low end of its domain
+ * (they are also the samplers' building blocks); the kernel table's oracle
+ * entry (facet_kernel.oracle, which `facet eval --oracle` uses) applies the
+ * kernels' NaN rule instead: any NaN input gives 0.
  */
 #ifndef FACET_ORACLE_H
 #define FACET_ORACLE_H

@@ -58,6 +58,13 @@ FACET_INLINE float facet_scalar_clamp(float x, float lo, float hi)
     return x < hi ? x : hi;
 }
 
+/* r where neither a nor b is NaN, else +0 (the kernels' NaN rule, f32_body.h:
+ * one ordered compare of two inputs and a select) */
+FACET_INLINE float facet_scalar_keep_ord(float r, float a, float b)
+{
+    return (a == a && b == b) ? r : 0.0f;
+}
+
 /* 1/x for x in [2^-126, 2^126]: the IEEE division. */
 FACET_INLINE float facet_scalar_rcp(float x) { return 1.0f / x; }
 

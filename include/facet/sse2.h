@@ -14,6 +14,7 @@
 #error "facet/sse2.h needs SSE2 (-msse2; always on for x86-64)"
 #endif
 #include <emmintrin.h>
+#include <stddef.h>
 #include "facet/common.h"
 
 FACET_INLINE __m128 facet_sse2_set(float x) { return _mm_set1_ps(x); }
@@ -35,6 +36,11 @@ FACET_INLINE __m128 facet_sse2_sel_lt(__m128 a, __m128 b, __m128 x, __m128 y)
 FACET_INLINE __m128 facet_sse2_clamp(__m128 x, __m128 lo, __m128 hi)
 {
     return _mm_min_ps(_mm_max_ps(x, lo), hi);
+}
+/* r where neither a nor b is NaN, else +0: cmpordps and a mask */
+FACET_INLINE __m128 facet_sse2_keep_ord(__m128 r, __m128 a, __m128 b)
+{
+    return _mm_and_ps(r, _mm_cmpord_ps(a, b));
 }
 FACET_INLINE __m128 facet_sse2_rcp(__m128 x) { return _mm_div_ps(_mm_set1_ps(1.0f), x); }
 FACET_INLINE __m128 facet_sse2_rsqrt(__m128 x) { return _mm_div_ps(_mm_set1_ps(1.0f), _mm_sqrt_ps(x)); }
@@ -60,6 +66,34 @@ FACET_INLINE __m128 facet_sse2_rsqrt_fast(__m128 x)
     __m128 y = _mm_rsqrt_ps(x);
     __m128 h = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.5f), x), _mm_mul_ps(y, y));
     return _mm_mul_ps(y, _mm_sub_ps(_mm_set1_ps(1.5f), h));
+}
+
+/* Tails, so that a loop over any n needs no padding by the caller:
+ * facet_sse2_load_n(p, r) loads r floats (0 <= r <= 4) from p into the first
+ * r lanes and 0.5 (inside every kernel's domain) into the others, reading
+ * nothing past p + r; facet_sse2_store_n(p, v, r) stores the first r lanes,
+ * writing nothing else.  Scalar-finished: through a 4-float stack copy (SSE2 has no masked load).  The loop:
+ *     for (i = 0; i + 4 <= n; i += 4)
+ *         store(out + i, kernel(load(x + i), ...));
+ *     if (i < n)
+ *         facet_sse2_store_n(out + i, kernel(facet_sse2_load_n(x + i, n - i), ...), n - i);
+ * All loads of a block come before its store, so out may be one of the
+ * inputs.  Tested at every n mod 4 (tests/test_tails.c). */
+FACET_INLINE __m128 facet_sse2_load_n(const float *p, size_t r)
+{
+    float t[4] = { 0.5f, 0.5f, 0.5f, 0.5f };
+    size_t j;
+    for (j = 0; j < r && j < 4; j++)
+        t[j] = p[j];
+    return _mm_loadu_ps(t);
+}
+FACET_INLINE void facet_sse2_store_n(float *p, __m128 v, size_t r)
+{
+    float t[4];
+    size_t j;
+    _mm_storeu_ps(t, v);
+    for (j = 0; j < r && j < 4; j++)
+        p[j] = t[j];
 }
 
 #define FACET_V __m128

@@ -6,6 +6,7 @@
 #define BATCH_W 8
 #define BATCH_LOAD(p) _mm256_loadu_ps(p)
 #define BATCH_STORE(p, v) _mm256_storeu_ps((p), (v))
+#define BATCH_V __m256
 #define BATCH_TIER f32
 #include "../../src/batch_body.h"
 #undef BATCH_TIER
@@ -14,7 +15,6 @@
 #undef BATCH_TIER
 
 /* the samplers' batch functions and table (src/sample_batch_body.h) */
-#define BATCH_V __m256
 #define BATCH_TIER f32
 #include "../../src/sample_batch_body.h"
 #undef BATCH_TIER

@@ -6,6 +6,7 @@
 #define BATCH_W 16
 #define BATCH_LOAD(p) _mm512_loadu_ps(p)
 #define BATCH_STORE(p, v) _mm512_storeu_ps((p), (v))
+#define BATCH_V __m512
 #define BATCH_TIER f32
 #include "../../src/batch_body.h"
 #undef BATCH_TIER
@@ -14,7 +15,6 @@
 #undef BATCH_TIER
 
 /* the samplers' batch functions and table (src/sample_batch_body.h) */
-#define BATCH_V __m512
 #define BATCH_TIER f32
 #include "../../src/sample_batch_body.h"
 #undef BATCH_TIER

@@ -29,17 +29,38 @@
 #include "../../src/kernels.def"
 #undef FACET_KERNEL
 
+/* the RGB batch of each tier, from the shared body (src/rgb_batch_body.h:
+ * stride-aware loads through a stack copy for the tail, like every port) */
+#define BATCH_CAT_(a, b, c) a##b##c
+#define BATCH_CAT(a, b, c) BATCH_CAT_(a, b, c)
+#define BATCH_FN(k) BATCH_CAT(batch_, k, BATCH_CAT(_, BATCH_TIER, _))
+#define BATCH_KERNEL(k) BATCH_CAT(facet_, k, BATCH_CAT(_, BATCH_TIER, BATCH_CAT(_, BATCH_PORT, )))
+#define BATCH_PAD 0.5f
+#define BATCH_PORT helium
+#define BATCH_W 4
+#define BATCH_V float32x4_t
+#define BATCH_LOAD(p) vld1q_f32(p)
+#define BATCH_STORE(p, v) vst1q_f32((p), (v))
+#define BATCH_TIER f32
+#include "../../src/rgb_batch_body.h"
+#undef BATCH_TIER
+#define BATCH_TIER f32_fast
+#include "../../src/rgb_batch_body.h"
+#undef BATCH_TIER
+
 const facet_f32_port facet_port_helium_f32 = {
     "helium", 4,
 #define FACET_KERNEL(name, NAME, n, ...) hb_##name##_f32,
 #include "../../src/kernels.def"
 #undef FACET_KERNEL
+    batch_brdf_hammon_rgb_f32_,
 };
 const facet_f32_port facet_port_helium_f32_fast = {
     "helium", 4,
 #define FACET_KERNEL(name, NAME, n, ...) hb_##name##_f32_fast,
 #include "../../src/kernels.def"
 #undef FACET_KERNEL
+    batch_brdf_hammon_rgb_f32_fast_,
 };
 
 /* the samplers' batch functions and table (src/sample_batch_body.h) */

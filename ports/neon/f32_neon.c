@@ -6,6 +6,7 @@
 #define BATCH_W 4
 #define BATCH_LOAD(p) vld1q_f32(p)
 #define BATCH_STORE(p, v) vst1q_f32((p), (v))
+#define BATCH_V float32x4_t
 #define BATCH_TIER f32
 #include "../../src/batch_body.h"
 #undef BATCH_TIER
@@ -14,7 +15,6 @@
 #undef BATCH_TIER
 
 /* the samplers' batch functions and table (src/sample_batch_body.h) */
-#define BATCH_V float32x4_t
 #define BATCH_TIER f32
 #include "../../src/sample_batch_body.h"
 #undef BATCH_TIER

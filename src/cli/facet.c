@@ -87,9 +87,10 @@ static void usage_eval(FILE *f)
             "                   ports compiled in (listed below; see '%s ports').  An\n"
             "                   unknown port, or one this CPU cannot run, is an error\n"
             "                   (exit status 2), from --port and from $FACET_PORT alike.\n"
-            "NaN and infinities are accepted by f32 and --oracle (the kernels clamp\n"
-            "them: NaN and -Inf to the low end of the domain, +Inf to the high end);\n"
-            "a finite value beyond float range becomes +-Inf, so it clamps too.\n%s%s",
+            "NaN and infinities are accepted by f32 and --oracle: a NaN input gives 0\n"
+            "(samplers: their documented substitute); -Inf clamps to the low end of the\n"
+            "domain, +Inf to the high end; a finite value beyond float range becomes\n"
+            "+-Inf, so it clamps too.\n%s%s",
             prog, prog, prog, facet_cli_input_help, facet_cli_exit_help);
     {
         size_t i;

@@ -5,7 +5,8 @@
  * after defining
  *   FACET_V        the vector (or scalar) type,
  *   FACET_OP(op)   the name of the port's op `op` (set add sub mul fma fnma
- *                  min max sel_lt clamp rcp rsqrt sqr_err, see facet/scalar.h),
+ *                  min max sel_lt clamp keep_ord rcp rsqrt sqr_err, see
+ *                  facet/scalar.h),
  *   FACET_K(k)     the name to give kernel `k` in this port and tier,
  * and optionally FACET_TIER_FAST 1 for the fast tier (f32_fast): the port's
  * rcp_fast / rsqrt_fast in place of rcp / rsqrt.
@@ -26,6 +27,7 @@
 #define MIN_ FACET_OP(min)
 #define MAX_ FACET_OP(max)
 #define CLAMP_ FACET_OP(clamp)
+#define KEEP_ORD_ FACET_OP(keep_ord)
 /* the tier: the precise one, or with FACET_TIER_FAST 1 the fast one (the
  * same formulation, the port's cheaper rcp / rsqrt refinement) */
 #if defined(FACET_TIER_FAST) && FACET_TIER_FAST
@@ -61,7 +63,31 @@
 #define X_BRDF_GEOMETRY_ FACET_K(x_brdf_geometry)
 #define X_BRDF_CHANNEL_ FACET_K(x_brdf_channel)
 
-/* Domain handling, shared by all kernels: NaN and -Inf go to the low end. */
+/* The NaN rule, shared by all kernels: a NaN in any input of a sample gives
+ * +0 for that sample (a value that cannot light a pixel), every tier, every
+ * port.  Every kernel ends with `return NAN0_(result, input, ...);`, which
+ * keeps result where no input is NaN and gives +0 otherwise: one port op
+ * keep_ord(r, a, b) (an unordered compare of two inputs and a mask) per two
+ * inputs.  The kernel itself runs on the clamped inputs (NaN clamps to the
+ * low end below), so nothing traps and no NaN reaches the result; the mask
+ * then replaces it.  tests/test_f32_bad_input.c and tests/test_f32_ports.c
+ * check it from the kernel list for every kernel, input position, NaN class
+ * and port, so a kernel without it fails. */
+#define NAN0_(...) NAN0_SEL_(__VA_ARGS__, NAN0_8_, NAN0_7_, NAN0_6_, NAN0_5_, NAN0_4_, NAN0_3_, \
+                             NAN0_2_, NAN0_1_, -)(__VA_ARGS__)
+#define NAN0_SEL_(r, a, b, c, d, e, f, g, h, N, ...) N
+#define NAN0_1_(r, a) KEEP_ORD_(r, a, a)
+#define NAN0_2_(r, a, b) KEEP_ORD_(r, a, b)
+#define NAN0_3_(r, a, b, c) KEEP_ORD_(KEEP_ORD_(r, a, b), c, c)
+#define NAN0_4_(r, a, b, c, d) KEEP_ORD_(KEEP_ORD_(r, a, b), c, d)
+#define NAN0_5_(r, a, b, c, d, e) KEEP_ORD_(NAN0_4_(r, a, b, c, d), e, e)
+#define NAN0_6_(r, a, b, c, d, e, f) KEEP_ORD_(NAN0_4_(r, a, b, c, d), e, f)
+#define NAN0_7_(r, a, b, c, d, e, f, g) KEEP_ORD_(NAN0_6_(r, a, b, c, d, e, f), g, g)
+#define NAN0_8_(r, a, b, c, d, e, f, g, h) KEEP_ORD_(NAN0_6_(r, a, b, c, d, e, f), g, h)
+
+/* Domain handling, shared by all kernels: out-of-domain values and -Inf go
+ * to the low end, +Inf to the high end; NaN to the low end too, which only
+ * keeps the arithmetic finite: NAN0_ then makes the result 0. */
 FACET_INLINE V_ X_UNIT_(V_ x) { return CLAMP_(x, C_(0.0f), C_(1.0f)); }
 FACET_INLINE V_ X_COS_(V_ x) { return CLAMP_(x, C_(FACET_COS_MIN), C_(1.0f)); }
 FACET_INLINE V_ X_ALPHA_(V_ x) { return CLAMP_(x, C_(FACET_ALPHA_MIN), C_(1.0f)); }
@@ -99,7 +125,7 @@ FACET_INLINE V_ FACET_K(noh_from_dots)(V_ nol, V_ nov, V_ lov)
     V_ s = ADD_(X_COS_(nol), X_COS_(nov));
     V_ t = ADD_(C_(1.0f), X_LOV_(lov));
     V_ t2 = MAX_(ADD_(t, t), MUL_(s, s));
-    return MIN_(MUL_(s, RSQRT_(t2)), C_(1.0f));
+    return NAN0_(MIN_(MUL_(s, RSQRT_(t2)), C_(1.0f)), nol, nov, lov);
 }
 
 /* L.H = |L + V| / 2 = sqrt((1 + L.V) / 2) = t * rsqrt(2t); 2t is floored at
@@ -108,7 +134,7 @@ FACET_INLINE V_ FACET_K(loh_from_dots)(V_ lov)
 {
     V_ t = ADD_(C_(1.0f), X_LOV_(lov));
     V_ t2 = MAX_(ADD_(t, t), C_(7.88860905e-31f));
-    return MIN_(MUL_(t, RSQRT_(t2)), C_(1.0f));
+    return NAN0_(MIN_(MUL_(t, RSQRT_(t2)), C_(1.0f)), lov);
 }
 
 /* ---- Fresnel ---------------------------------------------------------- */
@@ -132,7 +158,7 @@ FACET_INLINE V_ X_FRESNEL_(V_ f0, V_ c)
 
 FACET_INLINE V_ FACET_K(fresnel_schlick)(V_ f0, V_ c)
 {
-    return X_FRESNEL_(X_UNIT_(f0), X_UNIT_(c));
+    return NAN0_(X_FRESNEL_(X_UNIT_(f0), X_UNIT_(c)), f0, c);
 }
 
 /* ---- GGX D ------------------------------------------------------------ */
@@ -140,7 +166,9 @@ FACET_INLINE V_ FACET_K(fresnel_schlick)(V_ f0, V_ c)
 /* D = alpha^2 / (pi d^2), d = (1 - n^2) + (n alpha)^2 with 1 - n^2 as
  * (1-n)(1+n), so d keeps full relative precision at the peak (d -> alpha^2).
  * Written D = (1/pi) (alpha/d)^2: alpha/d <= 1/alpha_min, no overflow. */
-FACET_INLINE V_ FACET_K(ggx_d)(V_ noh, V_ alpha)
+/* (the samplers' pdfs use this core, without the NaN rule: they keep their
+ * own input rules, facet.h) */
+FACET_INLINE V_ FACET_K(x_ggx_d)(V_ noh, V_ alpha)
 {
     V_ n = X_UNIT_(noh);
     V_ a = X_ALPHA_(alpha);
@@ -148,6 +176,11 @@ FACET_INLINE V_ FACET_K(ggx_d)(V_ noh, V_ alpha)
     V_ d = FMA_(SUB_(C_(1.0f), n), ADD_(C_(1.0f), n), MUL_(na, na));
     V_ k = MUL_(a, RCP_(d));
     return MUL_(MUL_(k, k), C_(FACET_INV_PI_));
+}
+
+FACET_INLINE V_ FACET_K(ggx_d)(V_ noh, V_ alpha)
+{
+    return NAN0_(FACET_K(x_ggx_d)(noh, alpha), noh, alpha);
 }
 
 /* ---- Smith, exact ------------------------------------------------------ */
@@ -158,7 +191,7 @@ FACET_INLINE V_ FACET_K(smith_g1)(V_ nov, V_ alpha)
     V_ n = X_UNIT_(nov);
     V_ a = X_ALPHA_(alpha);
     V_ r = X_SQRT_(X_SMITH_W_(n, MUL_(a, a)));
-    return MIN_(MUL_(ADD_(n, n), RCP_(ADD_(n, r))), C_(1.0f));
+    return NAN0_(MIN_(MUL_(ADD_(n, n), RCP_(ADD_(n, r))), C_(1.0f)), nov, alpha);
 }
 
 /* nv sqrt(w(nl)) + nl sqrt(w(nv)): the height-correlated denominator,
@@ -176,14 +209,14 @@ FACET_INLINE V_ FACET_K(smith_g2)(V_ nol, V_ nov, V_ alpha)
     V_ nl = X_COS_(nol), nv = X_COS_(nov);
     V_ den = X_G2_DEN_(nl, nv, X_ALPHA_(alpha));
     V_ p = MUL_(nl, nv);
-    return MIN_(MUL_(ADD_(p, p), RCP_(den)), C_(1.0f));
+    return NAN0_(MIN_(MUL_(ADD_(p, p), RCP_(den)), C_(1.0f)), nol, nov, alpha);
 }
 
 FACET_INLINE V_ FACET_K(smith_vis)(V_ nol, V_ nov, V_ alpha)
 {
     V_ nl = X_COS_(nol), nv = X_COS_(nov);
     V_ den = X_G2_DEN_(nl, nv, X_ALPHA_(alpha));
-    return MUL_(C_(0.5f), RCP_(den));
+    return NAN0_(MUL_(C_(0.5f), RCP_(den)), nol, nov, alpha);
 }
 
 /* G1(L) G1(V) = 4 nl nv / ((nl + sqrt w(nl)) (nv + sqrt w(nv))): one reciprocal. */
@@ -195,7 +228,7 @@ FACET_INLINE V_ FACET_K(smith_g2_uncorrelated)(V_ nol, V_ nov, V_ alpha)
     V_ dl = ADD_(nl, X_SQRT_(X_SMITH_W_(nl, a2)));
     V_ dv = ADD_(nv, X_SQRT_(X_SMITH_W_(nv, a2)));
     V_ p = MUL_(nl, nv);
-    return MIN_(MUL_(MUL_(C_(4.0f), p), RCP_(MUL_(dl, dv))), C_(1.0f));
+    return NAN0_(MIN_(MUL_(MUL_(C_(4.0f), p), RCP_(MUL_(dl, dv))), C_(1.0f)), nol, nov, alpha);
 }
 
 /* ---- Smith, Hammon's approximation ---------------------------------------- */
@@ -206,7 +239,7 @@ FACET_INLINE V_ FACET_K(smith_g1_hammon)(V_ nov, V_ alpha)
     V_ n = X_UNIT_(nov);
     V_ a = X_ALPHA_(alpha);
     V_ den = FMA_(n, SUB_(C_(2.0f), a), a);
-    return MIN_(MUL_(ADD_(n, n), RCP_(den)), C_(1.0f));
+    return NAN0_(MIN_(MUL_(ADD_(n, n), RCP_(den)), C_(1.0f)), nov, alpha);
 }
 
 /* lerp(2 nl nv, nl + nv, alpha) written (1 - alpha) 2 nl nv + alpha (nl + nv):
@@ -222,14 +255,14 @@ FACET_INLINE V_ FACET_K(smith_g2_hammon)(V_ nol, V_ nov, V_ alpha)
     V_ nl = X_COS_(nol), nv = X_COS_(nov);
     V_ den = X_HAMMON_DEN_(nl, nv, X_ALPHA_(alpha));
     V_ p = MUL_(nl, nv);
-    return MIN_(MUL_(ADD_(p, p), RCP_(den)), C_(1.0f));
+    return NAN0_(MIN_(MUL_(ADD_(p, p), RCP_(den)), C_(1.0f)), nol, nov, alpha);
 }
 
 FACET_INLINE V_ FACET_K(smith_vis_hammon)(V_ nol, V_ nov, V_ alpha)
 {
     V_ nl = X_COS_(nol), nv = X_COS_(nov);
     V_ den = X_HAMMON_DEN_(nl, nv, X_ALPHA_(alpha));
-    return MUL_(C_(0.5f), RCP_(den));
+    return NAN0_(MUL_(C_(0.5f), RCP_(den)), nol, nov, alpha);
 }
 
 /* ---- Hammon's GGX diffuse --------------------------------------------------- */
@@ -266,7 +299,7 @@ FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ alb
     V_ nh = MIN_(MUL_(s, RSQRT_(ADD_(t, t))), C_(1.0f));
     V_ d = X_DIFFUSE_PI_(nl, nv, t, MUL_(C_(0.5f), RCP_(nh)), X_ALPHA_(alpha),
                                  X_UNIT_(albedo));
-    return MUL_(d, C_(FACET_INV_PI_));
+    return NAN0_(MUL_(d, C_(FACET_INV_PI_)), nol, nov, lov, alpha, albedo);
 }
 
 /* ---- the whole model ------------------------------------------------------ */
@@ -349,24 +382,26 @@ FACET_INLINE V_ X_BRDF_CHANNEL_(const X_BRDF_PARTS_ *g, V_ f0, V_ albedo)
 FACET_INLINE V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_ albedo)
 {
     X_BRDF_PARTS_ g = X_BRDF_GEOMETRY_(nol, nov, lov, alpha);
-    return X_BRDF_CHANNEL_(&g, f0, albedo);
+    return NAN0_(X_BRDF_CHANNEL_(&g, f0, albedo), nol, nov, lov, alpha, f0, albedo);
 }
 
 /* brdf_hammon for three channels of f0 and albedo at once, the geometry
- * computed once: out[c] equals brdf_hammon(..., f0[c], albedo[c]) bit for bit. */
+ * computed once: out[c] equals brdf_hammon(..., f0[c], albedo[c]) bit for bit
+ * (NaN rule included: a NaN in the geometry zeroes every channel, one in
+ * f0[c] or albedo[c] channel c). */
 FACET_INLINE void FACET_K(brdf_hammon_rgb)(V_ out[3], V_ nol, V_ nov, V_ lov, V_ alpha,
                                            const V_ f0[3], const V_ albedo[3])
 {
     X_BRDF_PARTS_ g = X_BRDF_GEOMETRY_(nol, nov, lov, alpha);
-    out[0] = X_BRDF_CHANNEL_(&g, f0[0], albedo[0]);
-    out[1] = X_BRDF_CHANNEL_(&g, f0[1], albedo[1]);
-    out[2] = X_BRDF_CHANNEL_(&g, f0[2], albedo[2]);
+    int c;
+    for (c = 0; c < 3; c++)
+        out[c] = NAN0_(X_BRDF_CHANNEL_(&g, f0[c], albedo[c]), nol, nov, lov, alpha, f0[c], albedo[c]);
 }
 
 /* Lambert: albedo / pi, the baseline diffuse. */
 FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
 {
-    return MUL_(X_UNIT_(albedo), C_(FACET_INV_PI_));
+    return NAN0_(MUL_(X_UNIT_(albedo), C_(FACET_INV_PI_)), albedo);
 }
 
 #undef V_
@@ -379,6 +414,17 @@ FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
 #undef MIN_
 #undef MAX_
 #undef CLAMP_
+#undef KEEP_ORD_
+#undef NAN0_
+#undef NAN0_SEL_
+#undef NAN0_1_
+#undef NAN0_2_
+#undef NAN0_3_
+#undef NAN0_4_
+#undef NAN0_5_
+#undef NAN0_6_
+#undef NAN0_7_
+#undef NAN0_8_
 #undef RCP_
 #undef RSQRT_
 #undef RCP_X5_

@@ -2,7 +2,8 @@
  * GGX visible normals, GTR D) and their pdfs.
  *
  * Like f32_body.h: no include guard; each port header includes it once per
- * tier, after f32_body.h (it calls that body's ggx_d and Smith helper), with
+ * tier, after f32_body.h (it calls that body's ggx_d core, x_ggx_d, which
+ * has no NaN rule, and its Smith helpers), with
  * the same FACET_V / FACET_OP / FACET_K / FACET_TIER_FAST, and with three
  * ops more than f32_body.h needs (see facet/scalar.h, "sampling ops"):
  *   exp2i(k)    2^k for an integral-valued k in [-126, 127] (exponent bits)
@@ -194,7 +195,7 @@ FACET_INLINE void FACET_K(ggx_sample_d)(V_ h[3], V_ u1, V_ u2, V_ alpha)
  * bit, and pdf = fl(ggx_d(N.H) N.H) with N.H clamped to [0, 1]). */
 FACET_INLINE V_ FACET_K(ggx_pdf_d)(V_ noh, V_ alpha)
 {
-    return MUL_(FACET_K(ggx_d)(noh, alpha), FACET_K(x_unit)(noh));
+    return MUL_(FACET_K(x_ggx_d)(noh, alpha), FACET_K(x_unit)(noh));
 }
 
 /* Anisotropic: D(h) = 1 / (pi ax ay k^2), k = (hx/ax)^2 + (hy/ay)^2 + hz^2
@@ -324,7 +325,7 @@ FACET_INLINE V_ FACET_K(ggx_pdf_vndf)(V_ nov, V_ noh, V_ voh, V_ alpha)
     V_ a = FACET_K(x_alpha)(alpha);
     V_ r = FACET_K(x_sqrt)(FACET_K(x_smith_w)(n, MUL_(a, a)));
     V_ g = MUL_(C_(2.0f), FACET_OP(rcp)(ADD_(n, r)));
-    return MUL_(FACET_K(ggx_d)(noh, alpha), MUL_(FACET_K(x_unit)(voh), g));
+    return MUL_(FACET_K(x_ggx_d)(noh, alpha), MUL_(FACET_K(x_unit)(voh), g));
 }
 
 /* pdf of the reflected direction l = 2 (V.H) H - V: pdf_vndf / (4 V.H)
@@ -334,7 +335,7 @@ FACET_INLINE V_ FACET_K(ggx_pdf_vndf_reflect)(V_ nov, V_ noh, V_ voh, V_ alpha)
     V_ n = FACET_K(x_unit)(nov);
     V_ a = FACET_K(x_alpha)(alpha);
     V_ r = FACET_K(x_sqrt)(FACET_K(x_smith_w)(n, MUL_(a, a)));
-    V_ p = MUL_(FACET_K(ggx_d)(noh, alpha), MUL_(C_(0.5f), FACET_OP(rcp)(ADD_(n, r))));
+    V_ p = MUL_(FACET_K(x_ggx_d)(noh, alpha), MUL_(C_(0.5f), FACET_OP(rcp)(ADD_(n, r))));
     return SEL_LT_(C_(0.0f), voh, p, C_(0.0f));
 }
 
