@@ -42,12 +42,18 @@ FACET_INLINE float32x4_t facet_helium_sel_lt(float32x4_t a, float32x4_t b, float
 {
     return vpselq_f32(x, y, vcmpgtq_f32(b, a));
 }
-/* r where neither a nor b is NaN, else +0 (the NaN rule, f32_body.h NAN0_):
- * an equality self-compare is false only for NaN */
+/* r where neither a nor b is NaN, else +0 (the NaN rule, f32_body.h NAN0_).
+ * NaN is found on the bits (|x| above the infinity's pattern), not by a
+ * float self-compare: with clang 14 the self-compare let NaN samples through
+ * (test_f32_ports on the M55), and the bit test does not depend on how a
+ * compiler lowers MVE's float compares. */
 FACET_INLINE float32x4_t facet_helium_keep_ord(float32x4_t r, float32x4_t a, float32x4_t b)
 {
-    mve_pred16_t p = (mve_pred16_t)(vcmpeqq_f32(a, a) & vcmpeqq_f32(b, b));
-    return vpselq_f32(r, vdupq_n_f32(0.0f), p);
+    uint32x4_t abs_mask = vdupq_n_u32(0x7fffffffu), inf = vdupq_n_u32(0x7f800000u);
+    uint32x4_t ia = vandq_u32(vreinterpretq_u32_f32(a), abs_mask);
+    uint32x4_t ib = vandq_u32(vreinterpretq_u32_f32(b), abs_mask);
+    mve_pred16_t nan = (mve_pred16_t)(vcmphiq_u32(ia, inf) | vcmphiq_u32(ib, inf));
+    return vpselq_f32(vdupq_n_f32(0.0f), r, nan);
 }
 /* compare-and-select, not vmaxnm (which would return the number): a NaN
  * input must become lo */

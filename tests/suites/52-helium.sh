@@ -10,6 +10,7 @@
 #                      specification, tails, aliasing, the pinned hashes
 #   test_fx_hash       the pinned hashes of the scalar kernels on the M55
 #   test_sample_ports, test_f32_bad_input  the samplers' and the bad-input contracts
+#   test_f32_rgb, test_fx_rgb  the RGB batches (every layout, tail, alias) and RGB fixed point
 # Skipped, with the reason, where the toolchain or qemu is missing.
 # lane: emulators
 . tests/suite_lib.sh
@@ -45,7 +46,7 @@ m55() { # m55 DIR LABEL HELIUM_CC TESTS...
     done
 }
 m55 build/m55 helium arm-none-eabi-gcc test_f32_ports test_f32_accuracy test_fx_ports test_fx_hash \
-    test_sample_ports test_f32_bad_input
+    test_sample_ports test_f32_bad_input test_f32_rgb test_fx_rgb
 if have clang; then
     m55 build/m55-clang helium-clang clang test_f32_ports test_f32_accuracy test_fx_ports test_sample_ports
 else
