@@ -51,8 +51,8 @@ extern "C" {
 #define FACET_ERR_NOH_FROM_DOTS_F32         3.372e-07 /* 2^-21.5 */
 #define FACET_ERR_LOH_FROM_DOTS_F32         2.384e-07 /* 2^-22 */
 #define FACET_ERR_FRESNEL_SCHLICK_F32       4.769e-07 /* 2^-21 */
-#define FACET_ERR_FRESNEL_COOK_TORRANCE_F32 1.349e-06 /* 2^-19.5 */
-#define FACET_ERR_FRESNEL_SCHLICK_F90_F32   3.372e-07 /* 2^-21.5 */
+#define FACET_ERR_FRESNEL_COOK_TORRANCE_F32 1.907e-06 /* 2^-19 */
+#define FACET_ERR_FRESNEL_SCHLICK_F90_F32   4.769e-07 /* 2^-21 */
 #define FACET_ERR_GGX_D_F32                 9.538e-07 /* 2^-20 */
 #define FACET_ERR_SMITH_G1_F32              4.769e-07 /* 2^-21 */
 #define FACET_ERR_SMITH_G2_F32              4.769e-07 /* 2^-21 */
@@ -110,9 +110,9 @@ float facet_fresnel_schlick_f32(float f0, float cos_theta);
  * Brewster dip Schlick does not have, mean 0.105.
  * The precision is that of F ~ P^-4 (an error of P counts four times), so
  * both tiers are the same code with fully refined estimates.
- * Error: <= FACET_ERR_FRESNEL_COOK_TORRANCE_F32 (2^-19.5), both tiers; measured max
- * 2^-19.72 (worst port, 300 k samples) at (0.000151541055, 0.60085839).
- * Cost: 37 ops (2 rsqrt, 1 rcp). */
+ * Error: <= FACET_ERR_FRESNEL_COOK_TORRANCE_F32 (2^-19), both tiers; measured max
+ * 2^-19.71 (worst port, 3 M samples) at (6.10115691e-08, 0.528173864).
+ * Cost: 41 ops (2 rsqrt, 1 rcp). */
 float facet_fresnel_cook_torrance_f32(float f0, float voh);
 
 /* Schlick's Fresnel with a free grazing value (f90; fresnel_schlick is
@@ -121,8 +121,8 @@ float facet_fresnel_cook_torrance_f32(float f0, float voh);
  * for f90 < f0).  Domain: f0, f90, voh in [0, 1].  F(f0, f90, 1) = f0,
  * F(f0, f90, 0) = f90 exactly.
  * No reciprocal or rsqrt: both tiers are the same code.
- * Error: <= FACET_ERR_FRESNEL_SCHLICK_F90_F32 (2^-21.5); measured max 2^-21.77 (worst port,
- * 300 k samples) at (0.39844048, 0.000448110455, 0.111190885).
+ * Error: <= FACET_ERR_FRESNEL_SCHLICK_F90_F32 (2^-21); measured max 2^-21.54 (worst port,
+ * 3 M samples) at (2.63928523e-08, 0.999971151, 0.499411613).
  * Cost: 21 ops (0 rsqrt, 0 rcp). */
 float facet_fresnel_schlick_f90_f32(float f0, float f90, float voh);
 
@@ -215,8 +215,8 @@ float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, flo
  * {2^-10, 1/4, 1/2, 1}) from 0.542 (N.V = 0.01, alpha = 2^-10) to 1.538
  * (N.V = 0.01, alpha = 1); at N.V = 1 exactly 1 - 1/42 + 5 sqrt(alpha)/84.
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.H, alpha, albedo.
- * Error: <= FACET_ERR_DIFFUSE_BURLEY_F32 (2^-20.5); measured max 2^-21.15 (worst port,
- * 300 k samples) at (0.0417791642, 0.0417791642, 0.637884676, 0.0032330195, 0.0730604678).
+ * Error: <= FACET_ERR_DIFFUSE_BURLEY_F32 (2^-20.5); measured max 2^-21.09 (worst port,
+ * 3 M samples) at (0.00749915093, 0.00748796575, 0.00142297987, 0.191616133, 0.978153765).
  * Cost: 33 ops (1 rsqrt, 0 rcp). */
 float facet_diffuse_burley_f32(float nol, float nov, float loh, float alpha, float albedo);
 
@@ -233,8 +233,8 @@ float facet_diffuse_burley_f32(float nol, float nov, float loh, float alpha, flo
  * as diffuse_burley's): A(alpha) at N.V = 1 (0.785 at alpha = 1: the
  * qualitative model has no interreflection), 0.785 to 1.012 over that grid.
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, albedo.
- * Error: <= FACET_ERR_DIFFUSE_OREN_NAYAR_F32 (2^-20.5); measured max 2^-21.21 (worst port,
- * 300 k samples) at (0.164250553, 0.806505799, 0.438561946, 0.180017099, 0.0202509072).
+ * Error: <= FACET_ERR_DIFFUSE_OREN_NAYAR_F32 (2^-20.5); measured max 2^-21.19 (worst port,
+ * 3 M samples) at (0.0482582487, 0.0482582487, 1, 0.223686263, 2.82182633e-08).
  * Cost: 28 ops (0 rsqrt, 1 rcp). */
 float facet_diffuse_oren_nayar_f32(float nol, float nov, float lov, float alpha, float albedo);
 
@@ -247,8 +247,8 @@ float facet_diffuse_oren_nayar_f32(float nol, float nov, float lov, float alpha,
  * alpha = 2^-10) to 1.162 (N.V = 0.01, alpha = 1); its smooth part
  * integrates to (1 - (1 - N.V)^5 / 2)(1 - 1/42).
  * Domain: as diffuse_hammon.
- * Error: <= FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32 (2^-20.5); measured max 2^-21.10 (worst port,
- * 300 k samples) at (1.41289338e-05, 0.00131362432, 0.571291506, 0.912751853, 0.999999881).
+ * Error: <= FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32 (2^-20.5); measured max 2^-20.88 (worst port,
+ * 3 M samples) at (0.000297121675, 2.25166241e-06, 0.855512679, 0.0379198343, 0.816826582).
  * Cost: 47 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_hybrid_f32(float nol, float nov, float lov, float alpha,
                                       float albedo);
@@ -258,8 +258,8 @@ float facet_diffuse_hammon_hybrid_f32(float nol, float nov, float lov, float alp
  * Directional albedo (albedo = 1, as diffuse_burley's): 1.000 (alpha =
  * 2^-10) to 1.162 (N.V = 0.01, alpha = 1).
  * Domain: as diffuse_hammon.
- * Error: <= FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32 (2^-20.5); measured max 2^-21.09 (worst port,
- * 300 k samples) at (0.899999976, 0.0009765625, 1, 0.99999994, 9.99999975e-05).
+ * Error: <= FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32 (2^-20.5); measured max 2^-20.86 (worst port,
+ * 3 M samples) at (9.97556413e-07, 2.99169169e-05, -0.263197154, 0.189148799, 0.589178443).
  * Cost: 30 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_cheap_f32(float nol, float nov, float lov, float alpha,
                                      float albedo);
@@ -361,14 +361,16 @@ void facet_lambert_f32_batch(float *out, const float *albedo, size_t n);
  * avx512, e.g. smith_g2_uncorrelated 2^-12.43, brdf_hammon 2^-13.00),
  * enforced by the same tests; all <= 2^-12.  fresnel_cook_torrance refines
  * fully in both tiers (its F goes as the fourth power of a rooted term);
- * fresnel_schlick_f90 has no reciprocal.  Measured on this sweep (300 k,
- * avx512, the worst port): diffuse_burley 2^-13.56, diffuse_oren_nayar
- * 2^-14.18, diffuse_hammon_hybrid 2^-13.60, diffuse_hammon_cheap 2^-13.64. */
+ * fresnel_schlick_f90 has no reciprocal.  Measured (3 M samples, avx512,
+ * the worst port): diffuse_burley 2^-13.55, diffuse_oren_nayar 2^-14.17,
+ * diffuse_hammon_hybrid 2^-13.47, diffuse_hammon_cheap 2^-13.42; with
+ * estimates at the architectural bound (tests/suites/15-worst-estimates.sh,
+ * 30 k samples) at most 2^-13.01 (hybrid and cheap, avx512). */
 #define FACET_ERR_NOH_FROM_DOTS_F32_FAST          8.632e-05 /* 2^-13.5 */
 #define FACET_ERR_LOH_FROM_DOTS_F32_FAST          8.632e-05 /* 2^-13.5 */
 #define FACET_ERR_FRESNEL_SCHLICK_F32_FAST        4.769e-07 /* 2^-21 */
-#define FACET_ERR_FRESNEL_COOK_TORRANCE_F32_FAST  1.349e-06 /* 2^-19.5 */
-#define FACET_ERR_FRESNEL_SCHLICK_F90_F32_FAST    3.372e-07 /* 2^-21.5 */
+#define FACET_ERR_FRESNEL_COOK_TORRANCE_F32_FAST  1.907e-06 /* 2^-19 */
+#define FACET_ERR_FRESNEL_SCHLICK_F90_F32_FAST    4.769e-07 /* 2^-21 */
 #define FACET_ERR_GGX_D_F32_FAST                  1.726e-04 /* 2^-12.5 */
 #define FACET_ERR_SMITH_G1_F32_FAST               1.726e-04 /* 2^-12.5 */
 #define FACET_ERR_SMITH_G2_F32_FAST               1.726e-04 /* 2^-12.5 */

@@ -170,7 +170,10 @@ FACET_INLINE V_ FACET_K(fresnel_schlick_f90)(V_ f0, V_ f90, V_ voh)
  *   r = (g - c)/(g + c) = K / P^2 in [0, 1],
  *   q = ((g + c) c - 1) / ((g - c) c + 1) = P (P c - u) / E,  E = K c + u P,
  *   F = r^2 (1 + q^2) / 2,
- * with one reciprocal R = 1 / (P^2 E): r = K E R, q = (P c - u) P^3 R.
+ * with one reciprocal R = 1 / (P^2 E): 1 / P^2 = E R, q = (P c - u) P^3 R,
+ * and r^2 = K^2 (E R)^2 = 16 f0 (1 + s)^4 (E R)^2 (f0 itself, not the
+ * rounded s^2; multiplied in that order, no intermediate over- or
+ * underflows).
  * P^2 E >= 2^-109 unless f0 = 0 (then K = 0 and F = 0: eta = 1, no
  * interface) or f0 = 1 (F = 1 for every c, selected: eta = infinity, a
  * perfect mirror, where P^2 E = 256 c vanishes at c = 0); it is floored at
@@ -194,9 +197,11 @@ FACET_INLINE V_ FACET_K(fresnel_cook_torrance)(V_ f0, V_ voh)
     V_ p2 = MUL_(p, p);
     V_ e = FMA_(k, c, MUL_(u, p));
     V_ rw = RCP_X5_(MAX_(MUL_(p2, e), C_(0x1p-120f)));
-    V_ r = MUL_(MUL_(k, e), rw);
+    V_ er = MUL_(e, rw);                                   /* 1 / P^2 */
+    V_ s2 = MUL_(s1, s1);
+    V_ r2 = MUL_(MUL_(MUL_(MUL_(C_(16.0f), f), MUL_(s2, s2)), er), er);
     V_ q = MUL_(MUL_(FMA_(p, c, SUB_(f, C_(1.0f))), p), MUL_(p2, rw));
-    V_ fr = MUL_(MUL_(C_(0.5f), MUL_(r, r)), FMA_(q, q, C_(1.0f)));
+    V_ fr = MUL_(MUL_(C_(0.5f), r2), FMA_(q, q, C_(1.0f)));
     return FACET_OP(sel_lt)(f, C_(1.0f), MIN_(fr, C_(1.0f)), C_(1.0f));
 }
 
