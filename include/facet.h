@@ -60,6 +60,8 @@ extern "C" {
 #define FACET_ERR_NOH_FROM_DOTS_F32         3.372e-07 /* 2^-21.5 */
 #define FACET_ERR_LOH_FROM_DOTS_F32         2.384e-07 /* 2^-22 */
 #define FACET_ERR_FRESNEL_SCHLICK_F32       4.769e-07 /* 2^-21 */
+#define FACET_ERR_FRESNEL_COOK_TORRANCE_F32 1.907e-06 /* 2^-19 */
+#define FACET_ERR_FRESNEL_SCHLICK_F90_F32   4.769e-07 /* 2^-21 */
 #define FACET_ERR_GGX_D_F32                 9.538e-07 /* 2^-20 */
 #define FACET_ERR_SMITH_G1_F32              4.769e-07 /* 2^-21 */
 #define FACET_ERR_SMITH_G2_F32              4.769e-07 /* 2^-21 */
@@ -69,6 +71,10 @@ extern "C" {
 #define FACET_ERR_SMITH_G2_HAMMON_F32       4.769e-07 /* 2^-21 */
 #define FACET_ERR_SMITH_VIS_HAMMON_F32      3.372e-07 /* 2^-21.5 */
 #define FACET_ERR_DIFFUSE_HAMMON_F32        9.538e-07 /* 2^-20 */
+#define FACET_ERR_DIFFUSE_BURLEY_F32        6.744e-07 /* 2^-20.5 */
+#define FACET_ERR_DIFFUSE_OREN_NAYAR_F32    6.744e-07 /* 2^-20.5 */
+#define FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32 6.744e-07 /* 2^-20.5 */
+#define FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32  6.744e-07 /* 2^-20.5 */
 #define FACET_ERR_BRDF_HAMMON_F32           2.698e-06 /* 2^-18.5 */
 #define FACET_ERR_LAMBERT_F32               1.686e-07 /* 2^-22.5 */
 
@@ -93,6 +99,41 @@ float facet_loh_from_dots_f32(float lov);
  * 30 M samples) at (2.34035488e-05, 0.494028538).
  * Cost: 15 ops (0 rsqrt, 0 rcp). */
 float facet_fresnel_schlick_f32(float f0, float cos_theta);
+
+/* Exact Fresnel reflectance of a dielectric (unpolarised), the reference the
+ * Schlick forms approximate: with eta = (1 + sqrt f0) / (1 - sqrt f0) (so
+ * that f0 = ((eta - 1)/(eta + 1))^2) and g = sqrt(eta^2 - 1 + V.H^2),
+ *   F = (1/2) ((g - c)/(g + c))^2 (1 + (((g + c) c - 1)/((g - c) c + 1))^2),  c = V.H
+ * (Cook and Torrance's form of the Fresnel equations), evaluated scaled by
+ * 1 - f0 so that eta -> infinity costs nothing (f32_body.h derives it): two
+ * rsqrt (sqrt f0 and g), one reciprocal, no cancellation.
+ * Domain: f0, voh in [0, 1].  F(f0, 1) = f0; F(f0, 0) = 1 for f0 > 0;
+ * f0 = 0 (eta = 1, no interface) gives 0 for every V.H; f0 = 1 (eta
+ * infinite, a perfect mirror) gives 1 for every V.H.  Near f0 = 1 the
+ * function is steep at grazing: F dips to about 1/2 at the Brewster angle,
+ * cos = 1/sqrt(eta^2 + 1) ~ (1 - f0) / 4, and returns to 1 at V.H = 0.
+ * Model error of fresnel_schlick against it (relative, tests/test_oracle.c,
+ * 401 f0 log-spaced x 2001 V.H): f0 in [0.02, 0.1] (dielectrics, eta 1.33
+ * to 1.92) max 0.236 at (f0 0.031, V.H 0.587), where Schlick is too low,
+ * mean 0.094; f0 in [0.02, 0.999] max 0.999 at (0.98, V.H 0.005), the
+ * Brewster dip Schlick does not have, mean 0.105.
+ * The precision is that of F ~ P^-4 (an error of P counts four times), so
+ * both tiers are the same code with fully refined estimates.
+ * Error: <= FACET_ERR_FRESNEL_COOK_TORRANCE_F32 (2^-19), both tiers; measured max
+ * 2^-19.71 (worst port, 3 M samples) at (6.10115691e-08, 0.528173864).
+ * Cost: 41 ops (2 rsqrt, 1 rcp). */
+float facet_fresnel_cook_torrance_f32(float f0, float voh);
+
+/* Schlick's Fresnel with a free grazing value (f90; fresnel_schlick is
+ * f90 = 1):  F = f0 + (f90 - f0)(1 - V.H)^5, evaluated as the convex
+ * combination f0 (1 - (1 - c)^5) + f90 (1 - c)^5 (no cancellation, also
+ * for f90 < f0).  Domain: f0, f90, voh in [0, 1].  F(f0, f90, 1) = f0,
+ * F(f0, f90, 0) = f90 exactly.
+ * No reciprocal or rsqrt: both tiers are the same code.
+ * Error: <= FACET_ERR_FRESNEL_SCHLICK_F90_F32 (2^-21); measured max 2^-21.54 (worst port,
+ * 3 M samples) at (2.63928523e-08, 0.999971151, 0.499411613).
+ * Cost: 21 ops (0 rsqrt, 0 rcp). */
+float facet_fresnel_schlick_f90_f32(float f0, float f90, float voh);
 
 /* GGX / Trowbridge-Reitz normal distribution:
  *   D = alpha^2 / (pi ((N.H)^2 (alpha^2 - 1) + 1)^2)
@@ -172,6 +213,66 @@ float facet_smith_vis_hammon_f32(float nol, float nov, float alpha);
  * Cost: 50 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, float albedo);
 
+/* Burley's diffuse ("Disney", 2012), a BRDF value:
+ *   f_d90  = 0.5 + 2 r L.H^2,  r = sqrt(alpha), Disney's roughness (the
+ *            slider whose square is the GGX alpha; some engines put alpha
+ *            itself here: that is this kernel at alpha^2)
+ *   result = albedo / pi (1 + (f_d90 - 1)(1 - N.L)^5)(1 + (f_d90 - 1)(1 - N.V)^5)
+ * L.H is an input (loh_from_dots gives it from L.V).  Each factor is in
+ * [1/2, 5/2]: no cancellation.  Not energy conserving: directional albedo
+ * (albedo = 1; tests/test_oracle.c, N.V in {1, 0.5, 0.1, 0.01}, alpha in
+ * {2^-10, 1/4, 1/2, 1}) from 0.542 (N.V = 0.01, alpha = 2^-10) to 1.538
+ * (N.V = 0.01, alpha = 1); at N.V = 1 exactly 1 - 1/42 + 5 sqrt(alpha)/84.
+ * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.H, alpha, albedo.
+ * Error: <= FACET_ERR_DIFFUSE_BURLEY_F32 (2^-20.5); measured max 2^-21.09 (worst port,
+ * 3 M samples) at (0.00749915093, 0.00748796575, 0.00142297987, 0.191616133, 0.978153765).
+ * Cost: 33 ops (1 rsqrt, 0 rcp). */
+float facet_diffuse_burley_f32(float nol, float nov, float loh, float alpha, float albedo);
+
+/* Oren-Nayar's qualitative diffuse with sigma = alpha / 2 (radians; the
+ * mapping of Hammon's comparison), a BRDF value:
+ *   A = 1 - 0.5 sigma^2 / (sigma^2 + 0.33),  B = 0.45 sigma^2 / (sigma^2 + 0.09)
+ *   result = albedo / pi (A + B max(0, cos(phi_l - phi_v)) sin(theta_max) tan(theta_min))
+ * without any angle: cos(phi_l - phi_v) sin(theta_l) sin(theta_v) =
+ * L.V - N.L N.V and tan(theta_min) / sin(theta_min) = 1 / max(N.L, N.V), so
+ *   result = albedo / pi (A + B max(0, L.V - N.L N.V) / max(N.L, N.V)),
+ * one reciprocal for the whole (f32_body.h).  Inconsistent triples follow
+ * that identity as it stands.  Largest at N.L = N.V = FACET_COS_MIN, L.V =
+ * 1: (A + B 2^20) / pi (B <= 0.331).  Directional albedo (albedo = 1,
+ * as diffuse_burley's): A(alpha) at N.V = 1 (0.785 at alpha = 1: the
+ * qualitative model has no interreflection), 0.785 to 1.012 over that grid.
+ * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, albedo.
+ * Error: <= FACET_ERR_DIFFUSE_OREN_NAYAR_F32 (2^-20.5); measured max 2^-21.19 (worst port,
+ * 3 M samples) at (0.0482582487, 0.0482582487, 1, 0.223686263, 2.82182633e-08).
+ * Cost: 28 ops (0 rsqrt, 1 rcp). */
+float facet_diffuse_oren_nayar_f32(float nol, float nov, float lov, float alpha, float albedo);
+
+/* Hammon's hybrid diffuse: diffuse_hammon with the smooth term taken from
+ * Disney's at f_d90 = 1/2,
+ *   smooth = (1 - (1 - N.L)^5 / 2)(1 - (1 - N.V)^5 / 2)
+ * (so at alpha = 0 it equals diffuse_burley at roughness 0); rough, single
+ * (lerp by alpha) and multi (0.1159 alpha) as diffuse_hammon.
+ * Directional albedo (albedo = 1, as diffuse_burley's): 0.513 (N.V = 0.01,
+ * alpha = 2^-10) to 1.162 (N.V = 0.01, alpha = 1); its smooth part
+ * integrates to (1 - (1 - N.V)^5 / 2)(1 - 1/42).
+ * Domain: as diffuse_hammon.
+ * Error: <= FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32 (2^-20.5); measured max 2^-20.88 (worst port,
+ * 3 M samples) at (0.000297121675, 2.25166241e-06, 0.855512679, 0.0379198343, 0.816826582).
+ * Cost: 47 ops (1 rsqrt, 1 rcp). */
+float facet_diffuse_hammon_hybrid_f32(float nol, float nov, float lov, float alpha,
+                                      float albedo);
+
+/* Hammon's cheaper diffuse: diffuse_hammon with smooth = 1 (Lambert):
+ *   result = albedo (((1 - alpha) + alpha rough) / pi + albedo 0.1159 alpha).
+ * Directional albedo (albedo = 1, as diffuse_burley's): 1.000 (alpha =
+ * 2^-10) to 1.162 (N.V = 0.01, alpha = 1).
+ * Domain: as diffuse_hammon.
+ * Error: <= FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32 (2^-20.5); measured max 2^-20.86 (worst port,
+ * 3 M samples) at (9.97556413e-07, 2.99169169e-05, -0.263197154, 0.189148799, 0.589178443).
+ * Cost: 30 ops (1 rsqrt, 1 rcp). */
+float facet_diffuse_hammon_cheap_f32(float nol, float nov, float lov, float alpha,
+                                     float albedo);
+
 /* The whole model, per light:
  *   brdf = D(N.H) Vis_hammon(N.L, N.V) F(f0, L.H) + diffuse_hammon
  * (a BRDF value; radiance = brdf * N.L * light).  D is evaluated from the
@@ -216,6 +317,9 @@ void facet_noh_from_dots_f32_batch(float *out, const float *nol, const float *no
                                    const float *lov, size_t n);
 void facet_loh_from_dots_f32_batch(float *out, const float *lov, size_t n);
 void facet_fresnel_schlick_f32_batch(float *out, const float *f0, const float *cos_theta, size_t n);
+void facet_fresnel_cook_torrance_f32_batch(float *out, const float *f0, const float *voh, size_t n);
+void facet_fresnel_schlick_f90_f32_batch(float *out, const float *f0, const float *f90,
+                                         const float *voh, size_t n);
 void facet_ggx_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
 void facet_smith_g1_f32_batch(float *out, const float *nov, const float *alpha, size_t n);
 void facet_smith_g2_f32_batch(float *out, const float *nol, const float *nov, const float *alpha,
@@ -232,6 +336,18 @@ void facet_smith_vis_hammon_f32_batch(float *out, const float *nol, const float 
 void facet_diffuse_hammon_f32_batch(float *out, const float *nol, const float *nov,
                                     const float *lov, const float *alpha, const float *albedo,
                                     size_t n);
+void facet_diffuse_burley_f32_batch(float *out, const float *nol, const float *nov,
+                                    const float *loh, const float *alpha, const float *albedo,
+                                    size_t n);
+void facet_diffuse_oren_nayar_f32_batch(float *out, const float *nol, const float *nov,
+                                        const float *lov, const float *alpha, const float *albedo,
+                                        size_t n);
+void facet_diffuse_hammon_hybrid_f32_batch(float *out, const float *nol, const float *nov,
+                                           const float *lov, const float *alpha,
+                                           const float *albedo, size_t n);
+void facet_diffuse_hammon_cheap_f32_batch(float *out, const float *nol, const float *nov,
+                                          const float *lov, const float *alpha,
+                                          const float *albedo, size_t n);
 void facet_brdf_hammon_f32_batch(float *out, const float *nol, const float *nov, const float *lov,
                                  const float *alpha, const float *f0, const float *albedo, size_t n);
 void facet_lambert_f32_batch(float *out, const float *albedo, size_t n);
@@ -347,10 +463,18 @@ void facet_shade_hammon_rgb_f32_fast(float out[3], const facet_dirs_f32 *dirs,
  * relative error vs the oracle, measured over the precise tier's sweep on
  * every port, also with estimates at the architectural bound (worst:
  * avx512, e.g. smith_g2_uncorrelated 2^-12.43, brdf_hammon 2^-13.00),
- * enforced by the same tests; all <= 2^-12. */
+ * enforced by the same tests; all <= 2^-12.  fresnel_cook_torrance refines
+ * fully in both tiers (its F goes as the fourth power of a rooted term);
+ * fresnel_schlick_f90 has no reciprocal.  Measured (3 M samples, avx512,
+ * the worst port): diffuse_burley 2^-13.55, diffuse_oren_nayar 2^-14.17,
+ * diffuse_hammon_hybrid 2^-13.47, diffuse_hammon_cheap 2^-13.42; with
+ * estimates at the architectural bound (tests/suites/15-worst-estimates.sh,
+ * 30 k samples) at most 2^-13.01 (hybrid and cheap, avx512). */
 #define FACET_ERR_NOH_FROM_DOTS_F32_FAST          8.632e-05 /* 2^-13.5 */
 #define FACET_ERR_LOH_FROM_DOTS_F32_FAST          8.632e-05 /* 2^-13.5 */
 #define FACET_ERR_FRESNEL_SCHLICK_F32_FAST        4.769e-07 /* 2^-21 */
+#define FACET_ERR_FRESNEL_COOK_TORRANCE_F32_FAST  1.907e-06 /* 2^-19 */
+#define FACET_ERR_FRESNEL_SCHLICK_F90_F32_FAST    4.769e-07 /* 2^-21 */
 #define FACET_ERR_GGX_D_F32_FAST                  1.726e-04 /* 2^-12.5 */
 #define FACET_ERR_SMITH_G1_F32_FAST               1.726e-04 /* 2^-12.5 */
 #define FACET_ERR_SMITH_G2_F32_FAST               1.726e-04 /* 2^-12.5 */
@@ -360,12 +484,18 @@ void facet_shade_hammon_rgb_f32_fast(float out[3], const facet_dirs_f32 *dirs,
 #define FACET_ERR_SMITH_G2_HAMMON_F32_FAST        8.632e-05 /* 2^-13.5 */
 #define FACET_ERR_SMITH_VIS_HAMMON_F32_FAST       8.632e-05 /* 2^-13.5 */
 #define FACET_ERR_DIFFUSE_HAMMON_F32_FAST         1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_DIFFUSE_BURLEY_F32_FAST         1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_DIFFUSE_OREN_NAYAR_F32_FAST     1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32_FAST  1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32_FAST   1.726e-04 /* 2^-12.5 */
 #define FACET_ERR_BRDF_HAMMON_F32_FAST            1.726e-04 /* 2^-12.5 */
 #define FACET_ERR_LAMBERT_F32_FAST                1.686e-07 /* 2^-22.5 */
 
 float facet_noh_from_dots_f32_fast(float nol, float nov, float lov);
 float facet_loh_from_dots_f32_fast(float lov);
 float facet_fresnel_schlick_f32_fast(float f0, float cos_theta);
+float facet_fresnel_cook_torrance_f32_fast(float f0, float voh);
+float facet_fresnel_schlick_f90_f32_fast(float f0, float f90, float voh);
 float facet_ggx_d_f32_fast(float noh, float alpha);
 float facet_smith_g1_f32_fast(float nov, float alpha);
 float facet_smith_g2_f32_fast(float nol, float nov, float alpha);
@@ -375,6 +505,12 @@ float facet_smith_g1_hammon_f32_fast(float nov, float alpha);
 float facet_smith_g2_hammon_f32_fast(float nol, float nov, float alpha);
 float facet_smith_vis_hammon_f32_fast(float nol, float nov, float alpha);
 float facet_diffuse_hammon_f32_fast(float nol, float nov, float lov, float alpha, float albedo);
+float facet_diffuse_burley_f32_fast(float nol, float nov, float loh, float alpha, float albedo);
+float facet_diffuse_oren_nayar_f32_fast(float nol, float nov, float lov, float alpha, float albedo);
+float facet_diffuse_hammon_hybrid_f32_fast(float nol, float nov, float lov, float alpha,
+                                           float albedo);
+float facet_diffuse_hammon_cheap_f32_fast(float nol, float nov, float lov, float alpha,
+                                          float albedo);
 float facet_brdf_hammon_f32_fast(float nol, float nov, float lov, float alpha,
                             float f0, float albedo);
 float facet_lambert_f32_fast(float albedo);
@@ -384,6 +520,10 @@ void facet_noh_from_dots_f32_fast_batch(float *out, const float *nol, const floa
                                    const float *lov, size_t n);
 void facet_loh_from_dots_f32_fast_batch(float *out, const float *lov, size_t n);
 void facet_fresnel_schlick_f32_fast_batch(float *out, const float *f0, const float *cos_theta, size_t n);
+void facet_fresnel_cook_torrance_f32_fast_batch(float *out, const float *f0, const float *voh,
+                                                size_t n);
+void facet_fresnel_schlick_f90_f32_fast_batch(float *out, const float *f0, const float *f90,
+                                              const float *voh, size_t n);
 void facet_ggx_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
 void facet_smith_g1_f32_fast_batch(float *out, const float *nov, const float *alpha, size_t n);
 void facet_smith_g2_f32_fast_batch(float *out, const float *nol, const float *nov, const float *alpha,
@@ -400,6 +540,18 @@ void facet_smith_vis_hammon_f32_fast_batch(float *out, const float *nol, const f
 void facet_diffuse_hammon_f32_fast_batch(float *out, const float *nol, const float *nov,
                                     const float *lov, const float *alpha, const float *albedo,
                                     size_t n);
+void facet_diffuse_burley_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                         const float *loh, const float *alpha,
+                                         const float *albedo, size_t n);
+void facet_diffuse_oren_nayar_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                             const float *lov, const float *alpha,
+                                             const float *albedo, size_t n);
+void facet_diffuse_hammon_hybrid_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                                const float *lov, const float *alpha,
+                                                const float *albedo, size_t n);
+void facet_diffuse_hammon_cheap_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                               const float *lov, const float *alpha,
+                                               const float *albedo, size_t n);
 void facet_brdf_hammon_f32_fast_batch(float *out, const float *nol, const float *nov, const float *lov,
                                  const float *alpha, const float *f0, const float *albedo, size_t n);
 void facet_lambert_f32_fast_batch(float *out, const float *albedo, size_t n);

@@ -201,6 +201,45 @@ double facet_oracle_fresnel_schlick(double f0, double cos_theta)
     return fresnel_y(f0, 1.0 - unitd(cos_theta));
 }
 
+/* Schlick with a free grazing value: f0 + (f90 - f0)(1 - c)^5, as the
+ * convex combination f0 (1 - (1 - c)^5) + f90 (1 - c)^5 (no cancellation
+ * when f90 < f0; 1 - (1 - c)^5 by expm1/log1p at small c) */
+static double one_minus_pow5(double x);
+
+double facet_oracle_fresnel_schlick_f90(double f0, double f90, double voh)
+{
+    double c = unitd(voh);
+    return unitd(f0) * one_minus_pow5(c) + unitd(f90) * pow(1.0 - c, 5.0);
+}
+
+/* The Fresnel equations of a dielectric interface (relative index eta > 1,
+ * light from the outside), unpolarised: with Snell's law for the refracted
+ * cosine ct = sqrt(eta^2 - 1 + c^2) / eta,
+ *   rs = (c - eta ct) / (c + eta ct),  rp = (ct - eta c) / (ct + eta c),
+ *   F = (rs^2 + rp^2) / 2,
+ * and eta from f0 = ((eta - 1)/(eta + 1))^2.  The numerators are differences
+ * of nearly equal terms where eta -> 1 (f0 -> 0), so they are formed from
+ * their difference of squares, with m = eta^2 - 1 = 4 sqrt(f0) / (1 -
+ * sqrt(f0))^2 (m = 4 s (1 + s)^2 / (1 - f0)^2, s = sqrt f0):
+ *   c^2 - eta^2 ct^2 = -m,  ct^2 - eta^2 c^2 = m (1 - (m + 2) c^2) / eta^2,
+ * so rs = -m / (c + w)^2, rp = m (1 - (m + 2) c^2) / (w + (1 + m) c)^2 with
+ * w = eta ct = sqrt(m + c^2).  f0 = 1 (eta infinite): F = 1; f0 = 0 (eta =
+ * 1, no interface): F = 0, also at c = 0. */
+double facet_oracle_fresnel_cook_torrance(double f0, double voh)
+{
+    double f = unitd(f0), c = unitd(voh), s, m, w, rs, rp;
+    if (f >= 1.0)
+        return 1.0;
+    if (f <= 0.0)
+        return 0.0;
+    s = sqrt(f);
+    m = 4.0 * s * (1.0 + s) * (1.0 + s) / ((1.0 - f) * (1.0 - f));
+    w = sqrt(m + c * c);
+    rs = -m / ((c + w) * (c + w));
+    rp = m * (1.0 - (m + 2.0) * c * c) / ((w + (1.0 + m) * c) * (w + (1.0 + m) * c));
+    return 0.5 * (rs * rs + rp * rp);
+}
+
 /* D(m) = alpha^2 / (pi cos^4(theta_m) (alpha^2 + tan^2(theta_m))^2) */
 double facet_oracle_ggx_d_tan2(double tan2_h, double cos_h, double alpha)
 {
@@ -300,6 +339,69 @@ double facet_oracle_diffuse_hammon(double nol, double nov, double lov, double al
 {
     facet_oracle_geom g = facet_oracle_geometry(nol, nov, lov);
     return diffuse_from_geom(&g, alpha, albedo);
+}
+
+/* Burley: albedo / pi (1 + (f_d90 - 1)(1 - N.L)^5)(1 + (f_d90 - 1)(1 - N.V)^5),
+ * f_d90 = 0.5 + 2 roughness L.H^2 with Disney's roughness = sqrt(alpha) */
+double facet_oracle_diffuse_burley(double nol, double nov, double loh, double alpha,
+                                   double albedo)
+{
+    double nl = cosd(nol), nv = cosd(nov), lh = unitd(loh), a = alphad(alpha);
+    double fd90 = 0.5 + 2.0 * sqrt(a) * lh * lh;
+    return unitd(albedo) / PI * (1.0 + (fd90 - 1.0) * pow(1.0 - nl, 5.0))
+           * (1.0 + (fd90 - 1.0) * pow(1.0 - nv, 5.0));
+}
+
+/* Oren-Nayar's qualitative model, sigma = alpha / 2, from the angles:
+ * theta = acos of each cosine, the azimuth difference from L.V = cos cos +
+ * sin sin cos(phi) (unclamped: inconsistent triples extend it), and
+ * albedo / pi (A + B max(0, cos phi) sin(theta_max) tan(theta_min)).
+ * With L or V along N (a sine 0) the azimuth is undefined and the term is
+ * the limit of the definition's product, max(0, L.V - N.L N.V) / max(N.L, N.V)
+ * (0 for consistent dots). */
+double facet_oracle_diffuse_oren_nayar(double nol, double nov, double lov, double alpha,
+                                       double albedo)
+{
+    double nl = cosd(nol), nv = cosd(nov), lv = clampd(lov, -1.0, 1.0), a = alphad(alpha);
+    double sigma2 = 0.25 * a * a;
+    double A = 1.0 - 0.5 * sigma2 / (sigma2 + 0.33), B = 0.45 * sigma2 / (sigma2 + 0.09);
+    double tl = acos(nl), tv = acos(nv), sl = sin(tl), sv = sin(tv), term;
+    if (sl > 0.0 && sv > 0.0) {
+        double cphi = (lv - nl * nv) / (sl * sv);
+        term = (cphi > 0.0 ? cphi : 0.0) * sin(fmax(tl, tv)) * tan(fmin(tl, tv));
+    } else {
+        term = fmax(lv - nl * nv, 0.0) / fmax(nl, nv);
+    }
+    return unitd(albedo) / PI * (A + B * term);
+}
+
+/* Hammon's diffuse with the smooth term replaced (diffuse_from_geom's
+ * rough, single and multi) */
+static double diffuse_variant(const facet_oracle_geom *g, double alpha, double albedo,
+                              double smooth)
+{
+    double a = alphad(alpha), rho = unitd(albedo);
+    double facing = 0.5 * g->t;
+    double rough = facing * (0.9 - 0.4 * facing) * ((0.5 + g->n_h) / g->n_h);
+    double single = ((1.0 - a) * smooth + a * rough) / PI;
+    return rho * (single + rho * 0.1159 * a);
+}
+
+/* hybrid: smooth = Disney's two factors at f_d90 = 0.5 */
+double facet_oracle_diffuse_hammon_hybrid(double nol, double nov, double lov, double alpha,
+                                          double albedo)
+{
+    facet_oracle_geom g = facet_oracle_geometry(nol, nov, lov);
+    double smooth = (1.0 - 0.5 * pow(1.0 - g.n_l, 5.0)) * (1.0 - 0.5 * pow(1.0 - g.n_v, 5.0));
+    return diffuse_variant(&g, alpha, albedo, smooth);
+}
+
+/* cheaper: smooth = 1 (Lambert) */
+double facet_oracle_diffuse_hammon_cheap(double nol, double nov, double lov, double alpha,
+                                         double albedo)
+{
+    facet_oracle_geom g = facet_oracle_geometry(nol, nov, lov);
+    return diffuse_variant(&g, alpha, albedo, 1.0);
 }
 
 double facet_oracle_brdf_hammon(double nol, double nov, double lov, double alpha,

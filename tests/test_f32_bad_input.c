@@ -126,6 +126,52 @@ int main(void)
         CHECK(facet_lambert_f32(1.0f) == (float)(1.0 / M_PI), "lambert(1) = 1/pi");
         CHECK(facet_diffuse_hammon_f32(0.5f, 0.5f, 0.0f, 0.5f, 0.0f) == 0.0f, "diffuse: albedo 0 gives 0");
     }
+    /* named points of the Fresnel and diffuse menu, both tiers */
+    {
+        static const float vals[] = { 0.0f, 1e-30f, 0.02f, 0.04f, 0.5f, 0.9f, 0.99999994f, 1.0f };
+        const int nv_ = (int)(sizeof vals / sizeof vals[0]);
+        int i, j, tier;
+        for (tier = 0; tier < 2; tier++) {
+            float (*f90)(float, float, float) = tier ? facet_fresnel_schlick_f90_f32_fast : facet_fresnel_schlick_f90_f32;
+            float (*ct)(float, float) = tier ? facet_fresnel_cook_torrance_f32_fast : facet_fresnel_cook_torrance_f32;
+            float (*bu)(float, float, float, float, float) = tier ? facet_diffuse_burley_f32_fast : facet_diffuse_burley_f32;
+            float (*on)(float, float, float, float, float) = tier ? facet_diffuse_oren_nayar_f32_fast : facet_diffuse_oren_nayar_f32;
+            float (*hy)(float, float, float, float, float) = tier ? facet_diffuse_hammon_hybrid_f32_fast : facet_diffuse_hammon_hybrid_f32;
+            float (*ch)(float, float, float, float, float) = tier ? facet_diffuse_hammon_cheap_f32_fast : facet_diffuse_hammon_cheap_f32;
+            double bound = tier ? FACET_ERR_FRESNEL_COOK_TORRANCE_F32_FAST : FACET_ERR_FRESNEL_COOK_TORRANCE_F32;
+            for (i = 0; i < nv_; i++) {
+                float x = vals[i];
+                for (j = 0; j < nv_; j++) {
+                    float y = vals[j];
+                    CHECK(f90(x, y, 1.0f) == x, "schlick_f90(f0 %g, f90 %g, 1) = f0 (tier %d)", x, y, tier);
+                    CHECK(f90(x, y, 0.0f) == y, "schlick_f90(f0 %g, f90 %g, 0) = f90 (tier %d)", x, y, tier);
+                    /* Cook-Torrance: F(0, c) = 0, F(1, c) = 1 exactly */
+                    CHECK(ct(0.0f, y) == 0.0f, "cook_torrance(0, %g) = 0 (tier %d)", y, tier);
+                    CHECK(ct(1.0f, y) == 1.0f, "cook_torrance(1, %g) = 1 (tier %d)", y, tier);
+                    /* L = V = N: Burley and Hammon's cheap and hybrid forms, Oren-Nayar's A */
+                    CHECK(same(bu(1.0f, 1.0f, y, x, x), facet_lambert_f32(x)),
+                          "burley at N.L = N.V = 1 is lambert (alpha %g, albedo %g)", x, x);
+                    CHECK(same(hy(1.0f, 1.0f, 1.0f, x, y), ch(1.0f, 1.0f, 1.0f, x, y)),
+                          "hybrid = cheap at N.L = N.V = 1 (alpha %g, albedo %g)", x, y);
+                }
+                if (x > 0.0f) {
+                    float f1 = ct(x, 1.0f), fz = ct(x, 0.0f);
+                    CHECK(fabs(f1 - x) <= bound * x, "cook_torrance(%g, 1) = %.9g, not f0 (tier %d)", x, f1, tier);
+                    CHECK(fabs(fz - 1.0) <= bound, "cook_torrance(%g, 0) = %.9g, not 1 (tier %d)", x, fz, tier);
+                }
+                {
+                    double s2 = 0.25 * fmax(x, FACET_ALPHA_MIN) * fmax(x, FACET_ALPHA_MIN);
+                    double want = (1.0 - 0.5 * s2 / (s2 + 0.33)) / M_PI;
+                    float got = on(1.0f, 1.0f, 1.0f, x, 1.0f);
+                    CHECK(fabs(got - want) <= 2.0 * FACET_ERR_DIFFUSE_OREN_NAYAR_F32_FAST * want,
+                          "oren_nayar at L = V = N: A / pi (alpha %g): %.9g vs %.9g", x, got, want);
+                }
+                CHECK(bu(0.3f, 0.6f, 0.5f, x, 0.0f) == 0.0f && on(0.3f, 0.6f, 0.5f, x, 0.0f) == 0.0f &&
+                      hy(0.3f, 0.6f, 0.5f, x, 0.0f) == 0.0f && ch(0.3f, 0.6f, 0.5f, x, 0.0f) == 0.0f,
+                      "diffuse models: albedo 0 gives 0 (alpha %g)", x);
+            }
+        }
+    }
     /* the RGB form is the scalar kernel per channel */
     {
         int i, bad_rgb = 0;

@@ -20,9 +20,17 @@ expect "ties up: 0.5/32768 -> raw 1" "1" "$(echo '0.0000152587890625 1' | $facet
 expect "out of range clamps" "$(echo '1 1' | $facet eval smith_g1 --format fx --raw)" "$(echo '7 1e9' | $facet eval smith_g1 --format fx --raw)"
 
 $facet list > "$tmp/list"
+$facet list --formats > "$tmp/formats"
+expect "lambert has no fixed-point version" "lambert f32 f32_fast" "$(grep '^lambert ' "$tmp/formats")"
 while read -r name rest; do
     n=$(echo $rest | wc -w)
-    [ "$name" = lambert ] && continue # not in the fx table (not a core kernel)
+    if ! grep -qE "^$name .* fx( |$)" "$tmp/formats"; then
+        # no fixed-point version (lambert, the f32-only menu kernels): refused
+        case "$rest" in *'->'*) continue ;; esac
+        echo "$(yes 0.5 | head -n "$n" | tr '\n' ' ')" | $facet eval "$name" --format fx > /dev/null 2>&1
+        expect "eval $name --format fx refused (no fixed-point version)" 2 $?
+        continue
+    fi
     case "$rest" in *'->'*) continue ;; esac # a sampler (f32 only)
     line=$(yes 0.5 | head -n "$n" | tr '\n' ' ')
     out=$(echo "$line" | $facet eval "$name" --format fx); rc=$?

@@ -468,6 +468,208 @@ static void check_smooth_diffuse(void)
            worst_pt);
 }
 
+/* ---- 4b. Fresnel: the exact dielectric reference and Schlick's error ------
+ * The oracle's fresnel_cook_torrance follows Snell's law and the Fresnel
+ * equations (rs, rp); Cook and Torrance's closed form in g = sqrt(eta^2 - 1
+ * + c^2), evaluated plainly, must give the same where it does not cancel
+ * (f0 in [0.01, 0.98]).  Named points, and the model error of Schlick
+ * (fresnel_schlick) against it over the domain: the numbers facet.h states. */
+#define MODEL_MAX2 0.9988
+#define MODEL_MEAN2 0.1054
+static double ct_plain(double f0, double c)
+{
+    double s = sqrt(f0), eta = (1.0 + s) / (1.0 - s), g = sqrt(eta * eta - 1.0 + c * c);
+    double a = (g - c) / (g + c), b = ((g + c) * c - 1.0) / ((g - c) * c + 1.0);
+    return 0.5 * a * a * (1.0 + b * b);
+}
+
+/* model error of an approximation against the exact Fresnel over a grid of
+ * f0 in [lo, hi] (log-spaced) and V.H in [0, 1] (uniform, 2001 points) */
+static void fresnel_model_error(double lo, double hi, double *mx, double *mean, double *at_f0,
+                                double *at_c)
+{
+    int i, j, nf = 401, nc = 2001;
+    double sum = 0.0;
+    *mx = 0.0;
+    for (i = 0; i < nf; i++) {
+        double f0 = lo * pow(hi / lo, (double)i / (nf - 1));
+        for (j = 0; j < nc; j++) {
+            double c = (double)j / (nc - 1);
+            double ex = facet_oracle_fresnel_cook_torrance(f0, c);
+            double e = fabs(facet_oracle_fresnel_schlick(f0, c) - ex) / ex;
+            sum += e;
+            if (e > *mx) {
+                *mx = e;
+                *at_f0 = f0;
+                *at_c = c;
+            }
+        }
+    }
+    *mean = sum / ((double)nf * nc);
+}
+
+static void check_fresnel(void)
+{
+    static const double f0s[] = {1e-30, 1e-9, 0.02, 0.04, 0.5, 0.9, 1.0 - 0x1p-24};
+    double worst = 0.0, mx, mean, af, ac;
+    int i, j;
+    size_t k;
+    printf("4b. Fresnel: exact dielectric (Snell + Fresnel equations) vs Cook-Torrance's g form\n");
+    for (i = 0; i <= 100; i++)
+        for (j = 0; j <= 100; j++) {
+            double f0 = 0.01 + 0.97 * i / 100.0, c = 0.01 + 0.99 * j / 100.0;
+            worst = fmax(worst, rel_err(facet_oracle_fresnel_cook_torrance(f0, c), ct_plain(f0, c)));
+        }
+    printf("   max rel difference %.3g (tol 1e-12) over f0 in [0.01, 0.98], V.H in [0.01, 1]\n", worst);
+    CHECK(worst <= 1e-12, "fresnel_cook_torrance oracle vs Cook-Torrance's form: %.3g", worst);
+    for (k = 0; k < sizeof f0s / sizeof f0s[0]; k++) {
+        double f1 = facet_oracle_fresnel_cook_torrance(f0s[k], 1.0);
+        double fz = facet_oracle_fresnel_cook_torrance(f0s[k], 0.0);
+        CHECK(rel_err(f1, f0s[k]) <= 1e-14, "F_exact(%.17g, 1) = %.17g, not f0", f0s[k], f1);
+        CHECK(rel_err(fz, 1.0) <= 1e-14, "F_exact(%.17g, 0) = %.17g, not 1", f0s[k], fz);
+        /* a dielectric's unpolarised F never exceeds 1 */
+        for (j = 0; j <= 1000; j++) {
+            double f = facet_oracle_fresnel_cook_torrance(f0s[k], j / 1000.0);
+            CHECK(f >= 0.0 && f <= 1.0 + 1e-15, "F_exact(%g, %g) = %.17g outside [0, 1]", f0s[k], j / 1000.0, f);
+        }
+    }
+    CHECK(facet_oracle_fresnel_cook_torrance(0.0, 0.5) == 0.0 && facet_oracle_fresnel_cook_torrance(0.0, 0.0) == 0.0,
+          "F_exact(0, c) = 0 (eta = 1)");
+    CHECK(facet_oracle_fresnel_cook_torrance(1.0, 0.5) == 1.0 && facet_oracle_fresnel_cook_torrance(1.0, 0.0) == 1.0,
+          "F_exact(1, c) = 1 (eta infinite)");
+    /* fresnel_schlick_f90 at f90 = 1 is Schlick */
+    worst = 0.0;
+    for (i = 0; i <= 200; i++)
+        for (j = 0; j <= 200; j++) {
+            double f0 = i / 200.0, c = j / 200.0;
+            worst = fmax(worst, rel_err(facet_oracle_fresnel_schlick_f90(f0, 1.0, c),
+                                        facet_oracle_fresnel_schlick(f0, c)));
+        }
+    printf("   schlick_f90(f0, 1, c) vs schlick(f0, c): max rel %.3g (tol 1e-14)\n", worst);
+    CHECK(worst <= 1e-14, "fresnel_schlick_f90 at f90 = 1 differs from fresnel_schlick: %.3g", worst);
+    /* model error of Schlick (facet.h, fresnel_cook_torrance's contract) */
+    fresnel_model_error(0.02, 0.1, &mx, &mean, &af, &ac);
+    printf("   model error of fresnel_schlick vs exact, f0 in [0.02, 0.1] (dielectrics, eta 1.33 .. 1.92):\n"
+           "     max rel %.4f at (f0 %.4g, V.H %.4g), mean rel %.5f\n", mx, af, ac, mean);
+    CHECK(fabs(mx - 0.2357) < 0.0005 && fabs(mean - 0.0943) < 0.0005,
+          "Schlick model error on dielectrics: max %.4f, mean %.5f (facet.h: 0.2357, 0.0943)", mx, mean);
+    fresnel_model_error(0.02, 0.999, &mx, &mean, &af, &ac);
+    printf("   f0 in [0.02, 0.999]: max rel %.4f at (f0 %.4g, V.H %.4g), mean rel %.5f\n", mx, af, ac, mean);
+    CHECK(fabs(mx - MODEL_MAX2) < 0.0005 && fabs(mean - MODEL_MEAN2) < 0.0005,
+          "Schlick model error over f0 in [0.02, 0.999]: max %.4f, mean %.5f (facet.h: %g, %g)", mx, mean,
+          MODEL_MAX2, MODEL_MEAN2);
+}
+
+/* ---- 4c. white furnace: directional albedo of every diffuse model ---------
+ * a(V) = int f(L, V) N.L dw_L at albedo = 1 (Lambert: exactly 1), by
+ * Gauss-Legendre in mu = N.L (panels split at mu = N.V, where Oren-Nayar's
+ * max/min switch) and the midpoint rule in the azimuth (a multiple of 4
+ * points: Oren-Nayar's max(0, cos phi) kinks at +-pi/2 fall on cell
+ * edges).  Closed forms where they exist:
+ *   Burley at N.V = 1 (L.H^2 = (1 + mu)/2): 1 - 1/42 + 5 sqrt(alpha) / 84
+ *     (int (1-mu)^5 mu = 1/42, int (1-mu)^5 mu^2 = 1/168);
+ *   Oren-Nayar at N.V = 1 (its max(0, ..) term vanishes): A(alpha);
+ *   the smooth part of Hammon's hybrid (affine in alpha: extrapolated to
+ *   alpha = 0): (1 - (1 - N.V)^5 / 2)(1 - 1/42); of the cheap one: 1. */
+typedef double (*diffuse_fn)(double, double, double, double, double);
+
+static double burley_lv(double nl, double nv, double lv, double a, double rho)
+{
+    return facet_oracle_diffuse_burley(nl, nv, sqrt(0.5 * (1.0 + lv)), a, rho);
+}
+
+static double lambert5(double nl, double nv, double lv, double a, double rho)
+{
+    (void)nl; (void)nv; (void)lv; (void)a;
+    return facet_oracle_lambert(rho);
+}
+
+static double dir_albedo(diffuse_fn f, double nv, double a, int nmu, int nphi)
+{
+    double sv = sqrt((1.0 - nv) * (1.0 + nv)), sum = 0.0, bp[3];
+    int p, i, ip;
+    gl_rule r, rp;
+    gl_make(&r, nmu);
+    gl_make(&rp, nphi);
+    /* over theta_l (mu = cos, the integrand smooth in it), split at theta_v */
+    bp[0] = 0.0;
+    bp[1] = acos(nv);
+    bp[2] = 0.5 * M_PI;
+    for (p = 0; p < 2; p++) {
+        double lo = bp[p], hi = bp[p + 1];
+        if (hi <= lo)
+            continue;
+        for (i = 0; i < r.n; i++) {
+            double th = lo + (hi - lo) * 0.5 * (1.0 + r.x[i]), mu = cos(th), sl = sin(th), row = 0.0;
+            /* the azimuth: Gauss-Legendre on [0, pi/2] and [pi/2, pi] (the
+             * integrand is even in phi; Oren-Nayar's max(0, cos phi) kinks
+             * at pi/2) */
+            for (ip = 0; ip < 2 * rp.n; ip++) {
+                double phi = 0.25 * M_PI * (1.0 + rp.x[ip % rp.n]) + (ip < rp.n ? 0.0 : 0.5 * M_PI);
+                row += 0.25 * M_PI * rp.w[ip % rp.n]
+                       * f(fmax(mu, FACET_COS_MIN), nv, fmin(fmax(mu * nv + sl * sv * cos(phi), -1.0), 1.0), a, 1.0);
+            }
+            sum += 0.5 * (hi - lo) * r.w[i] * mu * sl * 2.0 * row;
+        }
+    }
+    return sum;
+}
+
+static void check_diffuse_furnace(void)
+{
+    static const struct { const char *name; diffuse_fn f; } m[] = {
+        { "lambert", lambert5 }, { "diffuse_hammon", facet_oracle_diffuse_hammon },
+        { "diffuse_burley", burley_lv }, { "diffuse_oren_nayar", facet_oracle_diffuse_oren_nayar },
+        { "diffuse_hammon_hybrid", facet_oracle_diffuse_hammon_hybrid },
+        { "diffuse_hammon_cheap", facet_oracle_diffuse_hammon_cheap },
+    };
+    static const double nvs[] = {1.0, 0.5, 0.1, 0.01};
+    static const double as[] = {FACET_ALPHA_MIN, 0.25, 0.5, 1.0};
+    double worst_q = 0.0;
+    size_t i, j, l;
+    int nphi = 24;
+    printf("4c. white furnace: directional albedo (albedo = 1) per diffuse model; rows N.V, columns alpha\n");
+    for (i = 0; i < sizeof m / sizeof m[0]; i++) {
+        double lo = INFINITY, hi = -INFINITY;
+        printf("   %-22s", m[i].name);
+        for (j = 0; j < sizeof nvs / sizeof nvs[0]; j++) {
+            printf("%s N.V %-4g:", j ? "\n                         " : "", nvs[j]);
+            for (l = 0; l < sizeof as / sizeof as[0]; l++) {
+                double v = dir_albedo(m[i].f, nvs[j], as[l], 20, nphi);
+                double v2 = dir_albedo(m[i].f, nvs[j], as[l], 32, 32);
+                worst_q = fmax(worst_q, fabs(v - v2));
+                printf(" %.4f", v2);
+                lo = fmin(lo, v2);
+                hi = fmax(hi, v2);
+                if (i == 0)
+                    CHECK(fabs(v2 - 1.0) <= 1e-12, "Lambert albedo %.17g, not 1", v2);
+                if (nvs[j] == 1.0 && !strcmp(m[i].name, "diffuse_burley")) {
+                    double want = 1.0 - 1.0 / 42.0 + 5.0 * sqrt(as[l]) / 84.0;
+                    CHECK(fabs(v2 - want) <= 1e-10, "Burley albedo at N.V = 1, alpha %g: %.15f vs %.15f", as[l], v2, want);
+                }
+                if (nvs[j] == 1.0 && !strcmp(m[i].name, "diffuse_oren_nayar")) {
+                    double s2 = 0.25 * as[l] * as[l], want = 1.0 - 0.5 * s2 / (s2 + 0.33);
+                    CHECK(fabs(v2 - want) <= 1e-10, "Oren-Nayar albedo at N.V = 1, alpha %g: %.15f vs A = %.15f", as[l], v2, want);
+                }
+            }
+        }
+        printf("\n   %-22s range over these: [%.4f, %.4f]\n", "", lo, hi);
+    }
+    /* the smooth parts of Hammon's variants, extrapolated to alpha = 0 */
+    for (j = 0; j < sizeof nvs / sizeof nvs[0]; j++) {
+        double a1 = FACET_ALPHA_MIN;
+        double hy = 2.0 * dir_albedo(facet_oracle_diffuse_hammon_hybrid, nvs[j], a1, 32, nphi)
+                    - dir_albedo(facet_oracle_diffuse_hammon_hybrid, nvs[j], 2.0 * a1, 32, nphi);
+        double ch = 2.0 * dir_albedo(facet_oracle_diffuse_hammon_cheap, nvs[j], a1, 32, nphi)
+                    - dir_albedo(facet_oracle_diffuse_hammon_cheap, nvs[j], 2.0 * a1, 32, nphi);
+        double want = (1.0 - 0.5 * pow(1.0 - nvs[j], 5.0)) * (1.0 - 1.0 / 42.0);
+        CHECK(fabs(hy - want) <= 1e-9, "hybrid smooth albedo at N.V = %g: %.15f vs %.15f", nvs[j], hy, want);
+        CHECK(fabs(ch - 1.0) <= 1e-9, "cheap smooth albedo at N.V = %g: %.15f vs 1", nvs[j], ch);
+    }
+    printf("   quadrature: 20 vs 32 nodes per panel: max difference %.3g (tol 1e-5)\n", worst_q);
+    CHECK(worst_q <= 1e-5, "furnace quadrature not converged: %.3g", worst_q);
+}
+
 /* ---- random geometry in double -------------------------------------------- */
 
 /* a cosine in [2^-20, 1]: uniform, log-uniform (grazing), or close to 1 */
@@ -501,7 +703,8 @@ static void rnd_triple(smp_rng *r, double *nl, double *nv, double *lv)
 /* ---- 5. reciprocity: every (nol, nov, ...) term is symmetric in L and V --- */
 static const char *const sym_names[] = {
     "noh_from_dots", "smith_g2", "smith_g2_uncorrelated", "smith_vis", "smith_g2_hammon",
-    "smith_vis_hammon", "diffuse_hammon", "brdf_hammon",
+    "smith_vis_hammon", "diffuse_hammon", "brdf_hammon", "diffuse_burley", "diffuse_oren_nayar",
+    "diffuse_hammon_hybrid", "diffuse_hammon_cheap",
 };
 
 static int input_index(const facet_kernel *k, const char *name)
@@ -1061,6 +1264,8 @@ int main(void)
     check_smith_lambda();
     check_smith_constraint();
     check_smooth_diffuse();
+    check_fresnel();
+    check_diffuse_furnace();
     check_symmetry();
     check_correlated_ge();
     check_geometry();

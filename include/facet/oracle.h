@@ -55,6 +55,10 @@ facet_oracle_geom facet_oracle_geometry(double nol, double nov, double lov);
 double facet_oracle_noh_from_dots(double nol, double nov, double lov);
 double facet_oracle_loh_from_dots(double lov);
 double facet_oracle_fresnel_schlick(double f0, double cos_theta);
+/* exact dielectric Fresnel (Snell + the Fresnel equations, unpolarised),
+ * eta from f0; fresnel_schlick with f90 */
+double facet_oracle_fresnel_cook_torrance(double f0, double voh);
+double facet_oracle_fresnel_schlick_f90(double f0, double f90, double voh);
 double facet_oracle_ggx_d(double noh, double alpha);
 /* D from tan^2(theta_h) directly (the accurate form near the peak) */
 double facet_oracle_ggx_d_tan2(double tan2_h, double cos_h, double alpha);
@@ -68,6 +72,14 @@ double facet_oracle_smith_g2_hammon(double nol, double nov, double alpha);
 double facet_oracle_smith_vis_hammon(double nol, double nov, double alpha);
 double facet_oracle_diffuse_hammon(double nol, double nov, double lov, double alpha,
                                    double albedo);
+double facet_oracle_diffuse_burley(double nol, double nov, double loh, double alpha,
+                                   double albedo);
+double facet_oracle_diffuse_oren_nayar(double nol, double nov, double lov, double alpha,
+                                       double albedo);
+double facet_oracle_diffuse_hammon_hybrid(double nol, double nov, double lov, double alpha,
+                                          double albedo);
+double facet_oracle_diffuse_hammon_cheap(double nol, double nov, double lov, double alpha,
+                                         double albedo);
 double facet_oracle_brdf_hammon(double nol, double nov, double lov, double alpha,
                                 double f0, double albedo);
 double facet_oracle_lambert(double albedo);

@@ -161,6 +161,76 @@ FACET_INLINE V_ FACET_K(fresnel_schlick)(V_ f0, V_ c)
     return NAN0_(X_FRESNEL_(X_UNIT_(f0), X_UNIT_(c)), f0, c);
 }
 
+/* ---- Fresnel: Schlick with f90, and the exact dielectric ------------------- */
+
+#define X_POW5_Y_ FACET_K(x_pow5_y)
+
+/* (1 - c)^5 with y = 1 - c carried as yh + yl (Fast2Sum, |1| >= |c|):
+ * y^5 ~ yh^4 (yh + 5 yl), so the rounding of 1 - c is not amplified. */
+FACET_INLINE V_ X_POW5_Y_(V_ c)
+{
+    V_ yh = SUB_(C_(1.0f), c);
+    V_ yl = SUB_(SUB_(C_(1.0f), yh), c);
+    V_ y2 = MUL_(yh, yh);
+    return MUL_(MUL_(y2, y2), FMA_(C_(5.0f), yl, yh));
+}
+
+/* f0 + (f90 - f0) (1 - c)^5 written as the convex combination
+ * f0 (1 - y^5) + f90 y^5 (y = 1 - c): two non-negative terms, so f90 < f0
+ * does not cancel, and 1 - y^5 = c (1 + y + ... + y^4) keeps its precision
+ * at c -> 0.  c = 1 gives f0, c = 0 gives f90, exactly. */
+FACET_INLINE V_ FACET_K(fresnel_schlick_f90)(V_ f0, V_ f90, V_ voh)
+{
+    V_ c = X_UNIT_(voh);
+    return FMA_(X_UNIT_(f90), X_POW5_Y_(c), MUL_(X_UNIT_(f0), X_ONE_MINUS_POW5_(c)));
+}
+
+/* Exact unpolarised Fresnel reflectance of a dielectric with relative index
+ * eta = (1 + sqrt f0) / (1 - sqrt f0) (from f0 = ((eta - 1)/(eta + 1))^2):
+ *   g = sqrt(eta^2 - 1 + c^2)
+ *   F = (1/2) ((g - c)/(g + c))^2 (1 + (((g + c) c - 1) / ((g - c) c + 1))^2).
+ * eta -> infinity as f0 -> 1, so everything is scaled by u = 1 - f0
+ * = (1 - s)(1 + s), s = sqrt f0 (eta^2 - 1 = 4 s / (1 - s)^2):
+ *   K = 4 s (1 + s)^2 = (eta^2 - 1) u^2,  G = g u = sqrt(K + (c u)^2),
+ *   P = G + c u = (g + c) u,  G - c u = K / P  (no cancellation at f0 -> 0),
+ *   r = (g - c)/(g + c) = K / P^2 in [0, 1],
+ *   q = ((g + c) c - 1) / ((g - c) c + 1) = P (P c - u) / E,  E = K c + u P,
+ *   F = r^2 (1 + q^2) / 2,
+ * with one reciprocal R = 1 / (P^2 E): 1 / P^2 = E R, q = (P c - u) P^3 R,
+ * and r^2 = K^2 (E R)^2 = 16 f0 (1 + s)^4 (E R)^2 (f0 itself, not the
+ * rounded s^2; multiplied in that order, no intermediate over- or
+ * underflows).
+ * P^2 E >= 2^-109 unless f0 = 0 (then K = 0 and F = 0: eta = 1, no
+ * interface) or f0 = 1 (F = 1 for every c, selected: eta = infinity, a
+ * perfect mirror, where P^2 E = 256 c vanishes at c = 0); it is floored at
+ * 2^-120 only to keep R finite at f0 = 0, c < 2^-40.  sqrt f0 is taken of
+ * f0 2^64 (exact; normal even for denormal f0), floored at 2^-100 so that
+ * f0 = 0 gives 0 * finite.  F(f0, 0) = 1 for f0 > 0, F(f0, 1) = f0.
+ * F goes as P^-4 (r^2, r = K / P^2) and as R^2 (1 + q^2), so an error of
+ * the estimates is multiplied by up to 4: both tiers refine fully
+ * (RSQRT_X5_, RCP_X5_), as brdf_hammon does for its fifth power. */
+FACET_INLINE V_ FACET_K(fresnel_cook_torrance)(V_ f0, V_ voh)
+{
+    V_ f = X_UNIT_(f0), c = X_UNIT_(voh);
+    V_ fs = MUL_(f, C_(0x1p64f));
+    V_ s = MUL_(MUL_(fs, RSQRT_X5_(MAX_(fs, C_(0x1p-100f)))), C_(0x1p-32f));
+    V_ s1 = ADD_(C_(1.0f), s);
+    V_ k = MUL_(MUL_(C_(4.0f), s), MUL_(s1, s1));
+    V_ u = SUB_(C_(1.0f), f);
+    V_ cu = MUL_(c, u);
+    V_ g2 = FMA_(cu, cu, k);
+    V_ p = ADD_(MUL_(g2, RSQRT_X5_(MAX_(g2, C_(0x1p-100f)))), cu);
+    V_ p2 = MUL_(p, p);
+    V_ e = FMA_(k, c, MUL_(u, p));
+    V_ rw = RCP_X5_(MAX_(MUL_(p2, e), C_(0x1p-120f)));
+    V_ er = MUL_(e, rw);                                   /* 1 / P^2 */
+    V_ s2 = MUL_(s1, s1);
+    V_ r2 = MUL_(MUL_(MUL_(MUL_(C_(16.0f), f), MUL_(s2, s2)), er), er);
+    V_ q = MUL_(MUL_(FMA_(p, c, SUB_(f, C_(1.0f))), p), MUL_(p2, rw));
+    V_ fr = MUL_(MUL_(C_(0.5f), r2), FMA_(q, q, C_(1.0f)));
+    return FACET_OP(sel_lt)(f, C_(1.0f), MIN_(fr, C_(1.0f)), C_(1.0f));
+}
+
 /* ---- GGX D ------------------------------------------------------------ */
 
 /* D = alpha^2 / (pi d^2), d = (1 - n^2) + (n alpha)^2 with 1 - n^2 as
@@ -301,6 +371,89 @@ FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ alb
                                  X_UNIT_(albedo));
     return NAN0_(MUL_(d, C_(FACET_INV_PI_)), nol, nov, lov, alpha, albedo);
 }
+
+/* ---- more diffuse models: Burley (Disney), Oren-Nayar, Hammon's variants ---- */
+
+/* Burley's diffuse ("Disney"), a BRDF value:
+ *   f_d90 = 0.5 + 2 r L.H^2, r = sqrt(alpha) (Disney's roughness slider,
+ *   whose square is the GGX alpha)
+ *   result = albedo / pi (1 + (f_d90 - 1)(1 - N.L)^5) (1 + (f_d90 - 1)(1 - N.V)^5)
+ * Each factor is >= 1/2 (f_d90 - 1 >= -1/2), so nothing cancels; the two
+ * factors are multiplied last, so swapping N.L and N.V gives the same bits. */
+FACET_INLINE V_ FACET_K(diffuse_burley)(V_ nol, V_ nov, V_ loh, V_ alpha, V_ albedo)
+{
+    V_ nl = X_COS_(nol), nv = X_COS_(nov), lh = X_UNIT_(loh), a = X_ALPHA_(alpha);
+    V_ r = MUL_(a, RSQRT_(a));
+    V_ k = FMA_(ADD_(r, r), MUL_(lh, lh), C_(-0.5f)); /* f_d90 - 1 */
+    V_ fl = FMA_(k, X_POW5_Y_(nl), C_(1.0f));
+    V_ fv = FMA_(k, X_POW5_Y_(nv), C_(1.0f));
+    return MUL_(MUL_(X_UNIT_(albedo), MUL_(fl, fv)), C_(FACET_INV_PI_));
+}
+
+/* Oren-Nayar's qualitative model with sigma = alpha / 2 (radians), as in
+ * Hammon's comparison:
+ *   A = 1 - 0.5 sigma^2 / (sigma^2 + 0.33),  B = 0.45 sigma^2 / (sigma^2 + 0.09)
+ *   result = albedo / pi (A + B max(0, cos(phi_l - phi_v)) sin(theta_max) tan(theta_min))
+ * without angles: with L.V = N.L N.V + sin(theta_l) sin(theta_v) cos(phi_l - phi_v),
+ *   cos(phi_l - phi_v) sin(theta_max) tan(theta_min)
+ *     = cos(phi) sin(theta_l) sin(theta_v) / cos(theta_min)
+ *     = (L.V - N.L N.V) / max(N.L, N.V),
+ * since theta_min has the larger cosine.  So, with q = sigma^2 = alpha^2 / 4,
+ *   pi result / albedo = A + B max(0, L.V - N.L N.V) / m,  m = max(N.L, N.V)
+ *     = ((0.5 q + 0.33)(q + 0.09) m + 0.45 q (q + 0.33) x) / ((q + 0.33)(q + 0.09) m),
+ * x = max(0, L.V - N.L N.V): positive terms, one reciprocal.  Inconsistent
+ * triples take the identity as it stands (x grows with L.V).  Largest at
+ * N.L = N.V = FACET_COS_MIN, L.V = 1: (A + B / FACET_COS_MIN) / pi. */
+FACET_INLINE V_ FACET_K(diffuse_oren_nayar)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
+{
+    V_ nl = X_COS_(nol), nv = X_COS_(nov), a = X_ALPHA_(alpha);
+    V_ q = MUL_(MUL_(C_(0.25f), a), a);
+    V_ m = MAX_(nl, nv);
+    V_ x = MAX_(FNMA_(nl, nv, X_LOV_(lov)), C_(0.0f));
+    V_ d1 = ADD_(q, C_(0.33f)), d2 = ADD_(q, C_(0.09f));
+    V_ na = MUL_(MUL_(FMA_(C_(0.5f), q, C_(0.33f)), d2), m);
+    V_ num = FMA_(MUL_(MUL_(C_(0.45f), q), d1), x, na);
+    V_ den = MUL_(MUL_(d1, d2), m);
+    return MUL_(MUL_(X_UNIT_(albedo), MUL_(num, RCP_(den))), C_(FACET_INV_PI_));
+}
+
+#define X_DIFFUSE_VARIANT_ FACET_K(x_diffuse_variant)
+
+/* Hammon's diffuse with another smooth term S (times 1 - alpha here):
+ *   pi result = albedo ((1 - alpha) S + alpha rough + albedo 0.1159 pi alpha),
+ * rough, t and N.H as diffuse_hammon (the raised t, 1 rsqrt, 1 rcp). */
+FACET_INLINE V_ X_DIFFUSE_VARIANT_(V_ nl, V_ nv, V_ lov, V_ a, V_ albedo, V_ smooth)
+{
+    V_ s = ADD_(nl, nv);
+    V_ t = MAX_(ADD_(C_(1.0f), X_LOV_(lov)), MUL_(C_(0.5f), MUL_(s, s)));
+    V_ nh = MIN_(MUL_(s, RSQRT_(ADD_(t, t))), C_(1.0f));
+    V_ h = MUL_(C_(0.5f), RCP_(nh));
+    V_ rough = MUL_(MUL_(t, FNMA_(C_(0.1f), t, C_(0.45f))), ADD_(C_(1.0f), h));
+    V_ single = FMA_(a, rough, MUL_(SUB_(C_(1.0f), a), smooth));
+    V_ alb = X_UNIT_(albedo);
+    V_ d = MUL_(alb, FMA_(alb, MUL_(C_(0.364110589f), a), single)); /* 0.1159 pi */
+    return MUL_(d, C_(FACET_INV_PI_));
+}
+
+/* Hammon's hybrid: smooth = Disney's with f_d90 = 1/2,
+ *   (1 - (1 - N.L)^5 / 2)(1 - (1 - N.V)^5 / 2)  (each factor >= 1/2),
+ * so at alpha = 0 it is Burley's diffuse at roughness 0. */
+FACET_INLINE V_ FACET_K(diffuse_hammon_hybrid)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
+{
+    V_ nl = X_COS_(nol), nv = X_COS_(nov);
+    V_ fl = FNMA_(C_(0.5f), X_POW5_Y_(nl), C_(1.0f));
+    V_ fv = FNMA_(C_(0.5f), X_POW5_Y_(nv), C_(1.0f));
+    return X_DIFFUSE_VARIANT_(nl, nv, lov, X_ALPHA_(alpha), albedo, MUL_(fl, fv));
+}
+
+/* Hammon's cheaper variant: smooth = 1 (Lambert). */
+FACET_INLINE V_ FACET_K(diffuse_hammon_cheap)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
+{
+    return X_DIFFUSE_VARIANT_(X_COS_(nol), X_COS_(nov), lov, X_ALPHA_(alpha), albedo, C_(1.0f));
+}
+
+#undef X_DIFFUSE_VARIANT_
+#undef X_POW5_Y_
 
 /* ---- the whole model ------------------------------------------------------ */
 
