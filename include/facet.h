@@ -121,7 +121,7 @@ float facet_fresnel_schlick_f32(float f0, float cos_theta);
  * both tiers are the same code with fully refined estimates.
  * Error: <= FACET_ERR_FRESNEL_COOK_TORRANCE_F32 (2^-19), both tiers; measured max
  * 2^-19.71 (worst port, 3 M samples) at (6.10115691e-08, 0.528173864).
- * Cost: 41 ops (2 rsqrt, 1 rcp). */
+ * Cost: 43 ops (2 rsqrt, 1 rcp). */
 float facet_fresnel_cook_torrance_f32(float f0, float voh);
 
 /* Schlick's Fresnel with a free grazing value (f90; fresnel_schlick is
@@ -132,7 +132,7 @@ float facet_fresnel_cook_torrance_f32(float f0, float voh);
  * No reciprocal or rsqrt: both tiers are the same code.
  * Error: <= FACET_ERR_FRESNEL_SCHLICK_F90_F32 (2^-21); measured max 2^-21.54 (worst port,
  * 3 M samples) at (2.63928523e-08, 0.999971151, 0.499411613).
- * Cost: 21 ops (0 rsqrt, 0 rcp). */
+ * Cost: 25 ops (0 rsqrt, 0 rcp). */
 float facet_fresnel_schlick_f90_f32(float f0, float f90, float voh);
 
 /* GGX / Trowbridge-Reitz normal distribution:
@@ -226,7 +226,7 @@ float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, flo
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.H, alpha, albedo.
  * Error: <= FACET_ERR_DIFFUSE_BURLEY_F32 (2^-20.5); measured max 2^-21.09 (worst port,
  * 3 M samples) at (0.00749915093, 0.00748796575, 0.00142297987, 0.191616133, 0.978153765).
- * Cost: 33 ops (1 rsqrt, 0 rcp). */
+ * Cost: 39 ops (1 rsqrt, 0 rcp). */
 float facet_diffuse_burley_f32(float nol, float nov, float loh, float alpha, float albedo);
 
 /* Oren-Nayar's qualitative diffuse with sigma = alpha / 2 (radians; the
@@ -244,7 +244,7 @@ float facet_diffuse_burley_f32(float nol, float nov, float loh, float alpha, flo
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, albedo.
  * Error: <= FACET_ERR_DIFFUSE_OREN_NAYAR_F32 (2^-20.5); measured max 2^-21.19 (worst port,
  * 3 M samples) at (0.0482582487, 0.0482582487, 1, 0.223686263, 2.82182633e-08).
- * Cost: 28 ops (0 rsqrt, 1 rcp). */
+ * Cost: 34 ops (0 rsqrt, 1 rcp). */
 float facet_diffuse_oren_nayar_f32(float nol, float nov, float lov, float alpha, float albedo);
 
 /* Hammon's hybrid diffuse: diffuse_hammon with the smooth term taken from
@@ -258,7 +258,7 @@ float facet_diffuse_oren_nayar_f32(float nol, float nov, float lov, float alpha,
  * Domain: as diffuse_hammon.
  * Error: <= FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32 (2^-20.5); measured max 2^-20.88 (worst port,
  * 3 M samples) at (0.000297121675, 2.25166241e-06, 0.855512679, 0.0379198343, 0.816826582).
- * Cost: 47 ops (1 rsqrt, 1 rcp). */
+ * Cost: 53 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_hybrid_f32(float nol, float nov, float lov, float alpha,
                                       float albedo);
 
@@ -269,7 +269,7 @@ float facet_diffuse_hammon_hybrid_f32(float nol, float nov, float lov, float alp
  * Domain: as diffuse_hammon.
  * Error: <= FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32 (2^-20.5); measured max 2^-20.86 (worst port,
  * 3 M samples) at (9.97556413e-07, 2.99169169e-05, -0.263197154, 0.189148799, 0.589178443).
- * Cost: 30 ops (1 rsqrt, 1 rcp). */
+ * Cost: 36 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_cheap_f32(float nol, float nov, float lov, float alpha,
                                      float albedo);
 

@@ -182,7 +182,7 @@ FACET_INLINE V_ X_POW5_Y_(V_ c)
 FACET_INLINE V_ FACET_K(fresnel_schlick_f90)(V_ f0, V_ f90, V_ voh)
 {
     V_ c = X_UNIT_(voh);
-    return FMA_(X_UNIT_(f90), X_POW5_Y_(c), MUL_(X_UNIT_(f0), X_ONE_MINUS_POW5_(c)));
+    return NAN0_(FMA_(X_UNIT_(f90), X_POW5_Y_(c), MUL_(X_UNIT_(f0), X_ONE_MINUS_POW5_(c))), f0, f90, voh);
 }
 
 /* Exact unpolarised Fresnel reflectance of a dielectric with relative index
@@ -228,7 +228,7 @@ FACET_INLINE V_ FACET_K(fresnel_cook_torrance)(V_ f0, V_ voh)
     V_ r2 = MUL_(MUL_(MUL_(MUL_(C_(16.0f), f), MUL_(s2, s2)), er), er);
     V_ q = MUL_(MUL_(FMA_(p, c, SUB_(f, C_(1.0f))), p), MUL_(p2, rw));
     V_ fr = MUL_(MUL_(C_(0.5f), r2), FMA_(q, q, C_(1.0f)));
-    return FACET_OP(sel_lt)(f, C_(1.0f), MIN_(fr, C_(1.0f)), C_(1.0f));
+    return NAN0_(FACET_OP(sel_lt)(f, C_(1.0f), MIN_(fr, C_(1.0f)), C_(1.0f)), f0, voh);
 }
 
 /* ---- GGX D ------------------------------------------------------------ */
@@ -387,7 +387,7 @@ FACET_INLINE V_ FACET_K(diffuse_burley)(V_ nol, V_ nov, V_ loh, V_ alpha, V_ alb
     V_ k = FMA_(ADD_(r, r), MUL_(lh, lh), C_(-0.5f)); /* f_d90 - 1 */
     V_ fl = FMA_(k, X_POW5_Y_(nl), C_(1.0f));
     V_ fv = FMA_(k, X_POW5_Y_(nv), C_(1.0f));
-    return MUL_(MUL_(X_UNIT_(albedo), MUL_(fl, fv)), C_(FACET_INV_PI_));
+    return NAN0_(MUL_(MUL_(X_UNIT_(albedo), MUL_(fl, fv)), C_(FACET_INV_PI_)), nol, nov, loh, alpha, albedo);
 }
 
 /* Oren-Nayar's qualitative model with sigma = alpha / 2 (radians), as in
@@ -414,7 +414,8 @@ FACET_INLINE V_ FACET_K(diffuse_oren_nayar)(V_ nol, V_ nov, V_ lov, V_ alpha, V_
     V_ na = MUL_(MUL_(FMA_(C_(0.5f), q, C_(0.33f)), d2), m);
     V_ num = FMA_(MUL_(MUL_(C_(0.45f), q), d1), x, na);
     V_ den = MUL_(MUL_(d1, d2), m);
-    return MUL_(MUL_(X_UNIT_(albedo), MUL_(num, RCP_(den))), C_(FACET_INV_PI_));
+    return NAN0_(MUL_(MUL_(X_UNIT_(albedo), MUL_(num, RCP_(den))), C_(FACET_INV_PI_)), nol, nov, lov, alpha,
+                 albedo);
 }
 
 #define X_DIFFUSE_VARIANT_ FACET_K(x_diffuse_variant)
@@ -443,13 +444,15 @@ FACET_INLINE V_ FACET_K(diffuse_hammon_hybrid)(V_ nol, V_ nov, V_ lov, V_ alpha,
     V_ nl = X_COS_(nol), nv = X_COS_(nov);
     V_ fl = FNMA_(C_(0.5f), X_POW5_Y_(nl), C_(1.0f));
     V_ fv = FNMA_(C_(0.5f), X_POW5_Y_(nv), C_(1.0f));
-    return X_DIFFUSE_VARIANT_(nl, nv, lov, X_ALPHA_(alpha), albedo, MUL_(fl, fv));
+    return NAN0_(X_DIFFUSE_VARIANT_(nl, nv, lov, X_ALPHA_(alpha), albedo, MUL_(fl, fv)), nol, nov, lov, alpha,
+                 albedo);
 }
 
 /* Hammon's cheaper variant: smooth = 1 (Lambert). */
 FACET_INLINE V_ FACET_K(diffuse_hammon_cheap)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
 {
-    return X_DIFFUSE_VARIANT_(X_COS_(nol), X_COS_(nov), lov, X_ALPHA_(alpha), albedo, C_(1.0f));
+    return NAN0_(X_DIFFUSE_VARIANT_(X_COS_(nol), X_COS_(nov), lov, X_ALPHA_(alpha), albedo, C_(1.0f)), nol, nov,
+                 lov, alpha, albedo);
 }
 
 #undef X_DIFFUSE_VARIANT_
