@@ -51,7 +51,12 @@ extern "C" {
 #define FACET_ERR_NOH_FROM_DOTS_F32         3.372e-07 /* 2^-21.5 */
 #define FACET_ERR_LOH_FROM_DOTS_F32         2.384e-07 /* 2^-22 */
 #define FACET_ERR_FRESNEL_SCHLICK_F32       4.769e-07 /* 2^-21 */
+#define FACET_ERR_FRESNEL_SCHLICK_SG_F32    1.349e-06 /* 2^-19.5 */
 #define FACET_ERR_GGX_D_F32                 9.538e-07 /* 2^-20 */
+#define FACET_ERR_BLINN_PHONG_D_F32         3.052e-05 /* 2^-15 */
+#define FACET_ERR_BECKMANN_D_F32            3.052e-05 /* 2^-15 */
+#define FACET_ERR_GGX_ANISO_D_F32           6.744e-07 /* 2^-20.5 */
+#define FACET_ERR_GTR_D_F32                 1.079e-05 /* 2^-16.5 */
 #define FACET_ERR_SMITH_G1_F32              4.769e-07 /* 2^-21 */
 #define FACET_ERR_SMITH_G2_F32              4.769e-07 /* 2^-21 */
 #define FACET_ERR_SMITH_G2_UNCORRELATED_F32 6.744e-07 /* 2^-20.5 */
@@ -85,6 +90,23 @@ float facet_loh_from_dots_f32(float lov);
  * Cost: 13 ops (0 rsqrt, 0 rcp). */
 float facet_fresnel_schlick_f32(float f0, float cos_theta);
 
+/* Schlick's Fresnel with the spherical-Gaussian power (Karis):
+ *   F = F0 + (1 - F0) 2^((-5.55473 cos - 6.98316) cos)
+ * 2^y from the exponent bits and a polynomial (no libm).  F(f0, 0) = 1;
+ * F(f0, 1) = f0 + (1 - f0) 2^-12.54 (not f0: the Gaussian does not reach 0).
+ * Domain: f0, cos in [0, 1].
+ * Model error against fresnel_schlick (its reference; Schlick's own error
+ * against the exact Fresnel is that kernel's): |F_sg - F_schlick| =
+ * (1 - f0) |2^y - (1 - cos)^5|, max 0.00377 (1 - f0) at cos = 0.0554,
+ * mean 0.00195 (1 - f0) over cos uniform in [0, 1]; relative to Schlick's F
+ * at f0 = 0.04 up to 6.9% (cos = 0.633).
+ * Both tiers are the same code (no reciprocal).  The error is the tail's:
+ * y's two roundings times |y| ln 2 <= 8.7, and the constants rounded to float.
+ * Error: <= FACET_ERR_FRESNEL_SCHLICK_SG_F32 (2^-19.5); measured max 2^-20.03 (sse2 and
+ * scalar, no FMA; 2^-20.45 with FMA), 300 k samples, at (4.17905432e-10, 0.999937892).
+ * Cost: 21 ops (0 rsqrt, 0 rcp). */
+float facet_fresnel_schlick_sg_f32(float f0, float cos_theta);
+
 /* GGX / Trowbridge-Reitz normal distribution:
  *   D = alpha^2 / (pi ((N.H)^2 (alpha^2 - 1) + 1)^2)
  * evaluated as (1/pi) (alpha / d)^2 with d = (1 - N.H)(1 + N.H) + (N.H alpha)^2,
@@ -94,6 +116,81 @@ float facet_fresnel_schlick_f32(float f0, float cos_theta);
  * 30 M samples) at (0.999949455, 0.254411191).
  * Cost: 12 ops (0 rsqrt, 1 rcp). */
 float facet_ggx_d_f32(float noh, float alpha);
+
+/* ---- D terms beyond GGX ------------------------------------------------------
+ * Every D here is a normal distribution in the same sense as ggx_d: the
+ * integral of D(m) (N.M) over the hemisphere is 1 (checked by quadrature in
+ * tests/test_oracle.c for alpha 2^-10 .. 1).  alpha is the same width as
+ * GGX's (perceptual roughness^2); no model error: each is the exact term.
+ * No libm: the powers and exponentials are 2^y and log2 from the exponent
+ * bits and polynomials (include/facet/detail/f32_body.h, "2^y and log2":
+ * x_exp2, x_log2_x, x_exp2m1r).  The exponential terms carry what any float
+ * exponent carries: a rounding r of the exponent y costs |y| ln 2 r of D,
+ * and |y| reaches about 120 before D falls below the comparison floor
+ * 2^-100; that, not the polynomials (below 2^-26), sets their bounds.  The
+ * f32_fast tier keeps the precise reciprocals wherever the result is raised
+ * to a power (facet/detail/f32_body.h, RCP_EXP_), so blinn_phong_d and
+ * beckmann_d are the same code in both tiers. */
+
+/* Normalised Blinn-Phong, alpha-parametrised (Karis):
+ *   D = N.H^p / (pi alpha^2),  p = 2 / alpha^2 - 2
+ * ((p + 2) / (2 pi) N.H^p; p from 0 at alpha = 1 to 2^21 - 2 at alpha_min).
+ * Evaluated as 2^(p log2 N.H) with p = 2 (1 - alpha)(1 + alpha) / alpha^2.
+ * Domain: N.H in [0, 1], alpha in [FACET_ALPHA_MIN, 1].  D(1) = 1/(pi alpha^2);
+ * D(0) = 0 for alpha < 1, 1/pi at alpha = 1 (p = 0).
+ * Error: <= FACET_ERR_BLINN_PHONG_D_F32 (2^-15); measured max 2^-15.42 (every port,
+ * 300 k samples) at (0.776722491, 0.0863524303), where D = 2.6e-28: the exponent
+ * p log2 N.H = -88.6 and its few roundings.
+ * Cost: 55 ops (0 rsqrt, 2 rcp). */
+float facet_blinn_phong_d_f32(float noh, float alpha);
+
+/* Beckmann:
+ *   D = exp(-tan^2(theta_h) / alpha^2) / (pi alpha^2 N.H^4),
+ *   tan^2(theta_h) = (1 - N.H^2) / N.H^2
+ * evaluated as (1/pi) (alpha r)^2 2^y, r = 1 / (N.H alpha)^2,
+ * y = -log2(e) (1 - N.H)(1 + N.H) r (no cancellation at the peak).  Where
+ * y < -160 the result is 0 (the true D is below 2^-136 there), which also
+ * covers N.H -> 0.  Domain: N.H in [0, 1], alpha in [FACET_ALPHA_MIN, 1].
+ * D(1) = 1/(pi alpha^2), D(0) = 0.
+ * Error: <= FACET_ERR_BECKMANN_D_F32 (2^-15); measured max 2^-15.59 (every port,
+ * 300 k samples) at (0.997685969, 0.00783577561), where D = 7.4e-30 (y = -109).
+ * Cost: 34 ops (0 rsqrt, 1 rcp). */
+float facet_beckmann_d_f32(float noh, float alpha);
+
+/* Anisotropic GGX with widths alpha_x (along the tangent T) and alpha_y
+ * (along the bitangent B); toh = T.H, boh = B.H, noh = N.H, the components
+ * of a unit h in the tangent frame:
+ *   D = 1 / (pi ax ay ((T.H/ax)^2 + (B.H/ay)^2 + N.H^2)^2)
+ * evaluated as ax^3 ay^3 / (pi K^2), K = T.H^2 ay^2 + B.H^2 ax^2 +
+ * N.H^2 ax^2 ay^2 (all terms >= 0: no cancellation at the peak).
+ * ggx_aniso_d(n, t, b, a, a) = ggx_d(n, a) for a unit h (t^2 + b^2 = 1 - n^2).
+ * Domain: N.H in [0, 1], T.H and B.H in [-1, 1] (clamped like L.V: NaN and
+ * -Inf to -1), alpha_x, alpha_y in [FACET_ALPHA_MIN, 1].  Inputs no unit h
+ * has: K is floored at ax^2 ay^2 / 2 (the bracket at 1/2), so D <= 4 / (pi ax ay).
+ * Error: <= FACET_ERR_GGX_ANISO_D_F32 (2^-20.5); measured max 2^-20.78 (every port,
+ * 300 k samples) at (0.998403668, 0.0521120951, -0.0217817482, 0.621842802, 0.203452751).
+ * Cost: 26 ops (0 rsqrt, 1 rcp). */
+float facet_ggx_aniso_d_f32(float noh, float toh, float boh, float alpha_x, float alpha_y);
+
+/* Generalized Trowbridge-Reitz (GTR, Burley 2012; Dimov 2015) with tail
+ * exponent gamma:
+ *   D = c / (1 + (alpha^2 - 1) N.H^2)^gamma,
+ *   c = (gamma - 1)(alpha^2 - 1) / (pi (1 - alpha^(2 (1 - gamma))))
+ * with its limits: gamma = 1 (GTR1, "Berry"): c = (alpha^2 - 1) / (pi ln alpha^2);
+ * alpha = 1: c = 1/pi.  gamma = 2 is GGX: c = alpha^2 / pi, gtr_d(n, a, 2)
+ * equals ggx_d(n, a) to within both bounds; gamma = 0 is D = 1/pi.
+ * Evaluated without a special case: with L = log2 alpha^2 and
+ * E(y) = (2^y - 1) / y, c = E(L) / (pi E((1 - gamma) L)), and
+ * d^-gamma = 2^(-gamma log2 d), d = (1 - N.H)(1 + N.H) + (N.H alpha)^2.
+ * Domain: N.H in [0, 1], alpha in [FACET_ALPHA_MIN, 1], gamma in [0, 4]
+ * (Dimov's range; gamma clamped, NaN and -Inf to 0, +Inf to 4).
+ * D(1) = c / alpha^(2 gamma) (up to 1.3e6 at gamma = 4, alpha_min).
+ * Error: <= FACET_ERR_GTR_D_F32 (2^-16.5); measured max 2^-16.94 (every port,
+ * 300 k samples) at (0.999999762, 0.00208001724, 3.75617146): at the peak of a
+ * heavy tail, 2^(-gamma log2 d) with -gamma log2 d = 66.7 (its rounding and
+ * log2's) against c = 2^-60.
+ * Cost: 132 ops (0 rsqrt, 5 rcp). */
+float facet_gtr_d_f32(float noh, float alpha, float gamma);
 
 /* Exact Smith masking for GGX:
  *   G1 = 2 N.V / (N.V + sqrt(alpha^2 + (1 - alpha^2) N.V^2)) = 1 / (1 + Lambda)
@@ -207,7 +304,15 @@ void facet_noh_from_dots_f32_batch(float *out, const float *nol, const float *no
                                    const float *lov, size_t n);
 void facet_loh_from_dots_f32_batch(float *out, const float *lov, size_t n);
 void facet_fresnel_schlick_f32_batch(float *out, const float *f0, const float *cos_theta, size_t n);
+void facet_fresnel_schlick_sg_f32_batch(float *out, const float *f0, const float *cos_theta,
+                                        size_t n);
 void facet_ggx_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_blinn_phong_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_beckmann_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_ggx_aniso_d_f32_batch(float *out, const float *noh, const float *toh, const float *boh,
+                                 const float *alpha_x, const float *alpha_y, size_t n);
+void facet_gtr_d_f32_batch(float *out, const float *noh, const float *alpha, const float *gamma,
+                           size_t n);
 void facet_smith_g1_f32_batch(float *out, const float *nov, const float *alpha, size_t n);
 void facet_smith_g2_f32_batch(float *out, const float *nol, const float *nov, const float *alpha,
                               size_t n);
@@ -243,11 +348,18 @@ void facet_lambert_f32_batch(float *out, const float *albedo, size_t n);
  * relative error vs the oracle, measured over the precise tier's sweep on
  * every port, also with estimates at the architectural bound (worst:
  * avx512, e.g. smith_g2_uncorrelated 2^-12.43, brdf_hammon 2^-13.00),
- * enforced by the same tests; all <= 2^-12. */
+ * enforced by the same tests; all <= 2^-12.  The D terms beyond GGX:
+ * blinn_phong_d and beckmann_d are the precise code (every reciprocal is
+ * raised to a power); ggx_aniso_d measured 2^-14.18, gtr_d 2^-13.63 (avx512). */
 #define FACET_ERR_NOH_FROM_DOTS_F32_FAST          8.632e-05 /* 2^-13.5 */
 #define FACET_ERR_LOH_FROM_DOTS_F32_FAST          8.632e-05 /* 2^-13.5 */
 #define FACET_ERR_FRESNEL_SCHLICK_F32_FAST        4.769e-07 /* 2^-21 */
+#define FACET_ERR_FRESNEL_SCHLICK_SG_F32_FAST     1.349e-06 /* 2^-19.5 */
 #define FACET_ERR_GGX_D_F32_FAST                  1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_BLINN_PHONG_D_F32_FAST          3.052e-05 /* 2^-15 */
+#define FACET_ERR_BECKMANN_D_F32_FAST             3.052e-05 /* 2^-15 */
+#define FACET_ERR_GGX_ANISO_D_F32_FAST            8.632e-05 /* 2^-13.5 */
+#define FACET_ERR_GTR_D_F32_FAST                  1.221e-04 /* 2^-13 */
 #define FACET_ERR_SMITH_G1_F32_FAST               1.726e-04 /* 2^-12.5 */
 #define FACET_ERR_SMITH_G2_F32_FAST               1.726e-04 /* 2^-12.5 */
 #define FACET_ERR_SMITH_G2_UNCORRELATED_F32_FAST  2.441e-04 /* 2^-12 */
@@ -262,7 +374,12 @@ void facet_lambert_f32_batch(float *out, const float *albedo, size_t n);
 float facet_noh_from_dots_f32_fast(float nol, float nov, float lov);
 float facet_loh_from_dots_f32_fast(float lov);
 float facet_fresnel_schlick_f32_fast(float f0, float cos_theta);
+float facet_fresnel_schlick_sg_f32_fast(float f0, float cos_theta);
 float facet_ggx_d_f32_fast(float noh, float alpha);
+float facet_blinn_phong_d_f32_fast(float noh, float alpha);
+float facet_beckmann_d_f32_fast(float noh, float alpha);
+float facet_ggx_aniso_d_f32_fast(float noh, float toh, float boh, float alpha_x, float alpha_y);
+float facet_gtr_d_f32_fast(float noh, float alpha, float gamma);
 float facet_smith_g1_f32_fast(float nov, float alpha);
 float facet_smith_g2_f32_fast(float nol, float nov, float alpha);
 float facet_smith_g2_uncorrelated_f32_fast(float nol, float nov, float alpha);
@@ -280,7 +397,16 @@ void facet_noh_from_dots_f32_fast_batch(float *out, const float *nol, const floa
                                    const float *lov, size_t n);
 void facet_loh_from_dots_f32_fast_batch(float *out, const float *lov, size_t n);
 void facet_fresnel_schlick_f32_fast_batch(float *out, const float *f0, const float *cos_theta, size_t n);
+void facet_fresnel_schlick_sg_f32_fast_batch(float *out, const float *f0,
+                                             const float *cos_theta, size_t n);
 void facet_ggx_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_blinn_phong_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_beckmann_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_ggx_aniso_d_f32_fast_batch(float *out, const float *noh, const float *toh,
+                                      const float *boh, const float *alpha_x,
+                                      const float *alpha_y, size_t n);
+void facet_gtr_d_f32_fast_batch(float *out, const float *noh, const float *alpha,
+                                const float *gamma, size_t n);
 void facet_smith_g1_f32_fast_batch(float *out, const float *nov, const float *alpha, size_t n);
 void facet_smith_g2_f32_fast_batch(float *out, const float *nol, const float *nov, const float *alpha,
                               size_t n);

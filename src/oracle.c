@@ -18,6 +18,7 @@ static double cosd(double x) { return clampd(x, FACET_COS_MIN, 1.0); }
 static double unitd(double x) { return clampd(x, 0.0, 1.0); }
 static double alphad(double x) { return clampd(x, FACET_ALPHA_MIN, 1.0); }
 static double lerpd(double a, double b, double t) { return a + t * (b - a); }
+static double sgnd(double x) { return clampd(x, -1.0, 1.0); }
 
 /* ---- double-double, for the geometry only --------------------------------
  * Building L and V from their dots cancels badly where L and V are nearly
@@ -201,6 +202,13 @@ double facet_oracle_fresnel_schlick(double f0, double cos_theta)
     return fresnel_y(f0, 1.0 - unitd(cos_theta));
 }
 
+/* the spherical-Gaussian Schlick: f0 + (1 - f0) 2^((-5.55473 c - 6.98316) c) */
+double facet_oracle_fresnel_schlick_sg(double f0, double cos_theta)
+{
+    double f = unitd(f0), c = unitd(cos_theta);
+    return f + (1.0 - f) * exp2((-5.55473 * c - 6.98316) * c);
+}
+
 /* D(m) = alpha^2 / (pi cos^4(theta_m) (alpha^2 + tan^2(theta_m))^2) */
 double facet_oracle_ggx_d_tan2(double tan2_h, double cos_h, double alpha)
 {
@@ -216,6 +224,59 @@ double facet_oracle_ggx_d(double noh, double alpha)
     /* sin^2 as (1 - c)(1 + c), exact but for two roundings: 1 - c*c would
      * cost 2^-53 absolute, ~1e-10 of D at the peak for alpha = 2^-10 */
     return facet_oracle_ggx_d_tan2((1.0 - c) * (1.0 + c) / (c * c), c, a);
+}
+
+/* ---- D terms beyond GGX ----------------------------------------------------
+ * From the definitions, with pow/exp/expm1; each normalised so that the
+ * integral of D(m) (n.m) over the hemisphere is 1 (tests/test_oracle.c
+ * checks it by quadrature). */
+
+/* Blinn-Phong: N.H^p / (pi alpha^2), p = 2 / alpha^2 - 2 = 2 (1 - alpha^2) / alpha^2 */
+double facet_oracle_blinn_phong_d(double noh, double alpha)
+{
+    double n = unitd(noh), a = alphad(alpha), a2 = a * a;
+    double p = 2.0 * (1.0 - a) * (1.0 + a) / a2;
+    return pow(n, p) / (PI * a2);
+}
+
+/* Beckmann: exp(-tan^2 / alpha^2) / (pi alpha^2 cos^4) */
+double facet_oracle_beckmann_d(double noh, double alpha)
+{
+    double n = unitd(noh), a = alphad(alpha), a2 = a * a, t2;
+    if (n == 0.0)
+        return 0.0; /* the limit */
+    t2 = (1.0 - n) * (1.0 + n) / (n * n);
+    return exp(-t2 / a2) / (PI * a2 * n * n * n * n);
+}
+
+/* anisotropic GGX: 1 / (pi ax ay k^2), k = (T.H/ax)^2 + (B.H/ay)^2 + N.H^2,
+ * k floored at 1/2 (the contract's extension to non-unit h) */
+double facet_oracle_ggx_aniso_d(double noh, double toh, double boh, double alpha_x,
+                                double alpha_y)
+{
+    double ax = alphad(alpha_x), ay = alphad(alpha_y), n = unitd(noh);
+    double x = sgnd(toh) / ax, y = sgnd(boh) / ay;
+    double k = fmax(x * x + y * y + n * n, 0.5);
+    return 1.0 / (PI * ax * ay * k * k);
+}
+
+/* GTR: c / (1 + (alpha^2 - 1) N.H^2)^gamma,
+ * c = (gamma - 1)(alpha^2 - 1) / (pi (1 - alpha^(2 (1 - gamma)))), with its
+ * limits: (alpha^2 - 1) / (pi ln alpha^2) at gamma = 1, 1/pi at alpha = 1. */
+static double gtr_gamma(double g) { return clampd(g, 0.0, 4.0); }
+
+double facet_oracle_gtr_d(double noh, double alpha, double gamma)
+{
+    double n = unitd(noh), a = alphad(alpha), g = gtr_gamma(gamma), a2 = a * a, c, d;
+    double la2 = 2.0 * log(a);
+    if (a == 1.0)
+        c = 1.0 / PI;
+    else if (g == 1.0)
+        c = (a2 - 1.0) / (PI * la2);
+    else
+        c = (g - 1.0) * (a2 - 1.0) / (PI * -expm1((1.0 - g) * la2));
+    d = (1.0 - n) * (1.0 + n) + (n * a) * (n * a);
+    return c / pow(d, g);
 }
 
 /* Lambda(theta) = (-1 + sqrt(1 + x)) / 2, x = alpha^2 tan^2 theta; for
@@ -327,7 +388,6 @@ double facet_oracle_lambert(double albedo)
  * Domain handling as the contracts. */
 #define U_MAX_ 0.99999994039535522 /* 1 - 2^-24 */
 static double ud(double u) { return clampd(u, 0.0, U_MAX_); }
-static double sgnd(double x) { return clampd(x, -1.0, 1.0); }
 
 static void normalize3(double h[3], double x, double y, double z)
 {

@@ -50,9 +50,15 @@ facet_oracle_geom facet_oracle_geometry(double nol, double nov, double lov);
 double facet_oracle_noh_from_dots(double nol, double nov, double lov);
 double facet_oracle_loh_from_dots(double lov);
 double facet_oracle_fresnel_schlick(double f0, double cos_theta);
+double facet_oracle_fresnel_schlick_sg(double f0, double cos_theta);
 double facet_oracle_ggx_d(double noh, double alpha);
 /* D from tan^2(theta_h) directly (the accurate form near the peak) */
 double facet_oracle_ggx_d_tan2(double tan2_h, double cos_h, double alpha);
+double facet_oracle_blinn_phong_d(double noh, double alpha);
+double facet_oracle_beckmann_d(double noh, double alpha);
+double facet_oracle_ggx_aniso_d(double noh, double toh, double boh, double alpha_x,
+                                double alpha_y);
+double facet_oracle_gtr_d(double noh, double alpha, double gamma);
 double facet_oracle_smith_lambda(double nov, double alpha);
 double facet_oracle_smith_g1(double nov, double alpha);
 double facet_oracle_smith_g2(double nol, double nov, double alpha);
