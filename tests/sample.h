@@ -80,14 +80,21 @@ static float smp_unit(smp_rng *r)
 
 /* The low end of input i's domain (facet.h): -1 for L.V, T.H and B.H,
  * alpha_min for alpha (alpha_x, alpha_y), FACET_COS_MIN for N.L / N.V of the
- * two-cosine kernels, else 0; the high end (smp_domain_hi) is 4 for the GTR
+ * two-cosine kernels (those with an N.L), else 0; the high end (smp_domain_hi) is 4 for the GTR
  * tail gamma and 1 for every other input. */
+/* a two-cosine kernel: it takes N.L (and N.V); a kernel of N.V alone
+ * (smith_g1, smith_g1_gtr) takes N.V in [0, 1] */
+static inline int smp_two_cos(const facet_kernel *k)
+{
+    return !strcmp(k->inputs[0], "nol");
+}
+
 static inline float smp_domain_lo(const facet_kernel *k, int i)
 {
     const char *n = k->inputs[i];
     if (!strcmp(n, "lov") || !strcmp(n, "toh") || !strcmp(n, "boh")) return -1.0f;
     if (!strncmp(n, "alpha", 5)) return FACET_ALPHA_MIN;
-    if (k->n_inputs > 2 && (!strcmp(n, "nol") || !strcmp(n, "nov"))) return FACET_COS_MIN;
+    if (smp_two_cos(k) && (!strcmp(n, "nol") || !strcmp(n, "nov"))) return FACET_COS_MIN;
     return 0.0f;
 }
 
@@ -129,7 +136,7 @@ static void smp_inputs(smp_rng *r, const facet_kernel *k, float *in)
     for (i = 0; i < k->n_inputs; i++) {
         const char *n = k->inputs[i];
         if (!strcmp(n, "nol")) in[i] = nl;
-        else if (!strcmp(n, "nov")) in[i] = k->n_inputs == 2 ? smp_unit(r) : nv;
+        else if (!strcmp(n, "nov")) in[i] = smp_two_cos(k) ? nv : smp_unit(r);
         else if (!strcmp(n, "lov")) in[i] = k->n_inputs == 1 ? (float)(2 * smp_u01(r) - 1) : lv;
         else if (!strncmp(n, "alpha", 5)) in[i] = smp_alpha(r);
         else if (!strcmp(n, "gamma")) in[i] = smp_gamma(r);

@@ -104,6 +104,15 @@ int main(void)
                       "ggx_aniso_d(alpha, alpha) = ggx_d (N.H %g, alpha %g): %.9g vs %.9g", n, a, g, gg);
             }
             CHECK(facet_fresnel_schlick_sg_f32(a, 0.0f) == 1.0f, "F_sg(f0, 0) = 1 (f0 = %g)", a);
+            CHECK(facet_smith_g1_gtr_f32(1.0f, a, 1.3f) == 1.0f && facet_smith_g1_gtr_f32(0.0f, a, 3.7f) == 0.0f,
+                  "G1_gtr(1) = 1, G1_gtr(0) = 0 (alpha %g)", a);
+            for (n = 0.0f; n <= 1.0f; n += 0.0625f) {
+                CHECK(same(facet_smith_g1_gtr_f32(n, a, 2.0f), facet_smith_g1_f32(n, a)),
+                      "G1_gtr(gamma = 2) is smith_g1 to the bit (N.V %g, alpha %g)", n, a);
+                g = facet_smith_g1_gtr_f32(n, a, 0.0f);
+                CHECK(fabs(g - 2.0 * n / (1.0 + n)) <= FACET_ERR_SMITH_G1_GTR_F32 * g,
+                      "G1_gtr(gamma = 0) = 2n / (1 + n) (N.V %g): %.9g", n, g);
+            }
         }
         CHECK(same(facet_gtr_d_f32(0.5f, 0.25f, 1.0f), facet_gtr_d_f32(0.5f, 0.25f, 0.99999994f))
                   || fabs(facet_gtr_d_f32(0.5f, 0.25f, 1.0f) / facet_gtr_d_f32(0.5f, 0.25f, 0.99999994f) - 1.0) < 1e-6,

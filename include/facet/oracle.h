@@ -65,6 +65,12 @@ double facet_oracle_smith_g2(double nol, double nov, double alpha);
 double facet_oracle_smith_g2_uncorrelated(double nol, double nov, double alpha);
 double facet_oracle_smith_vis(double nol, double nov, double alpha);
 double facet_oracle_smith_g1_hammon(double nov, double alpha);
+/* Dimov's G1 for GTR: the monotone cubic (pchip) in gamma through the closed
+ * forms at gamma = 0 .. 4 (the kernel's definition); one closed form; and
+ * the exact G1 = 1 / (1 + Lambda) by quadrature (the model reference) */
+double facet_oracle_smith_g1_gtr(double nov, double alpha, double gamma);
+double facet_oracle_smith_g1_gtr_order(double nov, double alpha, int order);
+double facet_oracle_smith_g1_gtr_exact(double nov, double alpha, double gamma);
 double facet_oracle_smith_g2_hammon(double nol, double nov, double alpha);
 double facet_oracle_smith_vis_hammon(double nol, double nov, double alpha);
 double facet_oracle_diffuse_hammon(double nol, double nov, double lov, double alpha,

@@ -32,7 +32,7 @@ static float domain_lo(const facet_kernel *k, int i)
         return -1.0f;
     if (!strncmp(n, "alpha", 5))
         return FACET_ALPHA_MIN;
-    if (k->n_inputs > 2 && (!strcmp(n, "nol") || !strcmp(n, "nov")))
+    if (!strcmp(k->inputs[0], "nol") && (!strcmp(n, "nol") || !strcmp(n, "nov"))) /* two-cosine */
         return FACET_COS_MIN;
     return 0.0f;
 }
