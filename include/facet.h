@@ -260,11 +260,13 @@ float facet_smith_g1_hammon_f32(float nov, float alpha);
  * over N.V in [2^-10, 1], alpha in [2^-10, 1], gamma in [0.1, 3.9]; for
  * alpha >= 0.1 max 0.036 (N.V 0.275, alpha 0.1, gamma 0.5), mean 0.0014.
  * (Dimov reports about 0.1% against Monte Carlo for his alpha range.)
- * The f32_fast tier keeps the precise rsqrt for W (cubed in G^4).
+ * The f32_fast tier keeps the precise rsqrt for W (cubed in G^4) and the
+ * precise reciprocals (the interpolation's slopes are differences of the
+ * five values, which amplify their errors); only 2^y's differs.
  * Error (against the interpolation of the closed forms in double,
  * facet_oracle_smith_g1_gtr): <= FACET_ERR_SMITH_G1_GTR_F32 (2^-20); measured
  * max 2^-20.82 (sse2, 300 k samples) at (0.03131124, 0.793374896, 3.95270443).
- * Cost: 255 ops (1 rsqrt, 15 rcp). */
+ * Cost: 261 ops (1 rsqrt, 15 rcp). */
 float facet_smith_g1_gtr_f32(float nov, float alpha, float gamma);
 
 /* Hammon's G2 approximation:
@@ -389,8 +391,9 @@ void facet_lambert_f32_batch(float *out, const float *albedo, size_t n);
  * avx512, e.g. smith_g2_uncorrelated 2^-12.43, brdf_hammon 2^-13.00),
  * enforced by the same tests; all <= 2^-12.  The D terms beyond GGX:
  * blinn_phong_d and beckmann_d are the precise code (every reciprocal is
- * raised to a power); ggx_aniso_d measured 2^-14.18, gtr_d 2^-13.63,
- * smith_g1_gtr 2^-13.49 (avx512). */
+ * raised to a power); ggx_aniso_d measured 2^-14.18, gtr_d 2^-13.63
+ * (2^-12.95 with estimates at the architectural bound), smith_g1_gtr
+ * 2^-14.01 (avx512, estimates at the bound). */
 #define FACET_ERR_NOH_FROM_DOTS_F32_FAST          8.632e-05 /* 2^-13.5 */
 #define FACET_ERR_LOH_FROM_DOTS_F32_FAST          8.632e-05 /* 2^-13.5 */
 #define FACET_ERR_FRESNEL_SCHLICK_F32_FAST        4.769e-07 /* 2^-21 */
@@ -399,13 +402,13 @@ void facet_lambert_f32_batch(float *out, const float *albedo, size_t n);
 #define FACET_ERR_BLINN_PHONG_D_F32_FAST          3.052e-05 /* 2^-15 */
 #define FACET_ERR_BECKMANN_D_F32_FAST             3.052e-05 /* 2^-15 */
 #define FACET_ERR_GGX_ANISO_D_F32_FAST            8.632e-05 /* 2^-13.5 */
-#define FACET_ERR_GTR_D_F32_FAST                  1.221e-04 /* 2^-13 */
+#define FACET_ERR_GTR_D_F32_FAST                  1.726e-04 /* 2^-12.5 */
 #define FACET_ERR_SMITH_G1_F32_FAST               1.726e-04 /* 2^-12.5 */
 #define FACET_ERR_SMITH_G2_F32_FAST               1.726e-04 /* 2^-12.5 */
 #define FACET_ERR_SMITH_G2_UNCORRELATED_F32_FAST  2.441e-04 /* 2^-12 */
 #define FACET_ERR_SMITH_VIS_F32_FAST              1.726e-04 /* 2^-12.5 */
 #define FACET_ERR_SMITH_G1_HAMMON_F32_FAST        8.632e-05 /* 2^-13.5 */
-#define FACET_ERR_SMITH_G1_GTR_F32_FAST           1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_SMITH_G1_GTR_F32_FAST           1.221e-04 /* 2^-13 */
 #define FACET_ERR_SMITH_G2_HAMMON_F32_FAST        8.632e-05 /* 2^-13.5 */
 #define FACET_ERR_SMITH_VIS_HAMMON_F32_FAST       8.632e-05 /* 2^-13.5 */
 #define FACET_ERR_DIFFUSE_HAMMON_F32_FAST         1.726e-04 /* 2^-12.5 */

@@ -446,20 +446,23 @@ FACET_INLINE V_ FACET_K(smith_vis_hammon)(V_ nol, V_ nov, V_ alpha)
  * The closed forms at gamma = 0 .. 4 in N.V (derivation: src/oracle.c and
  * facet.h), with s2 = 1 - n^2 = (1 - n)(1 + n) and W = sqrt(n^2 + alpha^2 s2)
  * (smith_g1's radicand), then the monotone cubic (Fritsch-Carlson) in gamma
- * through the five values. */
+ * through the five values.  The interpolation works on differences of the
+ * five values (its slopes), which amplify their errors: every reciprocal
+ * here is the precise one in both tiers (with the 14-bit estimates of
+ * avx512 at their architectural bound the fast tier reached 2^-11.8). */
 
 /* R(u) = ln(1 + u) / u / ln 2 for u >= 0 (1/ln 2 at 0): below u = 0.41 as
  * Q(s^2) / (2 + u) with s = u / (2 + u) (x_log2's polynomial: ln(1 + u) =
  * 2 atanh(s)), no cancellation at small u; above, log2(1 + u) / u. */
 FACET_INLINE V_ X_LN1PR_(V_ u)
 {
-    V_ r2 = RCP_(ADD_(C_(2.0f), u));
+    V_ r2 = RCP_EXP_(ADD_(C_(2.0f), u));
     V_ sm = MUL_(u, r2), t = MUL_(sm, sm);
     V_ q = FMA_(t, C_(4.317176938e-01f), C_(5.767151713e-01f));
     V_ big;
     q = FMA_(q, t, C_(9.617988467e-01f));
     q = FMA_(q, t, C_(2.885390043e+00f));
-    big = MUL_(X_LOG2_(ADD_(C_(1.0f), u)), RCP_(MAX_(u, C_(0.25f))));
+    big = MUL_(X_LOG2_X_(ADD_(C_(1.0f), u)), RCP_EXP_(MAX_(u, C_(0.25f))));
     return FACET_OP(sel_lt)(u, C_(0.41f), MUL_(q, r2), big);
 }
 
@@ -478,7 +481,7 @@ FACET_INLINE V_ X_PCHIP_END_(V_ d0, V_ d1)
 FACET_INLINE V_ X_PCHIP_MID_(V_ a, V_ b)
 {
     V_ p = MUL_(a, b);
-    V_ h = MUL_(ADD_(p, p), RCP_(FACET_OP(sel_lt)(C_(0.0f), p, ADD_(a, b), C_(1.0f))));
+    V_ h = MUL_(ADD_(p, p), RCP_EXP_(FACET_OP(sel_lt)(C_(0.0f), p, ADD_(a, b), C_(1.0f))));
     return FACET_OP(sel_lt)(C_(0.0f), p, h, C_(0.0f));
 }
 
@@ -495,31 +498,31 @@ FACET_INLINE V_ FACET_K(smith_g1_gtr)(V_ nov, V_ alpha, V_ gamma)
     V_ y0, y1, y2, y3, y4, la, e, den1, u, W3, num4, den4, k4;
     V_ d0, d1, d2, d3, m0, m1, m2, m3, m4, yj, yk, mj, mk, t, t1, j1, j2, j3, S;
     /* gamma = 0: 2n / (1 + n) */
-    y0 = MUL_(n2, RCP_(ADD_(C_(1.0f), n)));
+    y0 = MUL_(n2, RCP_EXP_(ADD_(C_(1.0f), n)));
     /* gamma = 1: n / (n + e s2 (W + n (1 - R(u))) / ((W + 1)(n + W))),
      * e = (alpha^2 - 1) / ln alpha^2 = E(L) / ln 2, L = log2 alpha^2 */
     la = X_LOG2_X_(a);
     e = MUL_(X_EXP2M1R_(ADD_(la, la)), C_(1.44269504f));
-    den1 = RCP_(MUL_(ADD_(W, C_(1.0f)), nW));
+    den1 = RCP_EXP_(MUL_(ADD_(W, C_(1.0f)), nW));
     /* (1 - alpha^2) s2 / ((W + 1)(n + W)) */
     u = MUL_(MUL_(SUB_(C_(1.0f), a), ADD_(C_(1.0f), a)), MUL_(s2, den1));
     y1 = FNMA_(MUL_(X_LN1PR_(u), C_(0.693147181f)), n, ADD_(W, n)); /* W + n (1 - R) */
     y1 = MUL_(MUL_(e, s2), MUL_(y1, den1));
-    y1 = MUL_(n, RCP_(ADD_(n, y1)));
+    y1 = MUL_(n, RCP_EXP_(ADD_(n, y1)));
     /* gamma = 2: GGX, 2n / (n + W) */
-    y2 = MUL_(n2, RCP_(nW));
+    y2 = MUL_(n2, RCP_EXP_(nW));
     /* gamma = 3: 4 (1 + alpha^2) n W / (alpha^2 (3 alpha^2 + 1) s2 + 2 (1 + alpha^2) n (n + W)) */
     y3 = MUL_(MUL_(C_(2.0f), b), MUL_(n2, W));
-    y3 = MUL_(y3, RCP_(FMA_(MUL_(a2, FMA_(C_(3.0f), a2, C_(1.0f))), s2, MUL_(b, MUL_(n2, nW)))));
+    y3 = MUL_(y3, RCP_EXP_(FMA_(MUL_(a2, FMA_(C_(3.0f), a2, C_(1.0f))), s2, MUL_(b, MUL_(n2, nW)))));
     /* gamma = 4: 2 n W^3 / (n (W^3 + n^3) + k4 (alpha^2 P5 s2^2 + 4 n^2 s2 P2)),
      * k4 = 3 alpha^2 / K, K = 8 (alpha^4 + alpha^2 + 1),
      * P5 = 5 alpha^4 + 2 alpha^2 + 1, P2 = 2 alpha^4 + alpha^2 + 1 */
     W3 = MUL_(MUL_(W, W), W);
-    k4 = MUL_(MUL_(C_(0.375f), a2), RCP_(FMA_(a2, b, C_(1.0f))));
+    k4 = MUL_(MUL_(C_(0.375f), a2), RCP_EXP_(FMA_(a2, b, C_(1.0f))));
     num4 = FMA_(MUL_(a2, FMA_(a2, FMA_(C_(5.0f), a2, C_(2.0f)), C_(1.0f))), s2,
                 MUL_(MUL_(C_(4.0f), MUL_(n, n)), FMA_(a2, FMA_(C_(2.0f), a2, C_(1.0f)), C_(1.0f))));
     den4 = FMA_(k4, MUL_(num4, s2), MUL_(n, FMA_(MUL_(n, n), n, W3)));
-    y4 = MUL_(MUL_(n2, W3), RCP_(den4));
+    y4 = MUL_(MUL_(n2, W3), RCP_EXP_(den4));
     /* the monotone cubic in gamma */
     d0 = SUB_(y1, y0);
     d1 = SUB_(y2, y1);
