@@ -265,7 +265,8 @@ float facet_smith_g1_hammon_f32(float nov, float alpha);
  * five values, which amplify their errors); only 2^y's differs.
  * Error (against the interpolation of the closed forms in double,
  * facet_oracle_smith_g1_gtr): <= FACET_ERR_SMITH_G1_GTR_F32 (2^-20); measured
- * max 2^-20.82 (sse2, 300 k samples) at (0.03131124, 0.793374896, 3.95270443).
+ * max 2^-20.89 (sse2, 300 k samples) at (0.00778461341, 0.126742497, 3.8678031);
+ * f32_fast 2^-14.27 (avx512; 2^-14.01 with estimates at the bound).
  * Cost: 261 ops (1 rsqrt, 15 rcp). */
 float facet_smith_g1_gtr_f32(float nov, float alpha, float gamma);
 
