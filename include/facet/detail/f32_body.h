@@ -300,7 +300,11 @@ FACET_INLINE V_ FACET_K(blinn_phong_d)(V_ noh, V_ alpha)
     V_ p = MUL_(MUL_(SUB_(C_(1.0f), a), ADD_(C_(1.0f), a)), ADD_(ia2, ia2));
     V_ y = MAX_(MUL_(p, X_LOG2_X_(n)), C_(-190.0f));
     V_ d = X_EXP2_SCALED_(MUL_(ia2, C_(FACET_INV_PI_)), y);
-    return FACET_OP(sel_lt)(C_(0.0f), n, d, FACET_OP(sel_lt)(C_(0.0f), p, C_(0.0f), d));
+    /* N.H = 0 tested as N.H 2^64 > 0: a port that flushes denormals (armv7
+     * NEON) flushes this product as it flushed N.H for the log, so a
+     * denormal N.H is 0 in both places (compares do not flush there) */
+    V_ ns = MUL_(n, C_(1.84467441e+19f));
+    return FACET_OP(sel_lt)(C_(0.0f), ns, d, FACET_OP(sel_lt)(C_(0.0f), p, C_(0.0f), d));
 }
 
 /* Beckmann: D = exp(-tan^2 / alpha^2) / (pi alpha^2 N.H^4)
