@@ -62,12 +62,18 @@ extern "C" {
 #define FACET_ERR_FRESNEL_SCHLICK_F32       4.769e-07 /* 2^-21 */
 #define FACET_ERR_FRESNEL_COOK_TORRANCE_F32 1.907e-06 /* 2^-19 */
 #define FACET_ERR_FRESNEL_SCHLICK_F90_F32   4.769e-07 /* 2^-21 */
+#define FACET_ERR_FRESNEL_SCHLICK_SG_F32    1.349e-06 /* 2^-19.5 */
 #define FACET_ERR_GGX_D_F32                 9.538e-07 /* 2^-20 */
+#define FACET_ERR_BLINN_PHONG_D_F32         3.052e-05 /* 2^-15 */
+#define FACET_ERR_BECKMANN_D_F32            3.052e-05 /* 2^-15 */
+#define FACET_ERR_GGX_ANISO_D_F32           6.744e-07 /* 2^-20.5 */
+#define FACET_ERR_GTR_D_F32                 1.079e-05 /* 2^-16.5 */
 #define FACET_ERR_SMITH_G1_F32              4.769e-07 /* 2^-21 */
 #define FACET_ERR_SMITH_G2_F32              4.769e-07 /* 2^-21 */
 #define FACET_ERR_SMITH_G2_UNCORRELATED_F32 6.744e-07 /* 2^-20.5 */
 #define FACET_ERR_SMITH_VIS_F32             4.769e-07 /* 2^-21 */
 #define FACET_ERR_SMITH_G1_HAMMON_F32       3.372e-07 /* 2^-21.5 */
+#define FACET_ERR_SMITH_G1_GTR_F32          9.538e-07 /* 2^-20 */
 #define FACET_ERR_SMITH_G2_HAMMON_F32       4.769e-07 /* 2^-21 */
 #define FACET_ERR_SMITH_VIS_HAMMON_F32      3.372e-07 /* 2^-21.5 */
 #define FACET_ERR_DIFFUSE_HAMMON_F32        9.538e-07 /* 2^-20 */
@@ -135,6 +141,23 @@ float facet_fresnel_cook_torrance_f32(float f0, float voh);
  * Cost: 25 ops (0 rsqrt, 0 rcp). */
 float facet_fresnel_schlick_f90_f32(float f0, float f90, float voh);
 
+/* Schlick's Fresnel with the spherical-Gaussian power (Karis):
+ *   F = F0 + (1 - F0) 2^((-5.55473 cos - 6.98316) cos)
+ * 2^y from the exponent bits and a polynomial (no libm).  F(f0, 0) = 1;
+ * F(f0, 1) = f0 + (1 - f0) 2^-12.54 (not f0: the Gaussian does not reach 0).
+ * Domain: f0, cos in [0, 1].
+ * Model error against fresnel_schlick (its reference; Schlick's own error
+ * against the exact Fresnel is that kernel's): |F_sg - F_schlick| =
+ * (1 - f0) |2^y - (1 - cos)^5|, max 0.00377 (1 - f0) at cos = 0.0554,
+ * mean 0.00195 (1 - f0) over cos uniform in [0, 1]; relative to Schlick's F
+ * at f0 = 0.04 up to 6.9% (cos = 0.633).
+ * Both tiers are the same code (no reciprocal).  The error is the tail's:
+ * y's two roundings times |y| ln 2 <= 8.7, and the constants rounded to float.
+ * Error: <= FACET_ERR_FRESNEL_SCHLICK_SG_F32 (2^-19.5); measured max 2^-20.03 (sse2 and
+ * scalar, no FMA; 2^-20.45 with FMA), 300 k samples, at (4.17905432e-10, 0.999937892).
+ * Cost: 23 ops (0 rsqrt, 0 rcp). */
+float facet_fresnel_schlick_sg_f32(float f0, float cos_theta);
+
 /* GGX / Trowbridge-Reitz normal distribution:
  *   D = alpha^2 / (pi ((N.H)^2 (alpha^2 - 1) + 1)^2)
  * evaluated as (1/pi) (alpha / d)^2 with d = (1 - N.H)(1 + N.H) + (N.H alpha)^2,
@@ -144,6 +167,81 @@ float facet_fresnel_schlick_f90_f32(float f0, float f90, float voh);
  * 30 M samples) at (0.999949455, 0.254411191).
  * Cost: 14 ops (0 rsqrt, 1 rcp). */
 float facet_ggx_d_f32(float noh, float alpha);
+
+/* ---- D terms beyond GGX ------------------------------------------------------
+ * Every D here is a normal distribution in the same sense as ggx_d: the
+ * integral of D(m) (N.M) over the hemisphere is 1 (checked by quadrature in
+ * tests/test_oracle.c for alpha 2^-10 .. 1).  alpha is the same width as
+ * GGX's (perceptual roughness^2); no model error: each is the exact term.
+ * No libm: the powers and exponentials are 2^y and log2 from the exponent
+ * bits and polynomials (include/facet/detail/f32_body.h, "2^y and log2":
+ * x_exp2, x_log2_x, x_exp2m1r).  The exponential terms carry what any float
+ * exponent carries: a rounding r of the exponent y costs |y| ln 2 r of D,
+ * and |y| reaches about 120 before D falls below the comparison floor
+ * 2^-100; that, not the polynomials (below 2^-26), sets their bounds.  The
+ * f32_fast tier keeps the precise reciprocals wherever the result is raised
+ * to a power (facet/detail/f32_body.h, RCP_EXP_), so blinn_phong_d and
+ * beckmann_d are the same code in both tiers. */
+
+/* Normalised Blinn-Phong, alpha-parametrised (Karis):
+ *   D = N.H^p / (pi alpha^2),  p = 2 / alpha^2 - 2
+ * ((p + 2) / (2 pi) N.H^p; p from 0 at alpha = 1 to 2^21 - 2 at alpha_min).
+ * Evaluated as 2^(p log2 N.H) with p = 2 (1 - alpha)(1 + alpha) / alpha^2.
+ * Domain: N.H in [0, 1], alpha in [FACET_ALPHA_MIN, 1].  D(1) = 1/(pi alpha^2);
+ * D(0) = 0 for alpha < 1, 1/pi at alpha = 1 (p = 0).
+ * Error: <= FACET_ERR_BLINN_PHONG_D_F32 (2^-15); measured max 2^-15.42 (every port,
+ * 300 k samples) at (0.776722491, 0.0863524303), where D = 2.6e-28: the exponent
+ * p log2 N.H = -88.6 and its few roundings.
+ * Cost: 58 ops (0 rsqrt, 2 rcp). */
+float facet_blinn_phong_d_f32(float noh, float alpha);
+
+/* Beckmann:
+ *   D = exp(-tan^2(theta_h) / alpha^2) / (pi alpha^2 N.H^4),
+ *   tan^2(theta_h) = (1 - N.H^2) / N.H^2
+ * evaluated as (1/pi) (alpha r)^2 2^y, r = 1 / (N.H alpha)^2,
+ * y = -log2(e) (1 - N.H)(1 + N.H) r (no cancellation at the peak).  Where
+ * y < -160 the result is 0 (the true D is below 2^-136 there), which also
+ * covers N.H -> 0.  Domain: N.H in [0, 1], alpha in [FACET_ALPHA_MIN, 1].
+ * D(1) = 1/(pi alpha^2), D(0) = 0.
+ * Error: <= FACET_ERR_BECKMANN_D_F32 (2^-15); measured max 2^-15.59 (every port,
+ * 300 k samples) at (0.997685969, 0.00783577561), where D = 7.4e-30 (y = -109).
+ * Cost: 36 ops (0 rsqrt, 1 rcp). */
+float facet_beckmann_d_f32(float noh, float alpha);
+
+/* Anisotropic GGX with widths alpha_x (along the tangent T) and alpha_y
+ * (along the bitangent B); toh = T.H, boh = B.H, noh = N.H, the components
+ * of a unit h in the tangent frame:
+ *   D = 1 / (pi ax ay ((T.H/ax)^2 + (B.H/ay)^2 + N.H^2)^2)
+ * evaluated as ax^3 ay^3 / (pi K^2), K = T.H^2 ay^2 + B.H^2 ax^2 +
+ * N.H^2 ax^2 ay^2 (all terms >= 0: no cancellation at the peak).
+ * ggx_aniso_d(n, t, b, a, a) = ggx_d(n, a) for a unit h (t^2 + b^2 = 1 - n^2).
+ * Domain: N.H in [0, 1], T.H and B.H in [-1, 1] (clamped like L.V: NaN and
+ * -Inf to -1), alpha_x, alpha_y in [FACET_ALPHA_MIN, 1].  Inputs no unit h
+ * has: K is floored at ax^2 ay^2 / 2 (the bracket at 1/2), so D <= 4 / (pi ax ay).
+ * Error: <= FACET_ERR_GGX_ANISO_D_F32 (2^-20.5); measured max 2^-20.78 (every port,
+ * 300 k samples) at (0.998403668, 0.0521120951, -0.0217817482, 0.621842802, 0.203452751).
+ * Cost: 32 ops (0 rsqrt, 1 rcp). */
+float facet_ggx_aniso_d_f32(float noh, float toh, float boh, float alpha_x, float alpha_y);
+
+/* Generalized Trowbridge-Reitz (GTR, Burley 2012; Dimov 2015) with tail
+ * exponent gamma:
+ *   D = c / (1 + (alpha^2 - 1) N.H^2)^gamma,
+ *   c = (gamma - 1)(alpha^2 - 1) / (pi (1 - alpha^(2 (1 - gamma))))
+ * with its limits: gamma = 1 (GTR1, "Berry"): c = (alpha^2 - 1) / (pi ln alpha^2);
+ * alpha = 1: c = 1/pi.  gamma = 2 is GGX: c = alpha^2 / pi, gtr_d(n, a, 2)
+ * equals ggx_d(n, a) to within both bounds; gamma = 0 is D = 1/pi.
+ * Evaluated without a special case: with L = log2 alpha^2 and
+ * E(y) = (2^y - 1) / y, c = E(L) / (pi E((1 - gamma) L)), and
+ * d^-gamma = 2^(-gamma log2 d), d = (1 - N.H)(1 + N.H) + (N.H alpha)^2.
+ * Domain: N.H in [0, 1], alpha in [FACET_ALPHA_MIN, 1], gamma in [0, 4]
+ * (Dimov's range; gamma clamped, NaN and -Inf to 0, +Inf to 4).
+ * D(1) = c / alpha^(2 gamma) (up to 1.3e6 at gamma = 4, alpha_min).
+ * Error: <= FACET_ERR_GTR_D_F32 (2^-16.5); measured max 2^-16.94 (every port,
+ * 300 k samples) at (0.999999762, 0.00208001724, 3.75617146): at the peak of a
+ * heavy tail, 2^(-gamma log2 d) with -gamma log2 d = 66.7 (its rounding and
+ * log2's) against c = 2^-60.
+ * Cost: 136 ops (0 rsqrt, 5 rcp). */
+float facet_gtr_d_f32(float noh, float alpha, float gamma);
 
 /* Exact Smith masking for GGX:
  *   G1 = 2 N.V / (N.V + sqrt(alpha^2 + (1 - alpha^2) N.V^2)) = 1 / (1 + Lambda)
@@ -182,6 +280,45 @@ float facet_smith_vis_f32(float nol, float nov, float alpha);
  * 30 M samples) at (0.516059339, 0.018353641).
  * Cost: 11 ops (0 rsqrt, 1 rcp). */
 float facet_smith_g1_hammon_f32(float nov, float alpha);
+
+/* Smith G1 for the GTR distribution (gtr_d), Dimov 2015: the exact
+ * G1 = 1 / (1 + Lambda) has closed forms at gamma = 0, 1, 2, 3, 4, here in
+ * N.V (n) with s2 = 1 - n^2 and W = sqrt(n^2 + alpha^2 s2):
+ *   G^0 = 2n / (1 + n)
+ *   G^1 = n / (n + e s2 (W + n (1 - R(u))) / ((W + 1)(n + W))),
+ *         e = (alpha^2 - 1) / ln alpha^2, R(u) = ln(1 + u) / u,
+ *         u = (1 - alpha^2) s2 / ((W + 1)(n + W))
+ *   G^2 = 2n / (n + W)                           (= smith_g1, GGX)
+ *   G^3 = 4 (1 + alpha^2) n W / (alpha^2 (3 alpha^2 + 1) s2 + 2 (1 + alpha^2) n (n + W))
+ *   G^4 = 2 K n W^3 / (K n (W^3 + n^3) + 3 alpha^2 (alpha^2 P5 s2^2 + 4 n^2 s2 P2)),
+ *         K = 8 (alpha^4 + alpha^2 + 1), P5 = 5 alpha^4 + 2 alpha^2 + 1,
+ *         P2 = 2 alpha^4 + alpha^2 + 1
+ * (Dimov's mu-forms multiplied through by sin theta_v; his G^1 divided by
+ * ln alpha^2, so alpha = 1 is no 0/0; each checked against the exact G1 by
+ * quadrature to 2e-11, tests/test_oracle.c), and between the orders the
+ * monotone cubic Hermite interpolant in gamma (Fritsch-Carlson, MATLAB's
+ * pchip) through the five values.  Dimov interpolates "by a spline"
+ * without naming it; the natural cubic spline overshoots to G1 = -0.099
+ * (N.V = 0.0017, alpha = 2^-10, gamma = 0.56), pchip stays between
+ * neighbouring values.  At the integer orders the result is the closed form.
+ * Domain: N.V in [0, 1], alpha in [FACET_ALPHA_MIN, 1], gamma in [0, 4] (as
+ * gtr_d).  G1(0) = 0, G1(1) = 1; result in [0, 1].
+ * Model error (against the exact G1 of gtr_d by quadrature,
+ * facet_oracle_smith_g1_gtr_exact): exact at gamma = 0 .. 4; between them
+ * max 0.338 absolute at (N.V 0.018, alpha 2^-10, gamma 1.4), where the exact
+ * G1 moves steeply with gamma just above 1; mean 0.0077 (0.015 relative)
+ * over N.V in [2^-10, 1], alpha in [2^-10, 1], gamma in [0.1, 3.9]; for
+ * alpha >= 0.1 max 0.036 (N.V 0.275, alpha 0.1, gamma 0.5), mean 0.0014.
+ * (Dimov reports about 0.1% against Monte Carlo for his alpha range.)
+ * The f32_fast tier keeps the precise rsqrt for W (cubed in G^4) and the
+ * precise reciprocals (the interpolation's slopes are differences of the
+ * five values, which amplify their errors); only 2^y's differs.
+ * Error (against the interpolation of the closed forms in double,
+ * facet_oracle_smith_g1_gtr): <= FACET_ERR_SMITH_G1_GTR_F32 (2^-20); measured
+ * max 2^-20.89 (sse2, 300 k samples) at (0.00778461341, 0.126742497, 3.8678031);
+ * f32_fast 2^-14.27 (avx512; 2^-14.01 with estimates at the bound).
+ * Cost: 265 ops (1 rsqrt, 15 rcp). */
+float facet_smith_g1_gtr_f32(float nov, float alpha, float gamma);
 
 /* Hammon's G2 approximation:
  *   G2 ~ 2 N.L N.V / lerp(2 N.L N.V, N.L + N.V, alpha)
@@ -320,7 +457,15 @@ void facet_fresnel_schlick_f32_batch(float *out, const float *f0, const float *c
 void facet_fresnel_cook_torrance_f32_batch(float *out, const float *f0, const float *voh, size_t n);
 void facet_fresnel_schlick_f90_f32_batch(float *out, const float *f0, const float *f90,
                                          const float *voh, size_t n);
+void facet_fresnel_schlick_sg_f32_batch(float *out, const float *f0, const float *cos_theta,
+                                        size_t n);
 void facet_ggx_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_blinn_phong_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_beckmann_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_ggx_aniso_d_f32_batch(float *out, const float *noh, const float *toh, const float *boh,
+                                 const float *alpha_x, const float *alpha_y, size_t n);
+void facet_gtr_d_f32_batch(float *out, const float *noh, const float *alpha, const float *gamma,
+                           size_t n);
 void facet_smith_g1_f32_batch(float *out, const float *nov, const float *alpha, size_t n);
 void facet_smith_g2_f32_batch(float *out, const float *nol, const float *nov, const float *alpha,
                               size_t n);
@@ -329,6 +474,8 @@ void facet_smith_g2_uncorrelated_f32_batch(float *out, const float *nol, const f
 void facet_smith_vis_f32_batch(float *out, const float *nol, const float *nov, const float *alpha,
                                size_t n);
 void facet_smith_g1_hammon_f32_batch(float *out, const float *nov, const float *alpha, size_t n);
+void facet_smith_g1_gtr_f32_batch(float *out, const float *nov, const float *alpha,
+                                  const float *gamma, size_t n);
 void facet_smith_g2_hammon_f32_batch(float *out, const float *nol, const float *nov,
                                      const float *alpha, size_t n);
 void facet_smith_vis_hammon_f32_batch(float *out, const float *nol, const float *nov,
@@ -469,18 +616,28 @@ void facet_shade_hammon_rgb_f32_fast(float out[3], const facet_dirs_f32 *dirs,
  * the worst port): diffuse_burley 2^-13.55, diffuse_oren_nayar 2^-14.17,
  * diffuse_hammon_hybrid 2^-13.47, diffuse_hammon_cheap 2^-13.42; with
  * estimates at the architectural bound (tests/suites/15-worst-estimates.sh,
- * 30 k samples) at most 2^-13.01 (hybrid and cheap, avx512). */
+ * 30 k samples) at most 2^-13.01 (hybrid and cheap, avx512).  The D terms
+ * beyond GGX: blinn_phong_d and beckmann_d are the precise code (every
+ * reciprocal is raised to a power); ggx_aniso_d measured 2^-14.18, gtr_d
+ * 2^-13.63 (2^-12.95 with estimates at the architectural bound),
+ * smith_g1_gtr 2^-14.01 (avx512, estimates at the bound). */
 #define FACET_ERR_NOH_FROM_DOTS_F32_FAST          8.632e-05 /* 2^-13.5 */
 #define FACET_ERR_LOH_FROM_DOTS_F32_FAST          8.632e-05 /* 2^-13.5 */
 #define FACET_ERR_FRESNEL_SCHLICK_F32_FAST        4.769e-07 /* 2^-21 */
 #define FACET_ERR_FRESNEL_COOK_TORRANCE_F32_FAST  1.907e-06 /* 2^-19 */
 #define FACET_ERR_FRESNEL_SCHLICK_F90_F32_FAST    4.769e-07 /* 2^-21 */
+#define FACET_ERR_FRESNEL_SCHLICK_SG_F32_FAST     1.349e-06 /* 2^-19.5 */
 #define FACET_ERR_GGX_D_F32_FAST                  1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_BLINN_PHONG_D_F32_FAST          3.052e-05 /* 2^-15 */
+#define FACET_ERR_BECKMANN_D_F32_FAST             3.052e-05 /* 2^-15 */
+#define FACET_ERR_GGX_ANISO_D_F32_FAST            8.632e-05 /* 2^-13.5 */
+#define FACET_ERR_GTR_D_F32_FAST                  1.726e-04 /* 2^-12.5 */
 #define FACET_ERR_SMITH_G1_F32_FAST               1.726e-04 /* 2^-12.5 */
 #define FACET_ERR_SMITH_G2_F32_FAST               1.726e-04 /* 2^-12.5 */
 #define FACET_ERR_SMITH_G2_UNCORRELATED_F32_FAST  2.441e-04 /* 2^-12 */
 #define FACET_ERR_SMITH_VIS_F32_FAST              1.726e-04 /* 2^-12.5 */
 #define FACET_ERR_SMITH_G1_HAMMON_F32_FAST        8.632e-05 /* 2^-13.5 */
+#define FACET_ERR_SMITH_G1_GTR_F32_FAST           1.221e-04 /* 2^-13 */
 #define FACET_ERR_SMITH_G2_HAMMON_F32_FAST        8.632e-05 /* 2^-13.5 */
 #define FACET_ERR_SMITH_VIS_HAMMON_F32_FAST       8.632e-05 /* 2^-13.5 */
 #define FACET_ERR_DIFFUSE_HAMMON_F32_FAST         1.726e-04 /* 2^-12.5 */
@@ -496,12 +653,18 @@ float facet_loh_from_dots_f32_fast(float lov);
 float facet_fresnel_schlick_f32_fast(float f0, float cos_theta);
 float facet_fresnel_cook_torrance_f32_fast(float f0, float voh);
 float facet_fresnel_schlick_f90_f32_fast(float f0, float f90, float voh);
+float facet_fresnel_schlick_sg_f32_fast(float f0, float cos_theta);
 float facet_ggx_d_f32_fast(float noh, float alpha);
+float facet_blinn_phong_d_f32_fast(float noh, float alpha);
+float facet_beckmann_d_f32_fast(float noh, float alpha);
+float facet_ggx_aniso_d_f32_fast(float noh, float toh, float boh, float alpha_x, float alpha_y);
+float facet_gtr_d_f32_fast(float noh, float alpha, float gamma);
 float facet_smith_g1_f32_fast(float nov, float alpha);
 float facet_smith_g2_f32_fast(float nol, float nov, float alpha);
 float facet_smith_g2_uncorrelated_f32_fast(float nol, float nov, float alpha);
 float facet_smith_vis_f32_fast(float nol, float nov, float alpha);
 float facet_smith_g1_hammon_f32_fast(float nov, float alpha);
+float facet_smith_g1_gtr_f32_fast(float nov, float alpha, float gamma);
 float facet_smith_g2_hammon_f32_fast(float nol, float nov, float alpha);
 float facet_smith_vis_hammon_f32_fast(float nol, float nov, float alpha);
 float facet_diffuse_hammon_f32_fast(float nol, float nov, float lov, float alpha, float albedo);
@@ -524,7 +687,16 @@ void facet_fresnel_cook_torrance_f32_fast_batch(float *out, const float *f0, con
                                                 size_t n);
 void facet_fresnel_schlick_f90_f32_fast_batch(float *out, const float *f0, const float *f90,
                                               const float *voh, size_t n);
+void facet_fresnel_schlick_sg_f32_fast_batch(float *out, const float *f0,
+                                             const float *cos_theta, size_t n);
 void facet_ggx_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_blinn_phong_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_beckmann_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_ggx_aniso_d_f32_fast_batch(float *out, const float *noh, const float *toh,
+                                      const float *boh, const float *alpha_x,
+                                      const float *alpha_y, size_t n);
+void facet_gtr_d_f32_fast_batch(float *out, const float *noh, const float *alpha,
+                                const float *gamma, size_t n);
 void facet_smith_g1_f32_fast_batch(float *out, const float *nov, const float *alpha, size_t n);
 void facet_smith_g2_f32_fast_batch(float *out, const float *nol, const float *nov, const float *alpha,
                               size_t n);
@@ -533,6 +705,8 @@ void facet_smith_g2_uncorrelated_f32_fast_batch(float *out, const float *nol, co
 void facet_smith_vis_f32_fast_batch(float *out, const float *nol, const float *nov, const float *alpha,
                                size_t n);
 void facet_smith_g1_hammon_f32_fast_batch(float *out, const float *nov, const float *alpha, size_t n);
+void facet_smith_g1_gtr_f32_fast_batch(float *out, const float *nov, const float *alpha,
+                                       const float *gamma, size_t n);
 void facet_smith_g2_hammon_f32_fast_batch(float *out, const float *nol, const float *nov,
                                      const float *alpha, size_t n);
 void facet_smith_vis_hammon_f32_fast_batch(float *out, const float *nol, const float *nov,

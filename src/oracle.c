@@ -18,6 +18,7 @@ static double cosd(double x) { return clampd(x, FACET_COS_MIN, 1.0); }
 static double unitd(double x) { return clampd(x, 0.0, 1.0); }
 static double alphad(double x) { return clampd(x, FACET_ALPHA_MIN, 1.0); }
 static double lerpd(double a, double b, double t) { return a + t * (b - a); }
+static double sgnd(double x) { return clampd(x, -1.0, 1.0); }
 
 /* ---- double-double, for the geometry only --------------------------------
  * Building L and V from their dots cancels badly where L and V are nearly
@@ -240,6 +241,13 @@ double facet_oracle_fresnel_cook_torrance(double f0, double voh)
     return 0.5 * (rs * rs + rp * rp);
 }
 
+/* the spherical-Gaussian Schlick: f0 + (1 - f0) 2^((-5.55473 c - 6.98316) c) */
+double facet_oracle_fresnel_schlick_sg(double f0, double cos_theta)
+{
+    double f = unitd(f0), c = unitd(cos_theta);
+    return f + (1.0 - f) * exp2((-5.55473 * c - 6.98316) * c);
+}
+
 /* D(m) = alpha^2 / (pi cos^4(theta_m) (alpha^2 + tan^2(theta_m))^2) */
 double facet_oracle_ggx_d_tan2(double tan2_h, double cos_h, double alpha)
 {
@@ -255,6 +263,241 @@ double facet_oracle_ggx_d(double noh, double alpha)
     /* sin^2 as (1 - c)(1 + c), exact but for two roundings: 1 - c*c would
      * cost 2^-53 absolute, ~1e-10 of D at the peak for alpha = 2^-10 */
     return facet_oracle_ggx_d_tan2((1.0 - c) * (1.0 + c) / (c * c), c, a);
+}
+
+/* ---- D terms beyond GGX ----------------------------------------------------
+ * From the definitions, with pow/exp/expm1; each normalised so that the
+ * integral of D(m) (n.m) over the hemisphere is 1 (tests/test_oracle.c
+ * checks it by quadrature). */
+
+/* Blinn-Phong: N.H^p / (pi alpha^2), p = 2 / alpha^2 - 2 = 2 (1 - alpha^2) / alpha^2 */
+double facet_oracle_blinn_phong_d(double noh, double alpha)
+{
+    double n = unitd(noh), a = alphad(alpha), a2 = a * a;
+    double p = 2.0 * (1.0 - a) * (1.0 + a) / a2;
+    return pow(n, p) / (PI * a2);
+}
+
+/* Beckmann: exp(-tan^2 / alpha^2) / (pi alpha^2 cos^4) */
+double facet_oracle_beckmann_d(double noh, double alpha)
+{
+    double n = unitd(noh), a = alphad(alpha), a2 = a * a, t2;
+    if (n == 0.0)
+        return 0.0; /* the limit */
+    t2 = (1.0 - n) * (1.0 + n) / (n * n);
+    return exp(-t2 / a2) / (PI * a2 * n * n * n * n);
+}
+
+/* anisotropic GGX: 1 / (pi ax ay k^2), k = (T.H/ax)^2 + (B.H/ay)^2 + N.H^2,
+ * k floored at 1/2 (the contract's extension to non-unit h) */
+double facet_oracle_ggx_aniso_d(double noh, double toh, double boh, double alpha_x,
+                                double alpha_y)
+{
+    double ax = alphad(alpha_x), ay = alphad(alpha_y), n = unitd(noh);
+    double x = sgnd(toh) / ax, y = sgnd(boh) / ay;
+    double k = fmax(x * x + y * y + n * n, 0.5);
+    return 1.0 / (PI * ax * ay * k * k);
+}
+
+/* GTR: c / (1 + (alpha^2 - 1) N.H^2)^gamma,
+ * c = (gamma - 1)(alpha^2 - 1) / (pi (1 - alpha^(2 (1 - gamma)))), with its
+ * limits: (alpha^2 - 1) / (pi ln alpha^2) at gamma = 1, 1/pi at alpha = 1. */
+static double gtr_gamma(double g) { return clampd(g, 0.0, 4.0); }
+
+double facet_oracle_gtr_d(double noh, double alpha, double gamma)
+{
+    double n = unitd(noh), a = alphad(alpha), g = gtr_gamma(gamma), a2 = a * a, c, d;
+    double la2 = 2.0 * log(a);
+    if (a == 1.0)
+        c = 1.0 / PI;
+    else if (g == 1.0)
+        c = (a2 - 1.0) / (PI * la2);
+    else
+        c = (g - 1.0) * (a2 - 1.0) / (PI * -expm1((1.0 - g) * la2));
+    d = (1.0 - n) * (1.0 + n) + (n * a) * (n * a);
+    return c / pow(d, g);
+}
+
+/* ---- Smith G1 for GTR (Dimov 2015) ----------------------------------------
+ * Closed forms of G1 = 1 / (1 + Lambda) for gamma = 0 .. 4, rewritten from
+ * mu = cot(theta_v) to n = N.V (multiplying through by sin theta_v = sqrt(s2),
+ * s2 = 1 - n^2), with W = sqrt(n^2 + alpha^2 s2) (mu^2 + alpha^2 = W^2 / s2):
+ *   G^0 = 2n / (1 + n)                         (the uniform D, 1/pi)
+ *   G^1 = n / (n + e s2 (W + n (1 - R(u))) / ((W + 1)(n + W))),
+ *         e = (alpha^2 - 1) / ln alpha^2, u = (1 - alpha^2) s2 / ((W + 1)(n + W)),
+ *         R(u) = ln(1 + u) / u   (Dimov's form divided through by ln alpha^2:
+ *         A - B = (alpha^2 - 1) / (A + B), and the log of
+ *         (mu + B) / (mu + A) = 1 + u; no 0/0 at alpha = 1)
+ *   G^2 = 2n / (n + W)                         (GGX, smith_g1)
+ *   G^3 = 4 (1 + alpha^2) n W / (alpha^2 (3 alpha^2 + 1) s2 + 2 (1 + alpha^2) n (n + W))
+ *   G^4 = 2 K n W^3 / (K n (W^3 + n^3) + 3 alpha^2 (alpha^2 P5 s2^2 + 4 n^2 s2 P2)),
+ *         K = 8 (alpha^4 + alpha^2 + 1), P5 = 5 alpha^4 + 2 alpha^2 + 1,
+ *         P2 = 2 alpha^4 + alpha^2 + 1.
+ * All equal 2n / (1 + n) at alpha = 1.  Between the orders, Dimov
+ * interpolates "by a spline" without saying which: we take the monotone
+ * piecewise cubic Hermite interpolant (Fritsch-Carlson, as MATLAB's pchip)
+ * through the five values at gamma = 0, 1, 2, 3, 4, which stays between
+ * neighbouring values; the natural cubic spline overshoots to G1 = -0.099
+ * (N.V = 0.0017, alpha = 2^-10, gamma = 0.56). */
+static void g1_gtr_orders(double n, double a, double g[5])
+{
+    double a2 = a * a, s2 = (1.0 - n) * (1.0 + n), W = sqrt(n * n + a2 * s2);
+    double la2 = 2.0 * log(a), e = a == 1.0 ? 1.0 : expm1(la2) / la2;
+    double u = (1.0 - a2) * s2 / ((W + 1.0) * (n + W)), R = u > 0.0 ? log1p(u) / u : 1.0;
+    double K = 8.0 * (a2 * a2 + a2 + 1.0), P5 = 5.0 * a2 * a2 + 2.0 * a2 + 1.0;
+    double P2 = 2.0 * a2 * a2 + a2 + 1.0, W3 = W * W * W;
+    if (n == 0.0) {
+        g[0] = g[1] = g[2] = g[3] = g[4] = 0.0;
+        return;
+    }
+    g[0] = 2.0 * n / (1.0 + n);
+    g[1] = n / (n + e * s2 * (W + n * (1.0 - R)) / ((W + 1.0) * (n + W)));
+    g[2] = 2.0 * n / (n + W);
+    g[3] = 4.0 * (1.0 + a2) * n * W / (a2 * (3.0 * a2 + 1.0) * s2 + 2.0 * (1.0 + a2) * n * (n + W));
+    g[4] = 2.0 * K * n * W3 / (K * n * (W3 + n * n * n) + 3.0 * a2 * (a2 * P5 * s2 * s2 + 4.0 * n * n * s2 * P2));
+}
+
+double facet_oracle_smith_g1_gtr_order(double nov, double alpha, int order)
+{
+    double g[5];
+    g1_gtr_orders(unitd(nov), alphad(alpha), g);
+    return g[order < 0 ? 0 : order > 4 ? 4 : order];
+}
+
+/* Fritsch-Carlson end slope (MATLAB pchip's): the one-sided three-point
+ * estimate, zeroed if it points against the first secant, limited to 3 times
+ * it where the data turn */
+static double pchip_end(double d0, double d1)
+{
+    double m = (3.0 * d0 - d1) / 2.0;
+    if (m * d0 <= 0.0)
+        return 0.0;
+    if (d0 * d1 <= 0.0 && fabs(m) > 3.0 * fabs(d0))
+        return 3.0 * d0;
+    return m;
+}
+
+double facet_oracle_smith_g1_gtr(double nov, double alpha, double gamma)
+{
+    double y[5], d[4], m[5], t, G = gtr_gamma(gamma);
+    int j, k;
+    g1_gtr_orders(unitd(nov), alphad(alpha), y);
+    for (k = 0; k < 4; k++)
+        d[k] = y[k + 1] - y[k];
+    for (k = 1; k < 4; k++) /* harmonic mean of the secants, 0 at a turn */
+        m[k] = d[k - 1] * d[k] > 0.0 ? 2.0 * d[k - 1] * d[k] / (d[k - 1] + d[k]) : 0.0;
+    m[0] = pchip_end(d[0], d[1]);
+    m[4] = pchip_end(d[3], d[2]);
+    j = G >= 3.0 ? 3 : (int)G;
+    t = G - j;
+    return (1.0 + 2.0 * t) * (1.0 - t) * (1.0 - t) * y[j] + t * t * (3.0 - 2.0 * t) * y[j + 1]
+           + t * (1.0 - t) * (1.0 - t) * m[j] - t * t * (1.0 - t) * m[j + 1];
+}
+
+/* The exact G1 of GTR by quadrature, from the Smith normalisation
+ * int G1(v) max(0, v.m) D(m) dw_m = N.V with G1 independent of m:
+ * G1 = N.V / I, I = int_0^{pi/2} D(theta) f(theta) sin(theta) dtheta, where
+ * the azimuth integral f = int max(0, a cos phi + b) dphi (a = sin theta_v
+ * sin theta, b = N.V cos theta) is 2 pi b for b >= a, else
+ * 2 (a sin phi_c + b phi_c), cos phi_c = -b / a.  Gauss-Legendre (32
+ * nodes, computed here) on panels doubling away from the peak, with the
+ * kink at theta = pi/2 - theta_v a breakpoint and the panel after it mapped
+ * by u^2 (f - its left side behaves like (theta - kink)^(3/2)). */
+typedef struct { double n, sv, a, g; } g1x_ctx;
+
+static double g1x_f(double th, const g1x_ctx *k)
+{
+    double ct = cos(th), st = sin(th), a = k->sv * st, b = k->n * ct, f;
+    if (b >= a)
+        f = 2.0 * PI * b;
+    else {
+        double r = b / a;
+        f = 2.0 * (a * sqrt((1.0 - r) * (1.0 + r)) + b * acos(-r));
+    }
+    return facet_oracle_gtr_d(ct, k->a, k->g) * f * st;
+}
+
+#define GLN_ 32
+static void g1x_rule(double *x, double *w)
+{
+    int i, k, it;
+    for (i = 0; i < GLN_; i++) {
+        double z = cos(PI * (i + 0.75) / (GLN_ + 0.5)), p0, p1, dp;
+        for (it = 0; it < 100; it++) {
+            double dz;
+            p0 = 1.0;
+            p1 = z;
+            for (k = 2; k <= GLN_; k++) {
+                double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
+                p0 = p1;
+                p1 = p2;
+            }
+            dp = GLN_ * (z * p1 - p0) / (z * z - 1.0);
+            dz = p1 / dp;
+            z -= dz;
+            if (fabs(dz) < 1e-16)
+                break;
+        }
+        p0 = 1.0;
+        p1 = z;
+        for (k = 2; k <= GLN_; k++) {
+            double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
+            p0 = p1;
+            p1 = p2;
+        }
+        dp = GLN_ * (z * p1 - p0) / (z * z - 1.0);
+        x[i] = z;
+        w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
+    }
+}
+
+static double g1x_panel(const g1x_ctx *k, double lo, double hi, int sq, const double *x, const double *w)
+{
+    double s = 0.0;
+    int i;
+    for (i = 0; i < GLN_; i++) {
+        if (sq) {
+            double u = 0.5 + 0.5 * x[i];
+            s += w[i] * g1x_f(lo + (hi - lo) * u * u, k) * 2.0 * u;
+        } else
+            s += w[i] * g1x_f(0.5 * (lo + hi) + 0.5 * (hi - lo) * x[i], k);
+    }
+    return 0.5 * (hi - lo) * s;
+}
+
+double facet_oracle_smith_g1_gtr_exact(double nov, double alpha, double gamma)
+{
+    double x[GLN_], w[GLN_], bp[96], I = 0.0, kink, t;
+    g1x_ctx k;
+    int nb = 0, i, j;
+    k.n = unitd(nov);
+    k.a = alphad(alpha);
+    k.g = gtr_gamma(gamma);
+    k.sv = sqrt((1.0 - k.n) * (1.0 + k.n));
+    if (k.n == 0.0)
+        return 0.0;
+    g1x_rule(x, w);
+    kink = atan2(k.n, k.sv); /* pi/2 - theta_v */
+    bp[nb++] = 0.0;
+    for (t = k.a / 256.0; t < 0.7 * PI / 2; t *= 2.0)
+        bp[nb++] = t;
+    bp[nb++] = PI / 2;
+    if (k.sv > 0.0) {
+        bp[nb++] = kink;
+        for (j = 0; j <= 16; j++)
+            bp[nb++] = kink + (PI / 2 - kink) * exp2(-j);
+    }
+    /* sort (insertion: at most ~45 entries) */
+    for (i = 1; i < nb; i++)
+        for (j = i; j > 0 && bp[j - 1] > bp[j]; j--) {
+            t = bp[j];
+            bp[j] = bp[j - 1];
+            bp[j - 1] = t;
+        }
+    for (i = 0; i + 1 < nb; i++)
+        if (bp[i + 1] > bp[i])
+            I += g1x_panel(&k, bp[i], bp[i + 1], k.sv > 0.0 && bp[i] == kink, x, w);
+    return fmin(k.n / I, 1.0);
 }
 
 /* Lambda(theta) = (-1 + sqrt(1 + x)) / 2, x = alpha^2 tan^2 theta; for
@@ -429,7 +672,6 @@ double facet_oracle_lambert(double albedo)
  * Domain handling as the contracts. */
 #define U_MAX_ 0.99999994039535522 /* 1 - 2^-24 */
 static double ud(double u) { return clampd(u, 0.0, U_MAX_); }
-static double sgnd(double x) { return clampd(x, -1.0, 1.0); }
 
 static void normalize3(double h[3], double x, double y, double z)
 {

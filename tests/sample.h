@@ -78,16 +78,40 @@ static float smp_unit(smp_rng *r)
     }
 }
 
-/* The low end of input i's domain (facet.h): -1 for L.V, alpha_min for
- * alpha, FACET_COS_MIN for N.L / N.V of the two-cosine kernels, else 0;
- * the high end is 1 for every input. */
+/* The low end of input i's domain (facet.h): -1 for L.V, T.H and B.H,
+ * alpha_min for alpha (alpha_x, alpha_y), FACET_COS_MIN for N.L / N.V of the
+ * two-cosine kernels (those with an N.L), else 0; the high end (smp_domain_hi) is 4 for the GTR
+ * tail gamma and 1 for every other input. */
+/* a two-cosine kernel: it takes N.L (and N.V); a kernel of N.V alone
+ * (smith_g1, smith_g1_gtr) takes N.V in [0, 1] */
+static inline int smp_two_cos(const facet_kernel *k)
+{
+    return !strcmp(k->inputs[0], "nol");
+}
+
 static inline float smp_domain_lo(const facet_kernel *k, int i)
 {
     const char *n = k->inputs[i];
-    if (!strcmp(n, "lov")) return -1.0f;
-    if (!strcmp(n, "alpha")) return FACET_ALPHA_MIN;
-    if (k->n_inputs > 2 && (!strcmp(n, "nol") || !strcmp(n, "nov"))) return FACET_COS_MIN;
+    if (!strcmp(n, "lov") || !strcmp(n, "toh") || !strcmp(n, "boh")) return -1.0f;
+    if (!strncmp(n, "alpha", 5)) return FACET_ALPHA_MIN;
+    if (smp_two_cos(k) && (!strcmp(n, "nol") || !strcmp(n, "nov"))) return FACET_COS_MIN;
     return 0.0f;
+}
+
+static inline float smp_domain_hi(const facet_kernel *k, int i)
+{
+    return !strcmp(k->inputs[i], "gamma") ? 4.0f : 1.0f;
+}
+
+/* GTR's gamma in [0, 4]: the closed-form orders 0 .. 4 exactly, next to 1
+ * (the limit), or uniform */
+static float smp_gamma(smp_rng *r)
+{
+    switch (smp_next(r) % 4) {
+    case 0: return (float)(smp_next(r) % 9) * 0.5f;
+    case 1: return (float)(1.0 + ((smp_next(r) & 1) ? 1 : -1) * smp_log2u(r, -24, -4));
+    default: return (float)(4.0 * smp_u01(r));
+    }
 }
 
 /* The first (best) port this CPU runs: what "auto" must choose. */
@@ -112,14 +136,23 @@ static void smp_inputs(smp_rng *r, const facet_kernel *k, float *in)
     for (i = 0; i < k->n_inputs; i++) {
         const char *n = k->inputs[i];
         if (!strcmp(n, "nol")) in[i] = nl;
-        else if (!strcmp(n, "nov")) in[i] = k->n_inputs == 2 ? smp_unit(r) : nv;
+        else if (!strcmp(n, "nov")) in[i] = smp_two_cos(k) ? nv : smp_unit(r);
         else if (!strcmp(n, "lov")) in[i] = k->n_inputs == 1 ? (float)(2 * smp_u01(r) - 1) : lv;
-        else if (!strcmp(n, "alpha")) in[i] = smp_alpha(r);
+        else if (!strncmp(n, "alpha", 5)) in[i] = smp_alpha(r);
+        else if (!strcmp(n, "gamma")) in[i] = smp_gamma(r);
+        else if (!strcmp(n, "toh") || !strcmp(n, "boh")) in[i] = (float)(2 * smp_u01(r) - 1);
         else if (!strcmp(n, "noh")) in[i] = (smp_next(r) & 1) ? smp_unit(r) : (float)(1.0 - smp_log2u(r, -24, -4));
         else in[i] = smp_unit(r);
     }
     if (k->n_inputs == 1 && !strcmp(k->inputs[0], "lov") && (smp_next(r) & 3) == 0)
         in[0] = (float)(-1.0 + smp_log2u(r, -24, 0));
+    /* (N.H, T.H, B.H): mostly the components of a unit h, 1 in 8 anything */
+    if (k->n_inputs >= 3 && !strcmp(k->inputs[0], "noh") && !strcmp(k->inputs[1], "toh")
+        && (smp_next(r) & 7) != 0) {
+        double phi = 2 * M_PI * smp_u01(r), n = in[0], st = sqrt((1 - n) * (1 + n));
+        in[1] = (float)(st * cos(phi));
+        in[2] = (float)(st * sin(phi));
+    }
 }
 
 #endif

@@ -136,7 +136,7 @@ static int in_domain(const facet_kernel *k, const float *in)
 {
     int i;
     for (i = 0; i < k->n_inputs; i++)
-        if (!(in[i] >= smp_domain_lo(k, i) && in[i] <= 1.0f))
+        if (!(in[i] >= smp_domain_lo(k, i) && in[i] <= smp_domain_hi(k, i)))
             return 0;
     return 1;
 }
@@ -182,8 +182,10 @@ static void dense_grid(const facet_kernel *k, int n, set *st)
             double u = (double)(r % n) / (n - 1);
             const char *nm = k->inputs[i];
             r /= n;
-            if (!strcmp(nm, "alpha")) in[i] = (float)exp2(-10.0 * (1.0 - u));
-            else if (!strcmp(nm, "lov")) in[i] = (float)(2.0 * u - 1.0);
+            if (!strncmp(nm, "alpha", 5)) in[i] = (float)exp2(-10.0 * (1.0 - u));
+            else if (!strcmp(nm, "lov") || !strcmp(nm, "toh") || !strcmp(nm, "boh"))
+                in[i] = (float)(2.0 * u - 1.0);
+            else if (!strcmp(nm, "gamma")) in[i] = (float)(4.0 * u);
             else if (!strcmp(nm, "noh")) in[i] = (float)(1.0 - exp2(-24.0 * u)); /* dense at the peak */
             else in[i] = (float)u;
         }

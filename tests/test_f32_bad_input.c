@@ -46,7 +46,7 @@ int main(void)
             for (pos = 0; pos < k->n_inputs; pos++)
                 for (b = 0; b < n_bad; b++) {
                     float in[FACET_MAX_INPUTS], ref_in[FACET_MAX_INPUTS], got, want;
-                    float lo = smp_domain_lo(k, pos), hi = 1.0f, v = bad[b];
+                    float lo = smp_domain_lo(k, pos), hi = smp_domain_hi(k, pos), v = bad[b];
                     smp_inputs(&rng, k, in);
                     memcpy(ref_in, in, sizeof in);
                     in[pos] = v;
@@ -118,6 +118,43 @@ int main(void)
             d = facet_ggx_d_f32(1.0f, a);
             CHECK(fabs(d - 1.0 / (M_PI * a * a)) <= 2e-7 * d, "D(1) = 1/(pi alpha^2) (alpha %g): %.9g", a, d);
         }
+        /* the D terms beyond GGX and the spherical-Gaussian Fresnel */
+        for (a = FACET_ALPHA_MIN; a <= 1.0f; a *= 2.0f) {
+            double pk = 1.0 / (M_PI * a * a), g, gg;
+            float n;
+            d = facet_blinn_phong_d_f32(1.0f, a);
+            CHECK(fabs(d - pk) <= 2e-7 * pk, "blinn_phong_d(1) = 1/(pi alpha^2) (alpha %g): %.9g", a, d);
+            d = facet_beckmann_d_f32(1.0f, a);
+            CHECK(fabs(d - pk) <= 2e-7 * pk, "beckmann_d(1) = 1/(pi alpha^2) (alpha %g): %.9g", a, d);
+            CHECK(facet_beckmann_d_f32(0.0f, a) == 0.0f, "beckmann_d(0) = 0 (alpha %g)", a);
+            CHECK(facet_blinn_phong_d_f32(0.0f, a) == (a < 1.0f ? 0.0f : (float)(1.0 / M_PI)),
+                  "blinn_phong_d(0) = 0 below alpha = 1, 1/pi at 1 (alpha %g)", a);
+            for (n = 0.0f; n <= 1.0f; n += 0.0625f) {
+                float st = sqrtf((1.0f - n) * (1.0f + n));
+                gg = facet_ggx_d_f32(n, a);
+                g = facet_gtr_d_f32(n, a, 2.0f);
+                CHECK(fabs(g - gg) <= (FACET_ERR_GTR_D_F32 + FACET_ERR_GGX_D_F32) * gg,
+                      "gtr_d(gamma = 2) = ggx_d (N.H %g, alpha %g): %.9g vs %.9g", n, a, g, gg);
+                g = facet_gtr_d_f32(n, a, 0.0f);
+                CHECK(fabs(g - 1.0 / M_PI) <= FACET_ERR_GTR_D_F32 / M_PI, "gtr_d(gamma = 0) = 1/pi: %.9g", g);
+                g = facet_ggx_aniso_d_f32(n, 0.6f * st, -0.8f * st, a, a);
+                CHECK(fabs(g - gg) <= 2.0 * (FACET_ERR_GGX_ANISO_D_F32 + FACET_ERR_GGX_D_F32) * gg + 1e-30,
+                      "ggx_aniso_d(alpha, alpha) = ggx_d (N.H %g, alpha %g): %.9g vs %.9g", n, a, g, gg);
+            }
+            CHECK(facet_fresnel_schlick_sg_f32(a, 0.0f) == 1.0f, "F_sg(f0, 0) = 1 (f0 = %g)", a);
+            CHECK(facet_smith_g1_gtr_f32(1.0f, a, 1.3f) == 1.0f && facet_smith_g1_gtr_f32(0.0f, a, 3.7f) == 0.0f,
+                  "G1_gtr(1) = 1, G1_gtr(0) = 0 (alpha %g)", a);
+            for (n = 0.0f; n <= 1.0f; n += 0.0625f) {
+                CHECK(same(facet_smith_g1_gtr_f32(n, a, 2.0f), facet_smith_g1_f32(n, a)),
+                      "G1_gtr(gamma = 2) is smith_g1 to the bit (N.V %g, alpha %g)", n, a);
+                g = facet_smith_g1_gtr_f32(n, a, 0.0f);
+                CHECK(fabs(g - 2.0 * n / (1.0 + n)) <= FACET_ERR_SMITH_G1_GTR_F32 * g,
+                      "G1_gtr(gamma = 0) = 2n / (1 + n) (N.V %g): %.9g", n, g);
+            }
+        }
+        CHECK(same(facet_gtr_d_f32(0.5f, 0.25f, 1.0f), facet_gtr_d_f32(0.5f, 0.25f, 0.99999994f))
+                  || fabs(facet_gtr_d_f32(0.5f, 0.25f, 1.0f) / facet_gtr_d_f32(0.5f, 0.25f, 0.99999994f) - 1.0) < 1e-6,
+              "gtr_d is continuous through gamma = 1");
         /* alpha = 0 evaluates at alpha_min */
         CHECK(same(facet_ggx_d_f32(1.0f, 0.0f), facet_ggx_d_f32(1.0f, FACET_ALPHA_MIN)), "D: alpha 0 -> alpha_min");
         CHECK(facet_brdf_hammon_f32(0.0f, 0.0f, -1.0f, 0.0f, 1.0f, 1.0f) < 1e16f,

@@ -141,12 +141,12 @@ static void test_port(const char *port, int lanes)
                     src[pos][j] = bad[j % n_bad];
                 run(k, src, 0, nb, 0, out);
                 for (j = 0; j < nb; j++) {
-                    float v = src[pos][j], lo = smp_domain_lo(k, pos);
+                    float v = src[pos][j], lo = smp_domain_lo(k, pos), hi = smp_domain_hi(k, pos);
                     if (!(out[j] == out[j]) || out[j] > FLT_MAX || out[j] < 0.0f || same(out[j], -0.0f))
                         bad_val++;
                     if (v != v && !same(out[j], 0.0f))
                         bad_nan++;
-                    src[pos][j] = v != v ? 0.5f : v < lo ? lo : v > 1.0f ? 1.0f : v;
+                    src[pos][j] = v != v ? 0.5f : v < lo ? lo : v > hi ? hi : v;
                 }
                 run(k, src, 0, nb, 0, ref + 128);
                 for (j = 0; j < nb; j++)

@@ -4,6 +4,7 @@
  * as a port with FMA executes them: add, sub, mul, fma, fnma, min, max,
  * sqr_err = 1; clamp = 2 (max, min); sel_lt = 2 (compare, blend);
  * keep_ord = 2 (ordered compare, mask: the NaN rule);
+ * the exponent-bit ops exp2i, getexp, getmant = 1;
  * rcp and rsqrt = 1 each, reported separately (their refinement steps are
  * the port's: see each port header). */
 #include <stdio.h>
@@ -30,6 +31,10 @@ static float cnt_keep_ord(float r, float a, float b) { n_ops += 2; return a == a
 static float cnt_rcp(float x) { n_rcp++; return 1.0f / x; }
 static float cnt_rsqrt(float x) { n_rsqrt++; return 1.0f / (float)sqrt(x); }
 static float cnt_sqr_err(float a, float p) { n_ops++; return (float)((double)a * a - p); }
+/* the exponent-bit ops count 1 each, as in tests/test_sample_prims.c */
+static float cnt_exp2i(float k) { n_ops++; return (float)ldexp(1.0, (int)k); }
+static float cnt_getexp(float x) { int e; n_ops++; frexp(x, &e); return (float)(e - 1); }
+static float cnt_getmant(float x) { int e; n_ops++; return 2.0f * (float)frexp(x, &e); }
 
 #define FACET_V float
 #define FACET_OP(op) cnt_##op

@@ -252,6 +252,114 @@ static void check_d_normalisation(void)
            agg_done(&aq));
 }
 
+/* ---- 1b. the other D terms: normalisation, GTR's limits -------------------
+ * Blinn-Phong, Beckmann and GTR (gamma = 0 .. 4, including the gamma = 1
+ * limit) in theta as above; anisotropic GGX in (theta, phi), h =
+ * (sin cos phi, sin sin phi, cos).  D(cos) is conditioned by its input as
+ * GGX's is (a relative 2^-53 in cos theta moves these D by up to about
+ * 2^-50 / alpha^2, times gamma for GTR), hence the same tolerance form. */
+typedef struct {
+    int which; /* 0 Blinn-Phong, 1 Beckmann, 2 GTR, 3 aniso GGX (phi integrated inside) */
+    double alpha, gamma, ax, ay;
+    const gl_rule *rphi;
+} dm_ctx;
+
+static double dm_phi_f(double phi, const void *c)
+{
+    const double *p = c; /* theta, ax, ay */
+    double st = sin(p[0]), ct = cos(p[0]);
+    return facet_oracle_ggx_aniso_d(ct, st * cos(phi), st * sin(phi), p[1], p[2]);
+}
+
+static double dm_f(double th, const void *c)
+{
+    const dm_ctx *k = c;
+    double ct = cos(th), st = sin(th), d;
+    if (k->which == 0)
+        d = facet_oracle_blinn_phong_d(ct, k->alpha);
+    else if (k->which == 1)
+        d = facet_oracle_beckmann_d(ct, k->alpha);
+    else if (k->which == 2)
+        d = facet_oracle_gtr_d(ct, k->alpha, k->gamma);
+    else {
+        double p[3], s = 0.0;
+        int j;
+        p[0] = th;
+        p[1] = k->ax;
+        p[2] = k->ay;
+        for (j = 0; j < 8; j++) /* 8 panels over [0, 2 pi] */
+            s += gl_int(dm_phi_f, p, j * M_PI / 4, (j + 1) * M_PI / 4, k->rphi);
+        return s * ct * st;
+    }
+    return 2.0 * M_PI * d * ct * st;
+}
+
+static void check_d_menu(void)
+{
+    static const char *const names[3] = { "blinn_phong_d", "beckmann_d", "gtr_d" };
+    static const double gammas[] = { 0.0, 0.25, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 4.0 };
+    static const double aniso[][2] = { { 0.05, 0.3 }, { 0.2, 0.8 }, { 1.0, 0.5 }, { 0.01, 0.02 },
+                                       { 0.6, 0.6 } };
+    agg an, ag2, ag1, aa;
+    int w, i, g;
+    printf("1b. D normalisation of blinn_phong_d, beckmann_d, gtr_d (gamma 0 .. 4), ggx_aniso_d\n");
+    agg_init(&an, "D normalisation (Blinn-Phong, Beckmann, GTR), |I - 1| - input-rounding bound", 1e-12);
+    for (w = 0; w < 3; w++)
+        for (g = 0; g < (w == 2 ? (int)(sizeof gammas / sizeof gammas[0]) : 1); g++)
+            for (i = 0; i < 8; i++) {
+                double alpha = exp2(-10.0 + 10.0 * i / 7.0), bp[32], I, tol;
+                dm_ctx k;
+                int n = peak_breaks(alpha, bp);
+                memset(&k, 0, sizeof k);
+                k.which = w;
+                k.alpha = alpha;
+                k.gamma = gammas[g];
+                I = gl_panels(dm_f, &k, bp, n, -1.0, &R32);
+                tol = 4.0 * 0x1p-50 / (alpha * alpha);
+                if (i == 7 || (i % 3) == 0)
+                    printf("   %-14s gamma %-5.3g alpha %-10.4g I - 1 = %.3g\n", names[w], w == 2 ? gammas[g] : 0.0,
+                           alpha, I - 1.0);
+                agg_add(&an, fabs(I - 1.0) - tol, "%s alpha %.6g gamma %g: I = %.17g", names[w], alpha,
+                        gammas[g], I);
+            }
+    agg_done(&an);
+
+    agg_init(&aa, "D normalisation (anisotropic GGX), |I - 1|", 1e-10);
+    for (i = 0; i < (int)(sizeof aniso / sizeof aniso[0]); i++) {
+        double bp[32], I;
+        dm_ctx k;
+        int n = peak_breaks(fmin(aniso[i][0], aniso[i][1]), bp);
+        memset(&k, 0, sizeof k);
+        k.which = 3;
+        k.ax = aniso[i][0];
+        k.ay = aniso[i][1];
+        k.rphi = &R32;
+        I = gl_panels(dm_f, &k, bp, n, -1.0, &R32);
+        printf("   ggx_aniso_d    ax %-6g ay %-6g I - 1 = %.3g\n", k.ax, k.ay, I - 1.0);
+        agg_add(&aa, fabs(I - 1.0), "ax %g ay %g: I = %.17g", k.ax, k.ay, I);
+    }
+    agg_done(&aa);
+
+    /* GTR at gamma = 2 is GGX; near gamma = 1 it meets its limit; at gamma =
+     * 0 it is 1/pi; anisotropic GGX with ax = ay at a unit h is GGX */
+    agg_init(&ag2, "gtr_d(gamma = 2) vs ggx_d, and ggx_aniso_d(ax = ay) vs ggx_d, relative", 1e-13);
+    agg_init(&ag1, "gtr_d at gamma = 1 +- 2^-30 vs gamma = 1 (the limit), relative", 1e-8);
+    for (i = 0; i <= 40; i++)
+        for (g = 0; g <= 20; g++) {
+            double n = i == 40 ? 1.0 : 1.0 - exp2(-0.6 * i), a = exp2(-10.0 + 0.5 * g);
+            double st = sqrt((1.0 - n) * (1.0 + n));
+            double ggx = facet_oracle_ggx_d(n, a), d1 = facet_oracle_gtr_d(n, a, 1.0);
+            agg_add(&ag2, rel_err(facet_oracle_gtr_d(n, a, 2.0), ggx), "gtr2 noh %.17g alpha %g", n, a);
+            agg_add(&ag2, rel_err(facet_oracle_ggx_aniso_d(n, st * 0.6, st * 0.8, a, a), ggx),
+                    "aniso noh %.17g alpha %g", n, a);
+            agg_add(&ag1, rel_err(facet_oracle_gtr_d(n, a, 1.0 + 0x1p-30), d1), "noh %.17g alpha %g +", n, a);
+            agg_add(&ag1, rel_err(facet_oracle_gtr_d(n, a, 1.0 - 0x1p-30), d1), "noh %.17g alpha %g -", n, a);
+            agg_add(&ag2, rel_err(facet_oracle_gtr_d(n, a, 0.0), 1.0 / M_PI), "gtr0 noh %.17g alpha %g", n, a);
+        }
+    printf("   gtr_d(2) = ggx_d, aniso(a, a) = ggx_d, gtr_d(0) = 1/pi: worst %.3g; gtr_d(1 +- 2^-30) vs gtr_d(1): %.3g\n",
+           agg_done(&ag2), agg_done(&ag1));
+}
+
 /* ---- 2. Smith G1 closed form vs Lambda by quadrature ----------------------
  * Slopes (p, q) of the normal m = (-p, -q, 1)/|.|: tan^2 theta_m = p^2 + q^2,
  * and the projected normal density D(m) cos(theta_m) dw_m becomes, with
@@ -342,6 +450,50 @@ static void check_smith_lambda(void)
     printf("   Lambda oracle vs integral:          max rel %.3g (tol 1e-13), quadrature %.3g (tol 1e-14)\n",
            agg_done(&al), agg_done(&aq));
     printf("   G1 oracle vs 1/(1+Lambda integral): max rel %.3g (tol 1e-14)\n", agg_done(&ag));
+}
+
+/* ---- 2b. Smith G1 for GTR: Dimov's closed forms vs the exact G1 -----------
+ * The closed forms at gamma = 0 .. 4 (as rewritten in src/oracle.c) against
+ * G1 = N.V / int max(0, v.m) D(m) dw by quadrature (the exact reference);
+ * gamma = 2 against GGX's smith_g1; the interpolation equal to the closed
+ * forms at the orders, within [0, 1], and its model error against the exact
+ * G1 within what facet.h states (max 0.338 absolute at alpha = 2^-10). */
+static void check_g1_gtr(void)
+{
+    static const double ns[] = { 0.001, 0.02, 0.1, 0.3, 0.5, 0.8, 0.95, 1.0 };
+    static const double as[] = { 0.0009765625, 0.01, 0.1, 0.3, 0.7, 1.0 };
+    agg ac, ai, am;
+    double worst = 0.0, sum = 0.0;
+    long cnt = 0;
+    int i, j, g;
+    printf("2b. GTR G1: closed forms (gamma 0..4) vs quadrature; the interpolation's model error\n");
+    agg_init(&ac, "GTR G1 closed form vs exact by quadrature, relative", 1e-9);
+    agg_init(&ai, "GTR G1 interpolation at the orders vs closed form; G1_gtr(gamma = 2) vs smith_g1", 1e-15);
+    agg_init(&am, "GTR G1 interpolation vs exact: |error| <= 0.34 (facet.h)", 0.34);
+    for (i = 0; i < 8; i++)
+        for (j = 0; j < 6; j++) {
+            for (g = 0; g <= 4; g++) {
+                double c = facet_oracle_smith_g1_gtr_order(ns[i], as[j], g);
+                double x = facet_oracle_smith_g1_gtr_exact(ns[i], as[j], g);
+                agg_add(&ac, rel_err(c, x), "n %g alpha %g gamma %d: %.17g vs %.17g", ns[i], as[j], g, c, x);
+                agg_add(&ai, rel_err(facet_oracle_smith_g1_gtr(ns[i], as[j], g), c), "n %g alpha %g gamma %d",
+                        ns[i], as[j], g);
+            }
+            agg_add(&ai, rel_err(facet_oracle_smith_g1_gtr(ns[i], as[j], 2.0), facet_oracle_smith_g1(ns[i], as[j])),
+                    "ggx n %g alpha %g", ns[i], as[j]);
+            for (g = 1; g <= (quick ? 7 : 39); g += quick ? 2 : 1) {
+                double G = g * 0.1, v = facet_oracle_smith_g1_gtr(ns[i], as[j], G);
+                double e = fabs(v - facet_oracle_smith_g1_gtr_exact(ns[i], as[j], G));
+                agg_add(&am, e, "n %g alpha %g gamma %g", ns[i], as[j], G);
+                agg_add(&am, v >= 0.0 && v <= 1.0 ? 0.0 : 1.0, "range n %g alpha %g gamma %g", ns[i], as[j], G);
+                worst = fmax(worst, e);
+                sum += e;
+                cnt++;
+            }
+        }
+    printf("   closed forms vs quadrature %.3g; at the orders %.3g; model error max %.4g, mean %.4g\n",
+           agg_done(&ac), agg_done(&ai), agg_done(&am), sum / cnt);
+    (void)worst;
 }
 
 /* ---- 3. Smith constraint: G1(v) int D(m) <v.m>+ dw_m = v.n ----------------
@@ -1261,7 +1413,9 @@ int main(void)
     gl_make(&R32, 32);
     check_rules();
     check_d_normalisation();
+    check_d_menu();
     check_smith_lambda();
+    check_g1_gtr();
     check_smith_constraint();
     check_smooth_diffuse();
     check_fresnel();

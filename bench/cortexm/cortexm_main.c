@@ -38,6 +38,14 @@
 #define AT_albedo 5
 #define AT_noh 6
 #define AT_cos 7
+/* the D terms' other inputs reuse slots (their cost does not depend on the
+ * values): T.H = L.V's, B.H = f0's, alpha_x = alpha, alpha_y = albedo's,
+ * the GTR tail gamma = L.H's (0.84 .. 0.98, a non-integer order) */
+#define AT_toh 2
+#define AT_boh 4
+#define AT_alpha_x 3
+#define AT_alpha_y 5
+#define AT_gamma 7
 #define INPUT_(input, domain) p[AT_##input]
 
 volatile uint64_t bench_sink;

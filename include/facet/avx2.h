@@ -118,6 +118,26 @@ FACET_INLINE void facet_avx2_store_n(float *p, __m256 v, size_t r)
     _mm256_maskstore_ps(p, facet_avx2_mask_n_(r), v);
 }
 
+/* Exponent-bit ops (exp2/log2 of f32_body.h and the samplers):
+ *   exp2i(k)    2^k for an integral-valued k in [-126, 127] (exponent bits)
+ *   getexp(x)   floor(log2 x) as a float, x positive and normal
+ *   getmant(x)  x / 2^getexp(x), in [1, 2) */
+FACET_INLINE __m256 facet_avx2_exp2i(__m256 k)
+{
+    __m256i e = _mm256_add_epi32(_mm256_cvttps_epi32(k), _mm256_set1_epi32(127));
+    return _mm256_castsi256_ps(_mm256_slli_epi32(e, 23));
+}
+FACET_INLINE __m256 facet_avx2_getexp(__m256 x)
+{
+    __m256i e = _mm256_srli_epi32(_mm256_castps_si256(x), 23);
+    return _mm256_cvtepi32_ps(_mm256_sub_epi32(e, _mm256_set1_epi32(127)));
+}
+FACET_INLINE __m256 facet_avx2_getmant(__m256 x)
+{
+    __m256i m = _mm256_and_si256(_mm256_castps_si256(x), _mm256_set1_epi32(0x007fffff));
+    return _mm256_castsi256_ps(_mm256_or_si256(m, _mm256_set1_epi32(0x3f800000)));
+}
+
 #define FACET_V __m256
 #define FACET_OP(op) facet_avx2_##op
 #define FACET_K(k) facet_##k##_f32_avx2
@@ -137,21 +157,6 @@ FACET_INLINE void facet_avx2_store_n(float *p, __m256 v, size_t r)
 #ifndef FACET_AVX2_SAMPLE_H
 #define FACET_AVX2_SAMPLE_H
 
-FACET_INLINE __m256 facet_avx2_exp2i(__m256 k)
-{
-    __m256i e = _mm256_add_epi32(_mm256_cvttps_epi32(k), _mm256_set1_epi32(127));
-    return _mm256_castsi256_ps(_mm256_slli_epi32(e, 23));
-}
-FACET_INLINE __m256 facet_avx2_getexp(__m256 x)
-{
-    __m256i e = _mm256_srli_epi32(_mm256_castps_si256(x), 23);
-    return _mm256_cvtepi32_ps(_mm256_sub_epi32(e, _mm256_set1_epi32(127)));
-}
-FACET_INLINE __m256 facet_avx2_getmant(__m256 x)
-{
-    __m256i m = _mm256_and_si256(_mm256_castps_si256(x), _mm256_set1_epi32(0x007fffff));
-    return _mm256_castsi256_ps(_mm256_or_si256(m, _mm256_set1_epi32(0x3f800000)));
-}
 
 #define FACET_V __m256
 #define FACET_OP(op) facet_avx2_##op

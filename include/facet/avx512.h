@@ -96,6 +96,26 @@ FACET_INLINE void facet_avx512_store_n(float *p, __m512 v, size_t r)
     _mm512_mask_storeu_ps(p, (__mmask16)((1u << r) - 1u), v);
 }
 
+/* Exponent-bit ops (exp2/log2 of f32_body.h and the samplers):
+ *   exp2i(k)    2^k for an integral-valued k in [-126, 127] (exponent bits)
+ *   getexp(x)   floor(log2 x) as a float, x positive and normal
+ *   getmant(x)  x / 2^getexp(x), in [1, 2) */
+FACET_INLINE __m512 facet_avx512_exp2i(__m512 k)
+{
+    __m512i e = _mm512_add_epi32(_mm512_cvttps_epi32(k), _mm512_set1_epi32(127));
+    return _mm512_castsi512_ps(_mm512_slli_epi32(e, 23));
+}
+FACET_INLINE __m512 facet_avx512_getexp(__m512 x)
+{
+    __m512i e = _mm512_srli_epi32(_mm512_castps_si512(x), 23);
+    return _mm512_cvtepi32_ps(_mm512_sub_epi32(e, _mm512_set1_epi32(127)));
+}
+FACET_INLINE __m512 facet_avx512_getmant(__m512 x)
+{
+    __m512i m = _mm512_and_si512(_mm512_castps_si512(x), _mm512_set1_epi32(0x007fffff));
+    return _mm512_castsi512_ps(_mm512_or_si512(m, _mm512_set1_epi32(0x3f800000)));
+}
+
 #define FACET_V __m512
 #define FACET_OP(op) facet_avx512_##op
 #define FACET_K(k) facet_##k##_f32_avx512
@@ -115,21 +135,6 @@ FACET_INLINE void facet_avx512_store_n(float *p, __m512 v, size_t r)
 #ifndef FACET_AVX512_SAMPLE_H
 #define FACET_AVX512_SAMPLE_H
 
-FACET_INLINE __m512 facet_avx512_exp2i(__m512 k)
-{
-    __m512i e = _mm512_add_epi32(_mm512_cvttps_epi32(k), _mm512_set1_epi32(127));
-    return _mm512_castsi512_ps(_mm512_slli_epi32(e, 23));
-}
-FACET_INLINE __m512 facet_avx512_getexp(__m512 x)
-{
-    __m512i e = _mm512_srli_epi32(_mm512_castps_si512(x), 23);
-    return _mm512_cvtepi32_ps(_mm512_sub_epi32(e, _mm512_set1_epi32(127)));
-}
-FACET_INLINE __m512 facet_avx512_getmant(__m512 x)
-{
-    __m512i m = _mm512_and_si512(_mm512_castps_si512(x), _mm512_set1_epi32(0x007fffff));
-    return _mm512_castsi512_ps(_mm512_or_si512(m, _mm512_set1_epi32(0x3f800000)));
-}
 
 #define FACET_V __m512
 #define FACET_OP(op) facet_avx512_##op

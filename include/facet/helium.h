@@ -93,6 +93,26 @@ FACET_INLINE float32x4_t facet_helium_sqr_err(float32x4_t a, float32x4_t p)
 FACET_INLINE float32x4_t facet_helium_rcp_fast(float32x4_t x) { return facet_helium_rcp_steps_(x, 2); }
 FACET_INLINE float32x4_t facet_helium_rsqrt_fast(float32x4_t x) { return facet_helium_rsqrt_steps_(x, 2); }
 
+/* Exponent-bit ops (exp2/log2 of f32_body.h and the samplers):
+ *   exp2i(k)    2^k for an integral-valued k in [-126, 127] (exponent bits)
+ *   getexp(x)   floor(log2 x) as a float, x positive and normal
+ *   getmant(x)  x / 2^getexp(x), in [1, 2) */
+FACET_INLINE float32x4_t facet_helium_exp2i(float32x4_t k)
+{
+    int32x4_t e = vaddq_s32(vcvtq_s32_f32(k), vdupq_n_s32(127));
+    return vreinterpretq_f32_s32(vshlq_n_s32(e, 23));
+}
+FACET_INLINE float32x4_t facet_helium_getexp(float32x4_t x)
+{
+    int32x4_t e = vreinterpretq_s32_u32(vshrq_n_u32(vreinterpretq_u32_f32(x), 23));
+    return vcvtq_f32_s32(vsubq_s32(e, vdupq_n_s32(127)));
+}
+FACET_INLINE float32x4_t facet_helium_getmant(float32x4_t x)
+{
+    uint32x4_t m = vandq_u32(vreinterpretq_u32_f32(x), vdupq_n_u32(0x007fffffu));
+    return vreinterpretq_f32_u32(vorrq_u32(m, vdupq_n_u32(0x3f800000u)));
+}
+
 #define FACET_V float32x4_t
 #define FACET_OP(op) facet_helium_##op
 #define FACET_K(k) facet_##k##_f32_helium
@@ -111,22 +131,6 @@ FACET_INLINE float32x4_t facet_helium_rsqrt_fast(float32x4_t x) { return facet_h
 /* ---- sampling ops and the samplers (see facet/scalar.h) ------------------- */
 #ifndef FACET_HELIUM_SAMPLE_H
 #define FACET_HELIUM_SAMPLE_H
-
-FACET_INLINE float32x4_t facet_helium_exp2i(float32x4_t k)
-{
-    int32x4_t e = vaddq_s32(vcvtq_s32_f32(k), vdupq_n_s32(127));
-    return vreinterpretq_f32_s32(vshlq_n_s32(e, 23));
-}
-FACET_INLINE float32x4_t facet_helium_getexp(float32x4_t x)
-{
-    int32x4_t e = vreinterpretq_s32_u32(vshrq_n_u32(vreinterpretq_u32_f32(x), 23));
-    return vcvtq_f32_s32(vsubq_s32(e, vdupq_n_s32(127)));
-}
-FACET_INLINE float32x4_t facet_helium_getmant(float32x4_t x)
-{
-    uint32x4_t m = vandq_u32(vreinterpretq_u32_f32(x), vdupq_n_u32(0x007fffffu));
-    return vreinterpretq_f32_u32(vorrq_u32(m, vdupq_n_u32(0x3f800000u)));
-}
 
 #define FACET_V float32x4_t
 #define FACET_OP(op) facet_helium_##op

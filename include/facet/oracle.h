@@ -59,15 +59,27 @@ double facet_oracle_fresnel_schlick(double f0, double cos_theta);
  * eta from f0; fresnel_schlick with f90 */
 double facet_oracle_fresnel_cook_torrance(double f0, double voh);
 double facet_oracle_fresnel_schlick_f90(double f0, double f90, double voh);
+double facet_oracle_fresnel_schlick_sg(double f0, double cos_theta);
 double facet_oracle_ggx_d(double noh, double alpha);
 /* D from tan^2(theta_h) directly (the accurate form near the peak) */
 double facet_oracle_ggx_d_tan2(double tan2_h, double cos_h, double alpha);
+double facet_oracle_blinn_phong_d(double noh, double alpha);
+double facet_oracle_beckmann_d(double noh, double alpha);
+double facet_oracle_ggx_aniso_d(double noh, double toh, double boh, double alpha_x,
+                                double alpha_y);
+double facet_oracle_gtr_d(double noh, double alpha, double gamma);
 double facet_oracle_smith_lambda(double nov, double alpha);
 double facet_oracle_smith_g1(double nov, double alpha);
 double facet_oracle_smith_g2(double nol, double nov, double alpha);
 double facet_oracle_smith_g2_uncorrelated(double nol, double nov, double alpha);
 double facet_oracle_smith_vis(double nol, double nov, double alpha);
 double facet_oracle_smith_g1_hammon(double nov, double alpha);
+/* Dimov's G1 for GTR: the monotone cubic (pchip) in gamma through the closed
+ * forms at gamma = 0 .. 4 (the kernel's definition); one closed form; and
+ * the exact G1 = 1 / (1 + Lambda) by quadrature (the model reference) */
+double facet_oracle_smith_g1_gtr(double nov, double alpha, double gamma);
+double facet_oracle_smith_g1_gtr_order(double nov, double alpha, int order);
+double facet_oracle_smith_g1_gtr_exact(double nov, double alpha, double gamma);
 double facet_oracle_smith_g2_hammon(double nol, double nov, double alpha);
 double facet_oracle_smith_vis_hammon(double nol, double nov, double alpha);
 double facet_oracle_diffuse_hammon(double nol, double nov, double lov, double alpha,

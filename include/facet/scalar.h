@@ -112,6 +112,30 @@ FACET_INLINE float facet_scalar_sqr_err(float a, float p)
 FACET_INLINE float facet_scalar_rcp_fast(float x) { return 1.0f / x; }
 FACET_INLINE float facet_scalar_rsqrt_fast(float x) { return facet_scalar_rsqrt_steps_(x, 2); }
 
+/* Exponent-bit ops (exp2/log2 of f32_body.h and the samplers):
+ *   exp2i(k)    2^k for an integral-valued k in [-126, 127] (exponent bits)
+ *   getexp(x)   floor(log2 x) as a float, x positive and normal
+ *   getmant(x)  x / 2^getexp(x), in [1, 2) */
+FACET_INLINE float facet_scalar_exp2i(float k)
+{
+    union { float f; uint32_t u; } b;
+    b.u = (uint32_t)((int32_t)k + 127) << 23;
+    return b.f;
+}
+FACET_INLINE float facet_scalar_getexp(float x)
+{
+    union { float f; uint32_t u; } b;
+    b.f = x;
+    return (float)((int32_t)(b.u >> 23) - 127);
+}
+FACET_INLINE float facet_scalar_getmant(float x)
+{
+    union { float f; uint32_t u; } b;
+    b.f = x;
+    b.u = (b.u & 0x007fffffu) | 0x3f800000u;
+    return b.f;
+}
+
 #define FACET_V float
 #define FACET_OP(op) facet_scalar_##op
 #define FACET_K(k) facet_##k##_f32_scalar
@@ -128,33 +152,12 @@ FACET_INLINE float facet_scalar_rsqrt_fast(float x) { return facet_scalar_rsqrt_
 #endif
 
 /* ---- sampling ops and the samplers ----------------------------------------
- * Three integer/bit ops that the samplers' 2^y and log2 need (f32_sample_body.h),
- * then the samplers of both tiers, facet_<sampler>_f32_scalar and
+ * The samplers of both tiers (their exponent-bit ops are above, with the
+ * kernels' ops), facet_<sampler>_f32_scalar and
  * facet_<sampler>_f32_fast_scalar.  Every port header has the same section. */
 #ifndef FACET_SCALAR_SAMPLE_H
 #define FACET_SCALAR_SAMPLE_H
 
-/* 2^k for an integral-valued k in [-126, 127]: the exponent field. */
-FACET_INLINE float facet_scalar_exp2i(float k)
-{
-    union { float f; uint32_t u; } b;
-    b.u = (uint32_t)((int32_t)k + 127) << 23;
-    return b.f;
-}
-/* floor(log2 x) and x / 2^floor(log2 x) in [1, 2), for positive normal x */
-FACET_INLINE float facet_scalar_getexp(float x)
-{
-    union { float f; uint32_t u; } b;
-    b.f = x;
-    return (float)((int32_t)(b.u >> 23) - 127);
-}
-FACET_INLINE float facet_scalar_getmant(float x)
-{
-    union { float f; uint32_t u; } b;
-    b.f = x;
-    b.u = (b.u & 0x007fffffu) | 0x3f800000u;
-    return b.f;
-}
 
 #define FACET_V float
 #define FACET_OP(op) facet_scalar_##op

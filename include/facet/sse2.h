@@ -96,6 +96,26 @@ FACET_INLINE void facet_sse2_store_n(float *p, __m128 v, size_t r)
         p[j] = t[j];
 }
 
+/* Exponent-bit ops (exp2/log2 of f32_body.h and the samplers):
+ *   exp2i(k)    2^k for an integral-valued k in [-126, 127] (exponent bits)
+ *   getexp(x)   floor(log2 x) as a float, x positive and normal
+ *   getmant(x)  x / 2^getexp(x), in [1, 2) */
+FACET_INLINE __m128 facet_sse2_exp2i(__m128 k)
+{
+    __m128i e = _mm_add_epi32(_mm_cvttps_epi32(k), _mm_set1_epi32(127));
+    return _mm_castsi128_ps(_mm_slli_epi32(e, 23));
+}
+FACET_INLINE __m128 facet_sse2_getexp(__m128 x)
+{
+    __m128i e = _mm_srli_epi32(_mm_castps_si128(x), 23);
+    return _mm_cvtepi32_ps(_mm_sub_epi32(e, _mm_set1_epi32(127)));
+}
+FACET_INLINE __m128 facet_sse2_getmant(__m128 x)
+{
+    __m128i m = _mm_and_si128(_mm_castps_si128(x), _mm_set1_epi32(0x007fffff));
+    return _mm_castsi128_ps(_mm_or_si128(m, _mm_set1_epi32(0x3f800000)));
+}
+
 #define FACET_V __m128
 #define FACET_OP(op) facet_sse2_##op
 #define FACET_K(k) facet_##k##_f32_sse2
@@ -115,21 +135,6 @@ FACET_INLINE void facet_sse2_store_n(float *p, __m128 v, size_t r)
 #ifndef FACET_SSE2_SAMPLE_H
 #define FACET_SSE2_SAMPLE_H
 
-FACET_INLINE __m128 facet_sse2_exp2i(__m128 k)
-{
-    __m128i e = _mm_add_epi32(_mm_cvttps_epi32(k), _mm_set1_epi32(127));
-    return _mm_castsi128_ps(_mm_slli_epi32(e, 23));
-}
-FACET_INLINE __m128 facet_sse2_getexp(__m128 x)
-{
-    __m128i e = _mm_srli_epi32(_mm_castps_si128(x), 23);
-    return _mm_cvtepi32_ps(_mm_sub_epi32(e, _mm_set1_epi32(127)));
-}
-FACET_INLINE __m128 facet_sse2_getmant(__m128 x)
-{
-    __m128i m = _mm_and_si128(_mm_castps_si128(x), _mm_set1_epi32(0x007fffff));
-    return _mm_castsi128_ps(_mm_or_si128(m, _mm_set1_epi32(0x3f800000)));
-}
 
 #define FACET_V __m128
 #define FACET_OP(op) facet_sse2_##op

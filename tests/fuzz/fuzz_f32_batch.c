@@ -29,19 +29,25 @@ static int same(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
 static float domain_lo(const facet_kernel *k, int i)
 {
     const char *n = k->inputs[i];
-    if (!strcmp(n, "lov"))
+    if (!strcmp(n, "lov") || !strcmp(n, "toh") || !strcmp(n, "boh"))
         return -1.0f;
-    if (!strcmp(n, "alpha"))
+    if (!strncmp(n, "alpha", 5))
         return FACET_ALPHA_MIN;
-    if (k->n_inputs > 2 && (!strcmp(n, "nol") || !strcmp(n, "nov")))
+    if (!strcmp(k->inputs[0], "nol") && (!strcmp(n, "nol") || !strcmp(n, "nov"))) /* two-cosine */
         return FACET_COS_MIN;
     return 0.0f;
 }
 
+/* the high end: 4 for the GTR tail gamma, else 1 */
+static float domain_hi(const facet_kernel *k, int i)
+{
+    return !strcmp(k->inputs[i], "gamma") ? 4.0f : 1.0f;
+}
+
 static float clamp_in(const facet_kernel *k, int i, float v)
 {
-    float lo = domain_lo(k, i);
-    return v < lo ? lo : v > 1.0f ? 1.0f : v;
+    float lo = domain_lo(k, i), hi = domain_hi(k, i);
+    return v < lo ? lo : v > hi ? hi : v;
 }
 
 static int flushes(void)

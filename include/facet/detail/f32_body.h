@@ -5,8 +5,8 @@
  * after defining
  *   FACET_V        the vector (or scalar) type,
  *   FACET_OP(op)   the name of the port's op `op` (set add sub mul fma fnma
- *                  min max sel_lt clamp keep_ord rcp rsqrt sqr_err, see
- *                  facet/scalar.h),
+ *                  min max sel_lt clamp keep_ord rcp rsqrt sqr_err, and the
+ *                  exponent-bit ops exp2i getexp getmant, see facet/scalar.h),
  *   FACET_K(k)     the name to give kernel `k` in this port and tier,
  * and optionally FACET_TIER_FAST 1 for the fast tier (f32_fast): the port's
  * rcp_fast / rsqrt_fast in place of rcp / rsqrt.
@@ -41,6 +41,10 @@
  * tiers refine fully: 5 times an unrefined estimate would exceed 2^-12 */
 #define RCP_X5_ FACET_OP(rcp)
 #define RSQRT_X5_ FACET_OP(rsqrt)
+/* where an error is multiplied by an exponent (the power of Blinn-Phong, the
+ * exponent of Beckmann, log2 in a pow: |y| up to 126), both tiers use the
+ * precise reciprocal: an unrefined estimate times 126 would exceed 2^-12 */
+#define RCP_EXP_ FACET_OP(rcp)
 
 /* 1/pi rounded to float. */
 #define FACET_INV_PI_ 0.318309886f
@@ -53,6 +57,17 @@
 #define X_ONE_MINUS_POW5_ FACET_K(x_one_minus_pow5)
 #define X_SMITH_W_ FACET_K(x_smith_w)
 #define X_SQRT_ FACET_K(x_sqrt)
+#define X_EXP2M1R_POLY_ FACET_K(x_exp2m1r_poly)
+#define X_EXP2M1R_ FACET_K(x_exp2m1r)
+#define X_EXP2_ FACET_K(x_exp2)
+#define X_LOG2_FOLD_ FACET_K(x_log2_fold)
+#define X_LOG2_POLY_ FACET_K(x_log2_poly)
+#define X_LOG2_ FACET_K(x_log2)
+#define X_LOG2_X_ FACET_K(x_log2_x)
+#define X_EXP2_SCALED_ FACET_K(x_exp2_scaled)
+#define X_LN1PR_ FACET_K(x_ln1pr)
+#define X_PCHIP_END_ FACET_K(x_pchip_end)
+#define X_PCHIP_MID_ FACET_K(x_pchip_mid)
 #define X_FRESNEL_Y_ FACET_K(x_fresnel_y)
 #define X_FRESNEL_ FACET_K(x_fresnel)
 #define X_G2_DEN_ FACET_K(x_g2_den)
@@ -114,6 +129,105 @@ FACET_INLINE V_ X_SMITH_W_(V_ n, V_ a2)
 }
 
 FACET_INLINE V_ X_SQRT_(V_ w) { return MUL_(w, RSQRT_(w)); }
+
+/* ---- 2^y and log2 ------------------------------------------------------------
+ * No libm: the exponent field (the port ops exp2i, getexp, getmant) and
+ * polynomials.  Used by the exponential D terms and the GTR kernels here and
+ * by the samplers (f32_sample_body.h).  Errors with the float coefficients
+ * and exact arithmetic (fitted and checked in long double); the tests
+ * (tests/test_sample_prims.c, tests/test_f32_accuracy.c) measure them with
+ * the roundings of each port.
+ *
+ * E(y) = (2^y - 1) / y (E(0) = ln 2), the relative form of 2^y - 1, for
+ * |y| <= 126:
+ *   |y| < 1: E(y) = P(y), degree 7, interpolated at Chebyshev nodes of
+ *            [-1, 1] (near minimax; float coefficients: relative error
+ *            < 9.4e-9);
+ *   else:    y = k + f, k = round(y) (adding and subtracting 1.5 * 2^23),
+ *            f in [-1/2, 1/2], 2^y = 2^k (1 + f P(f)), E = (2^y - 1) / y:
+ *            2^y - 1 has no cancellation for |y| >= 1. */
+FACET_INLINE V_ X_EXP2M1R_POLY_(V_ y)
+{
+    V_ p = FMA_(y, C_(1.335729394e-06f), C_(1.545752275e-05f));
+    p = FMA_(p, y, C_(1.540264202e-04f));
+    p = FMA_(p, y, C_(1.333227614e-03f));
+    p = FMA_(p, y, C_(9.618130513e-03f));
+    p = FMA_(p, y, C_(5.550413579e-02f));
+    p = FMA_(p, y, C_(2.402265072e-01f));
+    return FMA_(p, y, C_(6.931471825e-01f));
+}
+
+FACET_INLINE V_ X_EXP2M1R_(V_ y)
+{
+    V_ ay = MAX_(y, SUB_(C_(0.0f), y));
+    V_ k = SUB_(ADD_(y, C_(12582912.0f)), C_(12582912.0f));
+    V_ f = SUB_(y, k);
+    V_ e = MUL_(FMA_(f, X_EXP2M1R_POLY_(f), C_(1.0f)), FACET_OP(exp2i)(k));
+    V_ big = MUL_(SUB_(e, C_(1.0f)), RCP_(FACET_OP(sel_lt)(ay, C_(1.0f), C_(1.0f), y)));
+    return FACET_OP(sel_lt)(ay, C_(1.0f), X_EXP2M1R_POLY_(y), big);
+}
+
+/* 2^y for y in [-126, 126] (the caller keeps it there): 2^k (1 + f P(f)) as
+ * above; relative error about 2 ulp (P's 9.4e-9 on [-1/2, 1/2] and the
+ * roundings of 1 + f P and of the final product, which is exact). */
+FACET_INLINE V_ X_EXP2_(V_ y)
+{
+    V_ k = SUB_(ADD_(y, C_(12582912.0f)), C_(12582912.0f));
+    V_ f = SUB_(y, k);
+    return MUL_(FMA_(f, X_EXP2M1R_POLY_(f), C_(1.0f)), FACET_OP(exp2i)(k));
+}
+
+/* c 2^y for y <= 0 down to -190 (the caller clamps), c 2^y below 2^-100
+ * included: (c 2^(y + 64)) 2^-64, whose last product rounds once into the
+ * denormals (a flush-to-zero port gives 0 there).  c <= 2^60. */
+FACET_INLINE V_ X_EXP2_SCALED_(V_ c, V_ y)
+{
+    return MUL_(MUL_(c, X_EXP2_(ADD_(y, C_(64.0f)))), C_(5.42101086e-20f));
+}
+
+/* log2 x = e + log2 m: x = 2^e m, m folded into [sqrt(1/2), sqrt(2)] (m / 2,
+ * e + 1 above sqrt 2); with s = (m - 1) / (m + 1) (m - 1 exact),
+ * log2 m = s Q(s^2), Q(t) = (2 / ln 2) atanh(sqrt t) / sqrt t, degree 3 on
+ * [0, 0.0295] (float coefficients: relative error < 1.4e-8), so log2 m
+ * keeps its relative precision near m = 1 (x near 1 or near a power of 2).
+ * The reciprocal 1 / (m + 1) is the caller's. */
+FACET_INLINE V_ X_LOG2_FOLD_(V_ x, V_ *e)
+{
+    V_ m = FACET_OP(getmant)(x), big = C_(1.41421356f);
+    *e = FACET_OP(getexp)(x);
+    *e = FACET_OP(sel_lt)(big, m, ADD_(*e, C_(1.0f)), *e);
+    return FACET_OP(sel_lt)(big, m, MUL_(m, C_(0.5f)), m);
+}
+
+FACET_INLINE V_ X_LOG2_POLY_(V_ m, V_ e, V_ r)
+{
+    V_ s = MUL_(SUB_(m, C_(1.0f)), r);
+    V_ t = MUL_(s, s);
+    V_ q = FMA_(t, C_(4.317176938e-01f), C_(5.767151713e-01f));
+    q = FMA_(q, t, C_(9.617988467e-01f));
+    q = FMA_(q, t, C_(2.885390043e+00f));
+    return FMA_(s, q, e);
+}
+
+/* log2 x for a positive normal x, with the tier's reciprocal (the samplers) */
+FACET_INLINE V_ X_LOG2_(V_ x)
+{
+    V_ e, m = X_LOG2_FOLD_(x, &e);
+    return X_LOG2_POLY_(m, e, RCP_(ADD_(m, C_(1.0f))));
+}
+
+/* log2 x for any x in [0, 2^128): denormals scaled by 2^64 first (x = 0
+ * gives -191, finite), the precise reciprocal in both tiers (the result is
+ * multiplied by an exponent).  Error: the polynomial's 1.4e-8 and about
+ * 3 ulp of roundings, relative to |log2 m|, plus e's half ulp of the sum. */
+FACET_INLINE V_ X_LOG2_X_(V_ x)
+{
+    V_ tiny = C_(7.88860905e-31f); /* 2^-100 */
+    V_ xs = FACET_OP(sel_lt)(x, tiny, MUL_(x, C_(1.84467441e+19f)), x);
+    V_ e, m = X_LOG2_FOLD_(xs, &e);
+    e = SUB_(e, FACET_OP(sel_lt)(x, tiny, C_(64.0f), C_(0.0f)));
+    return X_LOG2_POLY_(m, e, RCP_EXP_(ADD_(m, C_(1.0f))));
+}
 
 /* ---- identities ------------------------------------------------------ */
 
@@ -231,6 +345,18 @@ FACET_INLINE V_ FACET_K(fresnel_cook_torrance)(V_ f0, V_ voh)
     return NAN0_(FACET_OP(sel_lt)(f, C_(1.0f), MIN_(fr, C_(1.0f)), C_(1.0f)), f0, voh);
 }
 
+/* ---- Fresnel, spherical-Gaussian Schlick ----------------------------------- */
+
+/* F = f0 + (1 - f0) 2^y, y = (-5.55473 c - 6.98316) c in [-12.54, 0]:
+ * Schlick's (1 - c)^5 replaced by a spherical Gaussian (Karis).  One
+ * 2^y; a rounding r of y costs |y| ln 2 r <= 8.7 r of the tail. */
+FACET_INLINE V_ FACET_K(fresnel_schlick_sg)(V_ f0, V_ c)
+{
+    V_ f = X_UNIT_(f0), x = X_UNIT_(c);
+    V_ y = MUL_(FMA_(C_(-5.55473f), x, C_(-6.98316f)), x);
+    return NAN0_(FMA_(SUB_(C_(1.0f), f), X_EXP2_(y), f), f0, c);
+}
+
 /* ---- GGX D ------------------------------------------------------------ */
 
 /* D = alpha^2 / (pi d^2), d = (1 - n^2) + (n alpha)^2 with 1 - n^2 as
@@ -251,6 +377,93 @@ FACET_INLINE V_ FACET_K(x_ggx_d)(V_ noh, V_ alpha)
 FACET_INLINE V_ FACET_K(ggx_d)(V_ noh, V_ alpha)
 {
     return NAN0_(FACET_K(x_ggx_d)(noh, alpha), noh, alpha);
+}
+
+/* ---- D terms beyond GGX ---------------------------------------------------
+ * Blinn-Phong, Beckmann, anisotropic GGX and GTR (facet.h has the
+ * formulas and their derivation in short).  The exponential ones lose what
+ * any float evaluation of an exponent loses: a relative error r in the
+ * exponent y costs |y| ln 2 r in D, and |y| reaches about 120 before D
+ * drops below the comparison floor 2^-100; so the exponent is formed with
+ * as few roundings as the algebra allows (no cancellation, precise
+ * reciprocals in both tiers), and D = c 2^y is scaled so that it stays
+ * accurate into the denormals (X_EXP2_SCALED_). */
+
+/* Blinn-Phong, normalised: D = (p + 2) / (2 pi) N.H^p, p = 2 / alpha^2 - 2,
+ * i.e. D = N.H^p / (pi alpha^2).  p = 2 (1 - alpha)(1 + alpha) / alpha^2
+ * (no cancellation near alpha = 1), y = p log2 N.H (log2 relative to
+ * N.H - 1 near the peak, which is exact there), y >= -190 (D below
+ * 2^-100 already).  N.H = 0: D = 0, except at p = 0 (alpha = 1: 1/pi). */
+FACET_INLINE V_ FACET_K(blinn_phong_d)(V_ noh, V_ alpha)
+{
+    V_ n = X_UNIT_(noh);
+    V_ a = X_ALPHA_(alpha);
+    V_ ia2 = RCP_EXP_(MUL_(a, a));
+    V_ p = MUL_(MUL_(SUB_(C_(1.0f), a), ADD_(C_(1.0f), a)), ADD_(ia2, ia2));
+    V_ y = MAX_(MUL_(p, X_LOG2_X_(n)), C_(-190.0f));
+    V_ d = X_EXP2_SCALED_(MUL_(ia2, C_(FACET_INV_PI_)), y);
+    /* N.H = 0 tested as N.H 2^64 > 0: a port that flushes denormals (armv7
+     * NEON) flushes this product as it flushed N.H for the log, so a
+     * denormal N.H is 0 in both places (compares do not flush there) */
+    V_ ns = MUL_(n, C_(1.84467441e+19f));
+    return NAN0_(FACET_OP(sel_lt)(C_(0.0f), ns, d, FACET_OP(sel_lt)(C_(0.0f), p, C_(0.0f), d)), noh, alpha);
+}
+
+/* Beckmann: D = exp(-tan^2 / alpha^2) / (pi alpha^2 N.H^4)
+ *   = (1/pi) (alpha r)^2 2^y,  r = 1 / (N.H alpha)^2,
+ *   y = -log2(e) (1 - N.H)(1 + N.H) r  (= -log2(e) tan^2 / alpha^2).
+ * Where y < -160, D < 2^-136 (facet.h), and 0 is returned: that also covers
+ * N.H -> 0, where r and (alpha r)^2 overflow ((N.H alpha)^2 is floored at
+ * 2^-120 so that r stays finite). */
+FACET_INLINE V_ FACET_K(beckmann_d)(V_ noh, V_ alpha)
+{
+    V_ n = X_UNIT_(noh);
+    V_ a = X_ALPHA_(alpha);
+    V_ na = MUL_(n, a);
+    V_ r = RCP_EXP_(MAX_(MUL_(na, na), C_(7.52316385e-37f)));
+    V_ y = MUL_(MUL_(MUL_(SUB_(C_(1.0f), n), ADD_(C_(1.0f), n)), r), C_(-1.44269504f));
+    V_ ar = MUL_(a, r);
+    V_ d = X_EXP2_SCALED_(MUL_(MUL_(ar, ar), C_(FACET_INV_PI_)), MAX_(y, C_(-160.0f)));
+    return NAN0_(FACET_OP(sel_lt)(y, C_(-160.0f), C_(0.0f), d), noh, alpha);
+}
+
+/* Anisotropic GGX: for a unit h with components (T.H, B.H, N.H) in the
+ * tangent frame, D = 1 / (pi ax ay k^2), k = (T.H/ax)^2 + (B.H/ay)^2 + N.H^2.
+ * Without dividing by the widths: K = ax^2 ay^2 k = T.H^2 ay^2 + B.H^2 ax^2 +
+ * N.H^2 ax^2 ay^2, D = ax^3 ay^3 / (pi K^2): all terms >= 0, no 1 - N.H^2
+ * (the peak is as accurate as the inputs).  k >= 1 for a unit h; K is
+ * floored at ax^2 ay^2 / 2 (k at 1/2) for inputs no unit h has. */
+FACET_INLINE V_ FACET_K(ggx_aniso_d)(V_ noh, V_ toh, V_ boh, V_ alpha_x, V_ alpha_y)
+{
+    V_ n = X_UNIT_(noh), t = X_LOV_(toh), b = X_LOV_(boh);
+    V_ ax = X_ALPHA_(alpha_x), ay = X_ALPHA_(alpha_y);
+    V_ ax2 = MUL_(ax, ax), ay2 = MUL_(ay, ay), a2 = MUL_(ax2, ay2);
+    V_ K = FMA_(MUL_(t, t), ay2, FMA_(MUL_(b, b), ax2, MUL_(MUL_(n, n), a2)));
+    V_ a3 = MUL_(a2, MUL_(ax, ay));
+    K = MAX_(K, MUL_(C_(0.5f), a2));
+    return NAN0_(MUL_(MUL_(a3, C_(FACET_INV_PI_)), RCP_(MUL_(K, K))), noh, toh, boh, alpha_x, alpha_y);
+}
+
+/* GTR: D = c / d^gamma, d = 1 + (alpha^2 - 1) N.H^2 = (1 - N.H)(1 + N.H) +
+ * (N.H alpha)^2 (as ggx_d), c = (gamma - 1)(alpha^2 - 1) / (pi (1 - alpha^(2 (1 - gamma)))).
+ * With L = log2 alpha^2 and E(y) = (2^y - 1) / y: alpha^2 - 1 = L E(L),
+ * 1 - alpha^(2 (1 - gamma)) = -(1 - gamma) L E((1 - gamma) L), so
+ *   c = E(L) / (pi E((1 - gamma) L)),
+ * which is the limit at gamma = 1 (E(0) = ln 2: GTR1) and at alpha = 1
+ * (c = 1/pi) without a special case; gamma = 2 gives alpha^2 / pi (GGX),
+ * gamma = 0 gives 1/pi.  d^-gamma = 2^(-gamma log2 d), up to 2^80. */
+FACET_INLINE V_ FACET_K(gtr_d)(V_ noh, V_ alpha, V_ gamma)
+{
+    V_ n = X_UNIT_(noh);
+    V_ a = X_ALPHA_(alpha);
+    V_ g = CLAMP_(gamma, C_(0.0f), C_(4.0f));
+    V_ na = MUL_(n, a);
+    V_ d = FMA_(SUB_(C_(1.0f), n), ADD_(C_(1.0f), n), MUL_(na, na));
+    V_ la = X_LOG2_X_(a);
+    V_ L = ADD_(la, la);
+    V_ c = MUL_(X_EXP2M1R_(L), RCP_EXP_(X_EXP2M1R_(MUL_(SUB_(C_(1.0f), g), L))));
+    V_ y = MUL_(SUB_(C_(0.0f), g), X_LOG2_X_(d));
+    return NAN0_(MUL_(MUL_(c, C_(FACET_INV_PI_)), X_EXP2_(y)), noh, alpha, gamma);
 }
 
 /* ---- Smith, exact ------------------------------------------------------ */
@@ -333,6 +546,113 @@ FACET_INLINE V_ FACET_K(smith_vis_hammon)(V_ nol, V_ nov, V_ alpha)
     V_ nl = X_COS_(nol), nv = X_COS_(nov);
     V_ den = X_HAMMON_DEN_(nl, nv, X_ALPHA_(alpha));
     return NAN0_(MUL_(C_(0.5f), RCP_(den)), nol, nov, alpha);
+}
+
+/* ---- Smith G1 for GTR (Dimov) ----------------------------------------------
+ * The closed forms at gamma = 0 .. 4 in N.V (derivation: src/oracle.c and
+ * facet.h), with s2 = 1 - n^2 = (1 - n)(1 + n) and W = sqrt(n^2 + alpha^2 s2)
+ * (smith_g1's radicand), then the monotone cubic (Fritsch-Carlson) in gamma
+ * through the five values.  The interpolation works on differences of the
+ * five values (its slopes), which amplify their errors: every reciprocal
+ * here is the precise one in both tiers (with the 14-bit estimates of
+ * avx512 at their architectural bound the fast tier reached 2^-11.8). */
+
+/* R(u) = ln(1 + u) / u / ln 2 for u >= 0 (1/ln 2 at 0): below u = 0.41 as
+ * Q(s^2) / (2 + u) with s = u / (2 + u) (x_log2's polynomial: ln(1 + u) =
+ * 2 atanh(s)), no cancellation at small u; above, log2(1 + u) / u. */
+FACET_INLINE V_ X_LN1PR_(V_ u)
+{
+    V_ r2 = RCP_EXP_(ADD_(C_(2.0f), u));
+    V_ sm = MUL_(u, r2), t = MUL_(sm, sm);
+    V_ q = FMA_(t, C_(4.317176938e-01f), C_(5.767151713e-01f));
+    V_ big;
+    q = FMA_(q, t, C_(9.617988467e-01f));
+    q = FMA_(q, t, C_(2.885390043e+00f));
+    big = MUL_(X_LOG2_X_(ADD_(C_(1.0f), u)), RCP_EXP_(MAX_(u, C_(0.25f))));
+    return FACET_OP(sel_lt)(u, C_(0.41f), MUL_(q, r2), big);
+}
+
+/* Fritsch-Carlson end slope: (3 d0 - d1) / 2, 0 against d0, at most 3 d0
+ * where the data turn */
+FACET_INLINE V_ X_PCHIP_END_(V_ d0, V_ d1)
+{
+    V_ m = MUL_(C_(0.5f), FNMA_(C_(1.0f), d1, MUL_(C_(3.0f), d0)));
+    V_ lim = FACET_OP(sel_lt)(C_(0.0f), MUL_(d0, d1), m,
+                              FACET_OP(sel_lt)(MUL_(C_(3.0f), MAX_(d0, SUB_(C_(0.0f), d0))),
+                                               MAX_(m, SUB_(C_(0.0f), m)), MUL_(C_(3.0f), d0), m));
+    return FACET_OP(sel_lt)(C_(0.0f), MUL_(m, d0), lim, C_(0.0f));
+}
+
+/* interior slope: the harmonic mean 2 a b / (a + b) of the secants, 0 at a turn */
+FACET_INLINE V_ X_PCHIP_MID_(V_ a, V_ b)
+{
+    V_ p = MUL_(a, b);
+    V_ h = MUL_(ADD_(p, p), RCP_EXP_(FACET_OP(sel_lt)(C_(0.0f), p, ADD_(a, b), C_(1.0f))));
+    return FACET_OP(sel_lt)(C_(0.0f), p, h, C_(0.0f));
+}
+
+FACET_INLINE V_ FACET_K(smith_g1_gtr)(V_ nov, V_ alpha, V_ gamma)
+{
+    V_ n = X_UNIT_(nov);
+    V_ a = X_ALPHA_(alpha);
+    V_ g = CLAMP_(gamma, C_(0.0f), C_(4.0f));
+    V_ a2 = MUL_(a, a);
+    V_ s2 = MUL_(SUB_(C_(1.0f), n), ADD_(C_(1.0f), n));
+    V_ w2 = X_SMITH_W_(n, a2);
+    V_ W = MUL_(w2, RSQRT_X5_(w2)); /* cubed in G^4: the precise rsqrt in both tiers */
+    V_ n2 = ADD_(n, n), nW = ADD_(n, W), b = ADD_(C_(1.0f), a2);
+    V_ y0, y1, y2, y3, y4, la, e, den1, u, W3, num4, den4, k4;
+    V_ d0, d1, d2, d3, m0, m1, m2, m3, m4, yj, yk, mj, mk, t, t1, j1, j2, j3, S;
+    /* gamma = 0: 2n / (1 + n) */
+    y0 = MUL_(n2, RCP_EXP_(ADD_(C_(1.0f), n)));
+    /* gamma = 1: n / (n + e s2 (W + n (1 - R(u))) / ((W + 1)(n + W))),
+     * e = (alpha^2 - 1) / ln alpha^2 = E(L) / ln 2, L = log2 alpha^2 */
+    la = X_LOG2_X_(a);
+    e = MUL_(X_EXP2M1R_(ADD_(la, la)), C_(1.44269504f));
+    den1 = RCP_EXP_(MUL_(ADD_(W, C_(1.0f)), nW));
+    /* (1 - alpha^2) s2 / ((W + 1)(n + W)) */
+    u = MUL_(MUL_(SUB_(C_(1.0f), a), ADD_(C_(1.0f), a)), MUL_(s2, den1));
+    y1 = FNMA_(MUL_(X_LN1PR_(u), C_(0.693147181f)), n, ADD_(W, n)); /* W + n (1 - R) */
+    y1 = MUL_(MUL_(e, s2), MUL_(y1, den1));
+    y1 = MUL_(n, RCP_EXP_(ADD_(n, y1)));
+    /* gamma = 2: GGX, 2n / (n + W) */
+    y2 = MUL_(n2, RCP_EXP_(nW));
+    /* gamma = 3: 4 (1 + alpha^2) n W / (alpha^2 (3 alpha^2 + 1) s2 + 2 (1 + alpha^2) n (n + W)) */
+    y3 = MUL_(MUL_(C_(2.0f), b), MUL_(n2, W));
+    y3 = MUL_(y3, RCP_EXP_(FMA_(MUL_(a2, FMA_(C_(3.0f), a2, C_(1.0f))), s2, MUL_(b, MUL_(n2, nW)))));
+    /* gamma = 4: 2 n W^3 / (n (W^3 + n^3) + k4 (alpha^2 P5 s2^2 + 4 n^2 s2 P2)),
+     * k4 = 3 alpha^2 / K, K = 8 (alpha^4 + alpha^2 + 1),
+     * P5 = 5 alpha^4 + 2 alpha^2 + 1, P2 = 2 alpha^4 + alpha^2 + 1 */
+    W3 = MUL_(MUL_(W, W), W);
+    k4 = MUL_(MUL_(C_(0.375f), a2), RCP_EXP_(FMA_(a2, b, C_(1.0f))));
+    num4 = FMA_(MUL_(a2, FMA_(a2, FMA_(C_(5.0f), a2, C_(2.0f)), C_(1.0f))), s2,
+                MUL_(MUL_(C_(4.0f), MUL_(n, n)), FMA_(a2, FMA_(C_(2.0f), a2, C_(1.0f)), C_(1.0f))));
+    den4 = FMA_(k4, MUL_(num4, s2), MUL_(n, FMA_(MUL_(n, n), n, W3)));
+    y4 = MUL_(MUL_(n2, W3), RCP_EXP_(den4));
+    /* the monotone cubic in gamma */
+    d0 = SUB_(y1, y0);
+    d1 = SUB_(y2, y1);
+    d2 = SUB_(y3, y2);
+    d3 = SUB_(y4, y3);
+    m0 = X_PCHIP_END_(d0, d1);
+    m1 = X_PCHIP_MID_(d0, d1);
+    m2 = X_PCHIP_MID_(d1, d2);
+    m3 = X_PCHIP_MID_(d2, d3);
+    m4 = X_PCHIP_END_(d3, d2);
+    j1 = C_(1.0f);
+    j2 = C_(2.0f);
+    j3 = C_(3.0f);
+    yj = FACET_OP(sel_lt)(g, j1, y0, FACET_OP(sel_lt)(g, j2, y1, FACET_OP(sel_lt)(g, j3, y2, y3)));
+    yk = FACET_OP(sel_lt)(g, j1, y1, FACET_OP(sel_lt)(g, j2, y2, FACET_OP(sel_lt)(g, j3, y3, y4)));
+    mj = FACET_OP(sel_lt)(g, j1, m0, FACET_OP(sel_lt)(g, j2, m1, FACET_OP(sel_lt)(g, j3, m2, m3)));
+    mk = FACET_OP(sel_lt)(g, j1, m1, FACET_OP(sel_lt)(g, j2, m2, FACET_OP(sel_lt)(g, j3, m3, m4)));
+    t = SUB_(g, FACET_OP(sel_lt)(g, j1, C_(0.0f), FACET_OP(sel_lt)(g, j2, j1, FACET_OP(sel_lt)(g, j3, j2, j3))));
+    t1 = SUB_(C_(1.0f), t);
+    /* (1 + 2t)(1 - t)^2 yj + t^2 (3 - 2t) yk + t (1 - t) ((1 - t) mj - t mk) */
+    S = MUL_(MUL_(FMA_(C_(2.0f), t, C_(1.0f)), MUL_(t1, t1)), yj);
+    S = FMA_(MUL_(MUL_(t, t), FNMA_(C_(2.0f), t, C_(3.0f))), yk, S);
+    S = FMA_(MUL_(t, t1), FNMA_(t, mk, MUL_(t1, mj)), S);
+    return NAN0_(CLAMP_(S, C_(0.0f), C_(1.0f)), nov, alpha, gamma);
 }
 
 /* ---- Hammon's GGX diffuse --------------------------------------------------- */
@@ -585,6 +905,7 @@ FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
 #undef RSQRT_
 #undef RCP_X5_
 #undef RSQRT_X5_
+#undef RCP_EXP_
 #undef FACET_INV_PI_
 #undef X_UNIT_
 #undef X_COS_
@@ -593,6 +914,17 @@ FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
 #undef X_ONE_MINUS_POW5_
 #undef X_SMITH_W_
 #undef X_SQRT_
+#undef X_EXP2M1R_POLY_
+#undef X_EXP2M1R_
+#undef X_EXP2_
+#undef X_LOG2_FOLD_
+#undef X_LOG2_POLY_
+#undef X_LOG2_
+#undef X_LOG2_X_
+#undef X_EXP2_SCALED_
+#undef X_LN1PR_
+#undef X_PCHIP_END_
+#undef X_PCHIP_MID_
 #undef X_FRESNEL_Y_
 #undef X_FRESNEL_
 #undef X_G2_DEN_

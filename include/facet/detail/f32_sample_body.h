@@ -50,9 +50,8 @@
 
 #define S_U_ FACET_K(xs_u)
 #define S_SQRT0_ FACET_K(xs_sqrt0)
-#define S_EXP2M1R_ FACET_K(xs_exp2m1r)
-#define S_EXP2M1R_POLY_ FACET_K(xs_exp2m1r_poly)
-#define S_LOG2_ FACET_K(xs_log2)
+#define S_EXP2M1R_ FACET_K(x_exp2m1r)
+#define S_LOG2_ FACET_K(x_log2)
 #define S_FROM_SC_ FACET_K(xs_from_sc)
 #define S_VNDF_ FACET_K(xs_vndf)
 #define S_GTR1_SC_ FACET_K(xs_gtr1_sc)
@@ -100,53 +99,8 @@ FACET_INLINE void FACET_K(sincos_2pi)(V_ sc[2], V_ u)
 }
 
 /* ---- 2^y and log2 ----------------------------------------------------------
- * E(y) = (2^y - 1) / y (E(0) = ln 2), the relative form of 2^y - 1 that the
- * GTR1 inverse CDF needs without cancellation, for |y| <= 20:
- *   |y| < 1: E(y) = P(y), degree 7, fitted on [-1, 1] like S and C (with
- *            float coefficients: relative error < 9.4e-9);
- *   else:    y = k + f, k = round(y) (the 1.5 * 2^23 trick), f in [-1/2, 1/2],
- *            2^y = 2^k (1 + f P(f)), and E = (2^y - 1) / y: 2^y - 1 has no
- *            cancellation for |y| >= 1 (it is >= 1/2 in magnitude). */
-FACET_INLINE V_ S_EXP2M1R_POLY_(V_ y)
-{
-    V_ p = FMA_(y, C_(1.335729394e-06f), C_(1.545752275e-05f));
-    p = FMA_(p, y, C_(1.540264202e-04f));
-    p = FMA_(p, y, C_(1.333227614e-03f));
-    p = FMA_(p, y, C_(9.618130513e-03f));
-    p = FMA_(p, y, C_(5.550413579e-02f));
-    p = FMA_(p, y, C_(2.402265072e-01f));
-    return FMA_(p, y, C_(6.931471825e-01f));
-}
-
-FACET_INLINE V_ S_EXP2M1R_(V_ y)
-{
-    V_ ay = MAX_(y, SUB_(C_(0.0f), y));
-    V_ k = SUB_(ADD_(y, C_(12582912.0f)), C_(12582912.0f));
-    V_ f = SUB_(y, k);
-    V_ e = MUL_(FMA_(f, S_EXP2M1R_POLY_(f), C_(1.0f)), FACET_OP(exp2i)(k));
-    V_ big = MUL_(SUB_(e, C_(1.0f)), RCP_(SEL_LT_(ay, C_(1.0f), C_(1.0f), y)));
-    return SEL_LT_(ay, C_(1.0f), S_EXP2M1R_POLY_(y), big);
-}
-
-/* log2 x for x in [2^-10, 1] (normal): x = 2^e m, m folded into
- * [sqrt(1/2), sqrt(2)] (m / 2, e + 1 above sqrt 2), then with
- * s = (m - 1) / (m + 1) (m - 1 exact), log2 m = s Q(s^2),
- * Q(t) = (2 / ln 2) atanh(sqrt t) / sqrt t, degree 3 on [0, 0.0295]
- * (float coefficients: relative error < 1.4e-8). */
-FACET_INLINE V_ S_LOG2_(V_ x)
-{
-    V_ m = FACET_OP(getmant)(x), e = FACET_OP(getexp)(x);
-    V_ big = C_(1.41421356f);
-    V_ s, t, q;
-    e = SEL_LT_(big, m, ADD_(e, C_(1.0f)), e);
-    m = SEL_LT_(big, m, MUL_(m, C_(0.5f)), m);
-    s = MUL_(SUB_(m, C_(1.0f)), RCP_(ADD_(m, C_(1.0f))));
-    t = MUL_(s, s);
-    q = FMA_(t, C_(4.317176938e-01f), C_(5.767151713e-01f));
-    q = FMA_(q, t, C_(9.617988467e-01f));
-    q = FMA_(q, t, C_(2.885390043e+00f));
-    return FMA_(s, q, e);
-}
+ * (2^y - 1) / y and log2 x are f32_body.h's x_exp2m1r and x_log2 (its
+ * section "2^y and log2", with their errors). */
 
 /* ---- the half vector from sin and cos ------------------------------------
  * h = normalize(ax s cos(2 pi u2), ay s sin(2 pi u2), c) for s, c >= 0 with
@@ -443,7 +397,6 @@ FACET_INLINE V_ FACET_K(gtr_pdf_d)(V_ noh, V_ alpha, V_ gamma)
 #undef S_U_
 #undef S_SQRT0_
 #undef S_EXP2M1R_
-#undef S_EXP2M1R_POLY_
 #undef S_LOG2_
 #undef S_FROM_SC_
 #undef S_VNDF_
