@@ -208,7 +208,7 @@ float facet_g_kelemen_f32(float nol, float nov, float voh);
  *   G1 = min(1, (3.535 c + 2.181 c^2) / (1 + 2.276 c + 2.577 c^2)) for c < 1.6,
  *   G1 = 1 for c >= 1.6
  * (alpha: the Beckmann width, alpha = roughness^2 as for GGX).  The cap at
- * 1 is facet's: the rational is above 1 by up to 5.7e-5 for c in (1.548,
+ * 1 is facet's: the rational is above 1 by up to 6.1e-5 (at c = 1.589) for c in (1.548,
  * 1.631), and capped the two pieces meet continuously at c = 1.6.
  * Evaluated multiplied through by (alpha sqrt(1 - N.V^2))^2 (no infinity
  * at N.V = 1).  Domain: N.V in [0, 1], alpha in [FACET_ALPHA_MIN, 1];

@@ -282,7 +282,7 @@ FACET_INLINE V_ FACET_K(g_kelemen)(V_ nol, V_ nov, V_ voh)
 
 /* Walter's rational fit of Beckmann's Smith G1, c = N.V / (alpha sqrt(1 - N.V^2)):
  *   G1 = (3.535 c + 2.181 c^2) / (1 + 2.276 c + 2.577 c^2) for c < 1.6, else 1,
- * capped at 1 (the rational exceeds 1 by up to 5.7e-5 for c in (1.548,
+ * capped at 1 (the rational exceeds 1 by up to 6.1e-5 (at c = 1.589) for c in (1.548,
  * 1.631); with the cap the two pieces meet continuously).  Multiplied
  * through by (alpha s)^2, s = sqrt((1 - n)(1 + n)), p = alpha s, q = n:
  *   G1 = q (3.535 p + 2.181 q) / (p (p + 2.276 q) + 2.577 q^2),  q < 1.6 p,
