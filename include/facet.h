@@ -335,6 +335,156 @@ float facet_smith_g2_hammon_f32(float nol, float nov, float alpha);
  * Cost: 17 ops (0 rsqrt, 1 rcp). */
 float facet_smith_vis_hammon_f32(float nol, float nov, float alpha);
 
+/* ---- shadowing and visibility: the rest of the menu -------------------------
+ * Karis's list of G terms (G as in D F G / (4 N.L N.V); the Vis kernels are
+ * G / (4 N.L N.V) already), Beckmann's Smith G1 in Walter's and Schlick's
+ * approximations, the joint approximation engines ship, and a fitted
+ * visibility.  Each is evaluated as stated (implementation error: the
+ * bound, vs the oracle of that same formula); where it approximates an
+ * exact term, its model error against that term is in the report's
+ * model-error table (`make report`) and the README. */
+#define FACET_ERR_G_IMPLICIT_F32                         8.429e-08 /* 2^-23.5 */
+#define FACET_ERR_G_NEUMANN_F32                          9.313e-10 /* 2^-30; exact, measured 0 */
+#define FACET_ERR_G_COOK_TORRANCE_F32                    2.384e-07 /* 2^-22 */
+#define FACET_ERR_G_KELEMEN_F32                          3.372e-07 /* 2^-21.5 */
+#define FACET_ERR_SMITH_G1_BECKMANN_F32                  6.744e-07 /* 2^-20.5 */
+#define FACET_ERR_SMITH_G1_SCHLICK_BECKMANN_F32          3.372e-07 /* 2^-21.5 */
+#define FACET_ERR_SMITH_VIS_JOINT_APPROX_F32             3.372e-07 /* 2^-21.5 */
+#define FACET_ERR_SMITH_VIS_FIT_F32                      4.769e-07 /* 2^-21 */
+#define FACET_ERR_G_IMPLICIT_F32_FAST                    8.429e-08 /* 2^-23.5 */
+#define FACET_ERR_G_NEUMANN_F32_FAST                     9.313e-10 /* 2^-30; exact, measured 0 */
+#define FACET_ERR_G_COOK_TORRANCE_F32_FAST               1.221e-04 /* 2^-13 */
+#define FACET_ERR_G_KELEMEN_F32_FAST                     1.221e-04 /* 2^-13 */
+#define FACET_ERR_SMITH_G1_BECKMANN_F32_FAST             1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_SMITH_G1_SCHLICK_BECKMANN_F32_FAST     1.221e-04 /* 2^-13 */
+#define FACET_ERR_SMITH_VIS_JOINT_APPROX_F32_FAST        1.221e-04 /* 2^-13 */
+#define FACET_ERR_SMITH_VIS_FIT_F32_FAST                 1.221e-04 /* 2^-13 */
+
+/* Implicit G = N.L N.V (no roughness: the plain cosine product).
+ * Domain: N.L, N.V in [0, 1]; symmetric.  G(1, 1) = 1, G(0, x) = 0.
+ * Error: <= FACET_ERR_G_IMPLICIT_F32 (2^-23.5; both tiers: one rounding).
+ * Cost: 7 ops (0 rsqrt, 0 rcp). */
+float facet_g_implicit_f32(float nol, float nov);
+
+/* Neumann G = N.L N.V / max(N.L, N.V), which is min(N.L, N.V): evaluated
+ * so, exact (0 at N.L = N.V = 0, where the quotient form is 0/0).
+ * Domain: N.L, N.V in [0, 1]; symmetric.
+ * Error: exact, measured 0; the tests enforce FACET_ERR_G_NEUMANN_F32 (2^-30), both tiers.  Cost: 7 ops (0 rsqrt, 0 rcp). */
+float facet_g_neumann_f32(float nol, float nov);
+
+/* Cook-Torrance (V-groove) G = min(1, 2 N.H N.V / V.H, 2 N.H N.L / V.H)
+ *   = min(1, 2 N.H min(N.L, N.V) / V.H).
+ * Domain: N.L, N.V in [FACET_COS_MIN, 1], N.H, V.H in [0, 1]; symmetric in
+ * N.L, N.V.  Where 2 N.H min(N.L, N.V) >= V.H the result is 1 exactly
+ * (V.H = 0 included); the reciprocal sees V.H >= FACET_COS_MIN only.
+ * Error: <= FACET_ERR_G_COOK_TORRANCE_F32 (2^-22).
+ * Cost: 23 ops (0 rsqrt, 1 rcp). */
+float facet_g_cook_torrance_f32(float nol, float nov, float noh, float voh);
+
+/* Kelemen G = N.L N.V / (V.H)^2 (Kelemen and Szirmay-Kalos: G / (4 N.L N.V)
+ * = 1 / (4 (V.H)^2) = 1 / (2 (1 + L.V))), capped at 1: for any real pair
+ * of vectors N.L N.V <= (V.H)^2, so the cap acts only on inconsistent
+ * triples (V.H = 0 gives 1).  Domain: N.L, N.V in [FACET_COS_MIN, 1], V.H
+ * in [0, 1]; symmetric in N.L, N.V.
+ * Error: <= FACET_ERR_G_KELEMEN_F32 (2^-21.5).
+ * Cost: 16 ops (0 rsqrt, 1 rcp). */
+float facet_g_kelemen_f32(float nol, float nov, float voh);
+
+/* Smith G1 for Beckmann, Walter's rational approximation of 1 / (1 + Lambda):
+ *   c = N.V / (alpha sqrt(1 - N.V^2)),
+ *   G1 = min(1, (3.535 c + 2.181 c^2) / (1 + 2.276 c + 2.577 c^2)) for c < 1.6,
+ *   G1 = 1 for c >= 1.6
+ * (alpha: the Beckmann width, alpha = roughness^2 as for GGX).  The cap at
+ * 1 is facet's: the rational is above 1 by up to 6.1e-5 (at c = 1.589) for c in (1.548,
+ * 1.631), and capped the two pieces meet continuously at c = 1.6.
+ * Evaluated multiplied through by (alpha sqrt(1 - N.V^2))^2 (no infinity
+ * at N.V = 1).  Domain: N.V in [0, 1], alpha in [FACET_ALPHA_MIN, 1];
+ * G1(0) = 0, G1(1) = 1.  Model error vs the exact Beckmann G1
+ * (1 / (1 + Lambda), Lambda from erf; facet_oracle_smith_g1_beckmann_exact):
+ * see the README's model-error table.
+ * Error: <= FACET_ERR_SMITH_G1_BECKMANN_F32 (2^-20.5).
+ * Cost: 24 ops (1 rsqrt, 1 rcp). */
+float facet_smith_g1_beckmann_f32(float nov, float alpha);
+
+/* Schlick's approximation of Beckmann's Smith G1:
+ *   G1 = N.V / (N.V (1 - k) + k),  k = alpha sqrt(2/pi).
+ * The same function as smith_g1_hammon (Schlick-GGX, k = alpha/2) at
+ * alpha' = 2 sqrt(2/pi) alpha = 1.596 alpha (for alpha <= 0.627, where
+ * alpha' <= 1).  Domain: N.V in [0, 1], alpha in [FACET_ALPHA_MIN, 1];
+ * G1(0) = 0, G1(1) = 1.  Model error vs the exact Beckmann G1: README.
+ * Error: <= FACET_ERR_SMITH_G1_SCHLICK_BECKMANN_F32 (2^-21.5).
+ * Cost: 11 ops (0 rsqrt, 1 rcp). */
+float facet_smith_g1_schlick_beckmann_f32(float nov, float alpha);
+
+/* The joint approximation of correlated Smith visibility (UE4's form):
+ *   Vis = 0.5 / (N.L (N.V (1 - a) + a) + N.V (N.L (1 - a) + a))
+ * which expands to 0.5 / ((1 - a) 2 N.L N.V + a (N.L + N.V)): the same
+ * function as smith_vis_hammon (equal within both bounds), in this form.
+ * Domain: as smith_vis_hammon; symmetric.  Model error vs exact smith_vis:
+ * Hammon's, up to 29% (README).
+ * Error: <= FACET_ERR_SMITH_VIS_JOINT_APPROX_F32 (2^-21.5).
+ * Cost: 17 ops (0 rsqrt, 1 rcp). */
+float facet_smith_vis_joint_approx_f32(float nol, float nov, float alpha);
+
+/* A fitted visibility at Hammon's cost (one reciprocal, no square root):
+ * exact correlated Smith is 0.5 / (N.V r(N.L) + N.L r(N.V)) with
+ * r(x) = sqrt(a^2 + (1 - a^2) x^2), the length of (a, x sqrt(1 - a^2));
+ * r is replaced by the largest of three lines,
+ *   r~(x) = max(k1 a, k2 a + k3 t, k4 a + k5 t),  t = x (1 + a (c1 + c2 a)),
+ *   Vis ~ 0.5 / (N.V r~(N.L) + N.L r~(N.V)),
+ * with the constants minimax-fitted against the exact r over x in
+ * [2^-8, 1], alpha in [2^-10, 1] (bench/fit/fit_vis.c reproduces them; the
+ * model error of Vis is bounded by that of r, since Vis~/Vis - 1 lies
+ * between the values of r/r~ - 1 at N.L and at N.V).
+ * Model error vs exact smith_vis: <= FACET_MODEL_ERR_SMITH_VIS_FIT over
+ * N.L, N.V in [2^-8, 1], alpha in [2^-10, 1] (tests/test_vis_fit.c).
+ * Domain: as smith_vis; symmetric.
+ * Error: <= FACET_ERR_SMITH_VIS_FIT_F32 (2^-21), vs the oracle of this formula.
+ * Cost: 28 ops (0 rsqrt, 1 rcp). */
+#define FACET_MODEL_ERR_SMITH_VIS_FIT 0.05
+float facet_smith_vis_fit_f32(float nol, float nov, float alpha);
+
+/* the fast tier (facet_<kernel>_f32_fast: see "the fast tier" below) and
+ * the batches (see "batch API" below) of the kernels above.  Fast-tier
+ * bounds (FACET_ERR_*_F32_FAST above): the kernels with a reciprocal
+ * 2^-13, smith_g1_beckmann (rsqrt and rcp) 2^-12.5, measured worst on
+ * avx512's unrefined estimates (2^-13.96 .. 2^-14.18 on this sweep). */
+float facet_g_implicit_f32_fast(float nol, float nov);
+float facet_g_neumann_f32_fast(float nol, float nov);
+float facet_g_cook_torrance_f32_fast(float nol, float nov, float noh, float voh);
+float facet_g_kelemen_f32_fast(float nol, float nov, float voh);
+float facet_smith_g1_beckmann_f32_fast(float nov, float alpha);
+float facet_smith_g1_schlick_beckmann_f32_fast(float nov, float alpha);
+float facet_smith_vis_joint_approx_f32_fast(float nol, float nov, float alpha);
+float facet_smith_vis_fit_f32_fast(float nol, float nov, float alpha);
+void facet_g_implicit_f32_batch(float *out, const float *nol, const float *nov, size_t n);
+void facet_g_neumann_f32_batch(float *out, const float *nol, const float *nov, size_t n);
+void facet_g_cook_torrance_f32_batch(float *out, const float *nol, const float *nov,
+                                     const float *noh, const float *voh, size_t n);
+void facet_g_kelemen_f32_batch(float *out, const float *nol, const float *nov, const float *voh,
+                               size_t n);
+void facet_smith_g1_beckmann_f32_batch(float *out, const float *nov, const float *alpha, size_t n);
+void facet_smith_g1_schlick_beckmann_f32_batch(float *out, const float *nov, const float *alpha,
+                                               size_t n);
+void facet_smith_vis_joint_approx_f32_batch(float *out, const float *nol, const float *nov,
+                                            const float *alpha, size_t n);
+void facet_smith_vis_fit_f32_batch(float *out, const float *nol, const float *nov,
+                                   const float *alpha, size_t n);
+void facet_g_implicit_f32_fast_batch(float *out, const float *nol, const float *nov, size_t n);
+void facet_g_neumann_f32_fast_batch(float *out, const float *nol, const float *nov, size_t n);
+void facet_g_cook_torrance_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                          const float *noh, const float *voh, size_t n);
+void facet_g_kelemen_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                    const float *voh, size_t n);
+void facet_smith_g1_beckmann_f32_fast_batch(float *out, const float *nov, const float *alpha,
+                                            size_t n);
+void facet_smith_g1_schlick_beckmann_f32_fast_batch(float *out, const float *nov,
+                                                    const float *alpha, size_t n);
+void facet_smith_vis_joint_approx_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                                 const float *alpha, size_t n);
+void facet_smith_vis_fit_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                        const float *alpha, size_t n);
+
 /* Hammon's GGX diffuse (a BRDF value, not yet times N.L):
  *   facing = 0.5 + 0.5 L.V
  *   rough  = facing (0.9 - 0.4 facing) (0.5 + N.H) / N.H

@@ -336,6 +336,132 @@ FXF_INLINE fxv_u32 fxf_fast_smith_vis_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 a
     return fxr_divb(fxv_k32(1u << 31), mt, fxv_sub32(fxv_k32(98), e), FACET_FX_MAX_VIS);
 }
 
+/* ---- shadowing and visibility: the rest of the menu ---------------------------
+ * G terms Q15 (max 1), Vis terms UQ16.16, as the precise tier. */
+
+/* N.L N.V: Q30 exact [<= 2^30], rounded once. */
+FXF_INLINE fxv_u32 fxf_fast_g_implicit(fxv_i32 nol, fxv_i32 nov)
+{
+    return fxv_shr(fxv_add32(fxv_mul32(fxf_unit(nol), fxf_unit(nov)), fxv_k32(1u << 14)), 15);
+}
+
+/* min(N.L, N.V): exact. */
+FXF_INLINE fxv_u32 fxf_fast_g_neumann(fxv_i32 nol, fxv_i32 nov)
+{
+    return fxv_min(fxf_unit(nol), fxf_unit(nov));
+}
+
+/* min(1, g / V.H): g = 2 NH min(NL, NV) Q30 exact [<= 2^31]; g / V.H Q15 =
+ * round(g / VH) (s = 0), taken where g < VH 2^15 [VH 2^15 <= 2^30], else 1. */
+FXF_INLINE fxv_u32 fxf_fast_g_cook_torrance(fxv_i32 nol, fxv_i32 nov, fxv_i32 noh, fxv_i32 voh)
+{
+    fxv_u32 vh = fxf_unit(voh);
+    fxv_u32 g = fxv_mul32(fxv_shl(fxf_unit(noh), 1), fxv_min(fxf_cos(nol), fxf_cos(nov)));
+    fxv_u32 q = fxr_div(g, fxv_max(vh, fxv_k32(1)), 0, FXF_ONE);
+    return fxv_sel(fxv_lt(g, fxv_shl(vh, 15)), q, fxv_k32(FXF_ONE));
+}
+
+/* min(1, p / q), p = NL NV, q = VH^2, both Q30 exact [<= 2^30]. */
+FXF_INLINE fxv_u32 fxf_fast_g_kelemen(fxv_i32 nol, fxv_i32 nov, fxv_i32 voh)
+{
+    fxv_u32 vh = fxf_unit(voh), p = fxv_mul32(fxf_cos(nol), fxf_cos(nov)), q = fxv_mul32(vh, vh);
+    fxv_u32 g = fxr_div(p, fxv_max(q, fxv_k32(1)), 15, FXF_ONE);
+    return fxv_sel(fxv_lt(p, q), g, fxv_k32(FXF_ONE));
+}
+
+/* Walter's Beckmann G1 in c = q / p, p = a sqrt(1 - n^2), q = n:
+ *   W = (2^15 - N)(2^15 + N) Q30 exact; the branch c < 1.6 from the high
+ *   words (p^2 Q30 = hi(2 A^2, 2 W), 25 q^2 / 64 = 25 (N^2 >> 6)): where it
+ *   is misjudged, c is within 2^-20 of 1.6, where both pieces are 1 (the
+ *   cap holds for c in (1.548, 1.631));
+ *   sqrt(1 - n^2) = s 2^-(20 + h) from the table (c = 4W, floored at 2^16:
+ *   only N = 2^15 is below, and it takes the other branch);
+ *   pm = hi(A 2^16, s 2^12) = A s / 16, p = pm 2^-(31 + h) [pm >= 2^20];
+ *   c Q29 = N / pm 2^(45 + h), one fxr_div saturated at 1.6 2^29;
+ *   num Q59 = 3.535 c + 2.181 c^2, den Q59 = 1 + 2.276 c + 2.577 c^2, in
+ *   64 bits [c Q29, c^2 Q29 = hi(4 c, 2 c) <= 2.56 2^29, constants Q30:
+ *   each sum < 2^63], their top words, one fxr_div: G1 Q15 =
+ *   nt / dt 2^(15 + ed - en), saturated at 1. */
+#define FXW_WALTER_A 3795677348u /* round(3.535 2^30) */
+#define FXW_WALTER_B 2341830918u /* round(2.181 2^30) */
+#define FXW_WALTER_C 2443836391u /* round(2.276 2^30) */
+#define FXW_WALTER_D 2767032680u /* round(2.577 2^30) */
+FXF_INLINE fxv_u32 fxf_fast_smith_g1_beckmann(fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 n = fxf_unit(nov), a = fxf_alpha(alpha);
+    fxv_u32 w = fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), n), fxv_add32(fxv_k32(FXF_ONE), n));
+    fxv_u32 p2 = fxw_mulhi(fxv_shl(fxv_mul32(a, a), 1), fxv_shl(w, 1));
+    fxv_u32 branch = fxv_lt(fxv_mul32(fxv_shr(fxv_mul32(n, n), 6), fxv_k32(25)), p2);
+    fxf_root r = fxf_sqrt32(fxv_max(fxv_shl(w, 2), fxv_k32(1u << 16)));
+    fxv_u32 pm = fxw_mulhi(fxv_shl(a, 16), fxv_shl(r.s, 12));
+    fxv_u32 c = fxr_divb(n, pm, fxv_sub32(fxv_k32(50), r.h), 858993459u); /* 1.6 2^29 */
+    fxv_u32 cc = fxw_mulhi(fxv_shl(c, 2), fxv_shl(c, 1));
+    fxv_u32 en, ed, nt, dt, g;
+    nt = fxw_top(fxv_add64(fxv_mulw(c, fxv_k32(FXW_WALTER_A)), fxv_mulw(cc, fxv_k32(FXW_WALTER_B))), &en);
+    dt = fxw_top(fxv_add64(fxv_add64(fxv_mulw(fxv_k32(1u << 29), fxv_k32(1u << 30)), fxv_mulw(c, fxv_k32(FXW_WALTER_C))),
+                           fxv_mulw(cc, fxv_k32(FXW_WALTER_D))), &ed);
+    g = fxr_divb(nt, dt, fxv_sub32(fxv_add32(fxv_k32(80), en), ed), FXF_ONE);
+    return fxv_sel(branch, g, fxv_k32(FXF_ONE));
+}
+
+/* n / (n (1 - k) + k), k = a sqrt(2/pi): k Q31 = hi(A 2^16, round(sqrt(2/pi)
+ * 2^32)) [<= 0.8 2^31]; den Q46 = N (2^31 - k) + k 2^15 exact in 64 bits
+ * [< 2^47, >= k 2^15 >= 2^36], its top word dt (den ~ dt 2^(32 - e)); G1
+ * Q15 = N 2^46 / den = N / dt 2^(14 + e). */
+#define FXW_SQRT_2_PI 3426888095u /* round(sqrt(2/pi) 2^32) */
+FXF_INLINE fxv_u32 fxf_fast_smith_g1_schlick_beckmann(fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 n = fxf_unit(nov), e;
+    fxv_u32 k = fxw_mulhi(fxv_shl(fxf_alpha(alpha), 16), fxv_k32(FXW_SQRT_2_PI));
+    fxv_u32 dt = fxw_top(fxv_add64(fxv_mulw(n, fxv_sub32(fxv_k32(1u << 31), k)), fxv_mulw(k, fxv_k32(1u << 15))), &e);
+    return fxr_divb(n, dt, fxv_sub32(fxv_k32(81), e), FXF_ONE);
+}
+
+/* The joint approximation is Hammon's visibility: the same code and bits. */
+FXF_INLINE fxv_u32 fxf_fast_smith_vis_joint_approx(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+{
+    return fxf_fast_smith_vis_hammon(nol, nov, alpha);
+}
+
+/* The fitted visibility, 1 / (nv R(nl) + nl R(nv)), in Q30 stages (a
+ * product by a Q15 value y is hi(v, Y 2^16) 2 = v y, Q30 in, Q30 out, its
+ * lowest bit 0 [Y 2^16 <= 2^31; every v below < 2^32]):
+ *   K_i a Q30 [K_i Q30 < 2^31.05: <= 2.07 2^30];
+ *   sigma Q30 = 2^30 + C1 a - |C2| a a [in (0.35, 1.08) 2^30];
+ *   S_i = K_i sigma = hi(2 K_i, 2 sigma) Q30 [<= 2.12 2^30];
+ *   R(x) = max(K1 a, K2 a + S3 x, K4 a + S5 x) Q30 [<= 3.3 2^30 < 2^32;
+ *   >= K1 a >= 2^21: truncations <= 2^-19 relative];
+ *   den Q45 = NV R(NL) + NL R(NV) in 64 bits [< 2^48, >= 2^29], its top
+ *   word dt: Vis 2^16 = 2^61 / den45 = 2^31 / dt 2^(e - 2). */
+#define FXW_VFIT_K1 2215746816u /* the float constants of facet/detail/vis_fit.h, exact in Q30 */
+#define FXW_VFIT_K2 648049856u
+#define FXW_VFIT_K3 2104759296u
+#define FXW_VFIT_K4 1724301312u
+#define FXW_VFIT_K5 1380932736u
+#define FXW_VFIT_C1 82209328u
+#define FXW_VFIT_C2 779814784u /* |C2| (C2 < 0) */
+FXF_INLINE fxv_u32 fxw_by_q15(fxv_u32 v, fxv_u32 y16) { return fxv_shl(fxw_mulhi(v, y16), 1); }
+
+FXF_INLINE fxv_u32 fxw_vis_fit_r(fxv_u32 x, fxv_u32 ka1, fxv_u32 ka2, fxv_u32 ka4, fxv_u32 s3, fxv_u32 s5)
+{
+    fxv_u32 x16 = fxv_shl(x, 16);
+    return fxv_max(ka1, fxv_max(fxv_add32(ka2, fxw_by_q15(s3, x16)), fxv_add32(ka4, fxw_by_q15(s5, x16))));
+}
+
+FXF_INLINE fxv_u32 fxf_fast_smith_vis_fit(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a16 = fxv_shl(fxf_alpha(alpha), 16), e;
+    fxv_u32 c2a = fxw_by_q15(fxv_k32(FXW_VFIT_C2), a16);
+    fxv_u32 sg = fxv_sub32(fxv_add32(fxv_k32(1u << 30), fxw_by_q15(fxv_k32(FXW_VFIT_C1), a16)), fxw_by_q15(c2a, a16));
+    fxv_u32 ka1 = fxw_by_q15(fxv_k32(FXW_VFIT_K1), a16), ka2 = fxw_by_q15(fxv_k32(FXW_VFIT_K2), a16);
+    fxv_u32 ka4 = fxw_by_q15(fxv_k32(FXW_VFIT_K4), a16);
+    fxv_u32 s3 = fxw_mulhi(fxv_k32(2 * FXW_VFIT_K3), fxv_shl(sg, 1));
+    fxv_u32 s5 = fxw_mulhi(fxv_k32(2 * FXW_VFIT_K5), fxv_shl(sg, 1));
+    fxv_u32 rl = fxw_vis_fit_r(nl, ka1, ka2, ka4, s3, s5), rv = fxw_vis_fit_r(nv, ka1, ka2, ka4, s3, s5);
+    fxv_u32 dt = fxw_top(fxv_add64(fxv_mulw(nv, rl), fxv_mulw(nl, rv)), &e);
+    return fxr_divb(fxv_k32(1u << 31), dt, fxv_sub32(fxv_k32(97), e), FACET_FX_MAX_VIS);
+}
+
 /* ---- Hammon's diffuse and the whole model: 32-bit fixed stages -----------------
  * Here every stage is a 32-bit value x with a scale 2^-E, E a compile-time
  * constant or an exponent lane; a product is the high word of one 32x32->64

@@ -200,6 +200,118 @@ uint32_t facet_smith_vis_hammon_fx(int32_t nol, int32_t nov, int32_t alpha)
                          FACET_FX_VIS_FRAC, FACET_FX_MAX_VIS);
 }
 
+/* ---- shadowing and visibility: the rest of the menu ----------------------
+ * Q15 inputs; the G terms are Q15 (max 1), the Vis terms UQ16.16. */
+
+/* N.L N.V: Q30 exact [<= 2^30], rounded once. */
+int32_t facet_g_implicit_fx(int32_t nol, int32_t nov)
+{
+    return (int32_t)((unit_(nol) * unit_(nov) + (1u << 14)) >> 15);
+}
+
+/* N.L N.V / max(N.L, N.V) = min(N.L, N.V): exact. */
+int32_t facet_g_neumann_fx(int32_t nol, int32_t nov)
+{
+    uint32_t a = unit_(nol), b = unit_(nov);
+    return (int32_t)(a < b ? a : b);
+}
+
+/* min(1, g / V.H), g = 2 N.H min(N.L, N.V) Q30 exact [<= 2^31]; g >= V.H
+ * (V.H = 0 included) gives 1, else one rounded division. */
+int32_t facet_g_cook_torrance_fx(int32_t nol, int32_t nov, int32_t noh, int32_t voh)
+{
+    uint32_t nl = cos_(nol), nv = cos_(nov), vh = unit_(voh);
+    uint32_t g = 2 * unit_(noh) * (nl < nv ? nl : nv);
+    if (g >= vh << 15)
+        return ONE;
+    return (int32_t)fxf_div_fixed(fxf_u64(g, -30), fxf_u64(vh, -15), 15, ONE);
+}
+
+/* min(1, N.L N.V / V.H^2): both Q30 exact [<= 2^30]. */
+int32_t facet_g_kelemen_fx(int32_t nol, int32_t nov, int32_t voh)
+{
+    uint32_t p = cos_(nol) * cos_(nov), vh = unit_(voh), q = vh * vh;
+    if (p >= q)
+        return ONE;
+    return (int32_t)fxf_div_fixed(fxf_u64(p, -30), fxf_u64(q, -30), 15, ONE);
+}
+
+/* Walter's Beckmann G1 (facet.h), with p = a sqrt(1 - n^2), q = n:
+ * q < 1.6 p decided exactly as 25 N^2 2^24 < A^2 W, W = (2^15 - N)(2^15 + N)
+ * [both < 2^60]; then G1 = min(1, q (3.535 p + 2.181 q) / (p (p + 2.276 q)
+ * + 2.577 q^2)) in fxf (every term >= 0), the constants rounded to Q30. */
+#define WALTER_A_ 3795677348u /* round(3.535 2^30) */
+#define WALTER_B_ 2341830918u /* round(2.181 2^30) */
+#define WALTER_C_ 2443836391u /* round(2.276 2^30) */
+#define WALTER_D_ 2767032680u /* round(2.577 2^30) */
+int32_t facet_smith_g1_beckmann_fx(int32_t nov, int32_t alpha)
+{
+    uint32_t n = unit_(nov), a = alpha_(alpha), w = (ONE - n) * (ONE + n);
+    fxf p, q, num, den;
+    if (!(fx_mul64(25 * n, n) << 24 < mul64x32(fx_mul64(a, a), w)))
+        return ONE;
+    p = fxf_mul(fxf_u64(a, -15), fxf_sqrt64(w, -30));
+    q = fxf_u64(n, -15);
+    num = fxf_mul(q, fxf_add(fxf_mul(fxf_u64(WALTER_A_, -30), p), fxf_mul(fxf_u64(WALTER_B_, -30), q)));
+    den = fxf_add(fxf_mul(p, fxf_add(p, fxf_mul(fxf_u64(WALTER_C_, -30), q))),
+                  fxf_mul(fxf_u64(WALTER_D_, -30), fxf_mul(q, q)));
+    return (int32_t)fxf_div_fixed(num, den, 15, ONE);
+}
+
+/* n / (n (1 - k) + k), k = a sqrt(2/pi): k Q47 = A round(sqrt(2/pi) 2^32)
+ * [< 2^47]; den Q62 = N (2^47 - k) + k 2^15 exact [< 2^63]. */
+#define SQRT_2_PI_32_ 3426888095u /* round(sqrt(2/pi) 2^32) */
+int32_t facet_smith_g1_schlick_beckmann_fx(int32_t nov, int32_t alpha)
+{
+    uint32_t n = unit_(nov);
+    uint64_t k = fx_mul64(alpha_(alpha), SQRT_2_PI_32_);
+    uint64_t den = mul64x32((1ull << 47) - k, n) + (k << 15);
+    return (int32_t)fxf_div_fixed(fxf_u64(n, -15), fxf_u64(den, -62), 15, ONE);
+}
+
+/* 0.5 / (nl (nv (1 - a) + a) + nv (nl (1 - a) + a)) = 0.5 / m, Hammon's m:
+ * the same function, the same exact m45, the same bits. */
+uint32_t facet_smith_vis_joint_approx_fx(int32_t nol, int32_t nov, int32_t alpha)
+{
+    return facet_smith_vis_hammon_fx(nol, nov, alpha);
+}
+
+/* The fitted visibility: 1 / (nv R(nl) + nl R(nv)), R(x) = max(K1 a, K2 a +
+ * K3 t, K4 a + K5 t), t = x sigma, sigma = 1 + C1 a - |C2| a^2 (the float
+ * constants of facet/detail/vis_fit.h are exact in Q30).  sigma Q60 exact
+ * [2^60 + C1 A 2^15 - |C2| A^2, in (0.35, 1.08) 2^60]; the rest fxf (all
+ * terms >= 0). */
+#define VFIT_K1_ 2215746816u
+#define VFIT_K2_ 648049856u
+#define VFIT_K3_ 2104759296u
+#define VFIT_K4_ 1724301312u
+#define VFIT_K5_ 1380932736u
+#define VFIT_C1_ 82209328u
+#define VFIT_C2_ 779814784u /* |C2| (C2 < 0) */
+static fxf fxf_max_(fxf a, fxf b) /* both normalised and > 0 */
+{
+    if (a.e != b.e)
+        return a.e > b.e ? a : b;
+    return a.m >= b.m ? a : b;
+}
+static fxf vis_fit_r_(uint32_t x, fxf ka1, fxf ka2, fxf ka4, fxf s3, fxf s5)
+{
+    fxf xf = fxf_u64(x, -15);
+    return fxf_max_(ka1, fxf_max_(fxf_add(ka2, fxf_mul(s3, xf)), fxf_add(ka4, fxf_mul(s5, xf))));
+}
+uint32_t facet_smith_vis_fit_fx(int32_t nol, int32_t nov, int32_t alpha)
+{
+    uint32_t nl = cos_(nol), nv = cos_(nov), a = alpha_(alpha);
+    uint64_t sg = (1ull << 60) + (fx_mul64(VFIT_C1_, a) << 15) - mul64x32(fx_mul64(a, a), VFIT_C2_);
+    fxf sgf = fxf_u64(sg, -60);
+    fxf ka1 = fxf_u64(fx_mul64(VFIT_K1_, a), -45), ka2 = fxf_u64(fx_mul64(VFIT_K2_, a), -45);
+    fxf ka4 = fxf_u64(fx_mul64(VFIT_K4_, a), -45);
+    fxf s3 = fxf_mul(fxf_u64(VFIT_K3_, -30), sgf), s5 = fxf_mul(fxf_u64(VFIT_K5_, -30), sgf);
+    fxf rl = vis_fit_r_(nl, ka1, ka2, ka4, s3, s5), rv = vis_fit_r_(nv, ka1, ka2, ka4, s3, s5);
+    fxf den = fxf_add(fxf_mul(fxf_u64(nv, -15), rl), fxf_mul(fxf_u64(nl, -15), rv));
+    return fxf_div_fixed(fxf_u64(1, 0), den, FACET_FX_VIS_FRAC, FACET_FX_MAX_VIS);
+}
+
 /* ---- Hammon's diffuse -------------------------------------------------------
  * With t = 1 + L.V (raised, t31 Q31 exact) and s = nl + nv:
  *   facing (0.9 - 0.4 facing) = t (4.5 - t) / 10    (facing = t/2)

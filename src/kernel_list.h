@@ -3,7 +3,7 @@
  *
  *   FACET_EACH_INPUT(n, F)   F(0), F(1), ..., F(n - 1): one item per input,
  *                            for parameter lists, argument lists and rows
- *                            (n is a kernel's arity: 1, 2, 3, 5 or 6)
+ *                            (n is a kernel's arity: 1 to 6)
  *   FACET_IF_FX(fx_type, ...)  the rest of the arguments where the kernel
  *                            has a fixed-point version, nothing where its
  *                            fx_type is `none`
@@ -25,6 +25,7 @@
 #define FACET_EACH_INPUT_1(F) F(0)
 #define FACET_EACH_INPUT_2(F) F(0), F(1)
 #define FACET_EACH_INPUT_3(F) F(0), F(1), F(2)
+#define FACET_EACH_INPUT_4(F) F(0), F(1), F(2), F(3)
 #define FACET_EACH_INPUT_5(F) F(0), F(1), F(2), F(3), F(4)
 #define FACET_EACH_INPUT_6(F) F(0), F(1), F(2), F(3), F(4), F(5)
 
@@ -44,6 +45,7 @@
 #define FACET_MAP_INPUTS_1(F, a) F a
 #define FACET_MAP_INPUTS_2(F, a, b) F a, F b
 #define FACET_MAP_INPUTS_3(F, a, b, c) F a, F b, F c
+#define FACET_MAP_INPUTS_4(F, a, b, c, d) F a, F b, F c, F d
 #define FACET_MAP_INPUTS_5(F, a, b, c, d, e) F a, F b, F c, F d, F e
 #define FACET_MAP_INPUTS_6(F, a, b, c, d, e, f) F a, F b, F c, F d, F e, F f
 

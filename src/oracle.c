@@ -3,6 +3,7 @@
 #include <math.h>
 #include "facet/common.h"
 #include "facet/oracle.h"
+#include "facet/detail/vis_fit.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -554,6 +555,95 @@ double facet_oracle_smith_vis_hammon(double nol, double nov, double alpha)
 {
     double nl = cosd(nol), nv = cosd(nov);
     return facet_oracle_smith_g2_hammon(nl, nv, alpha) / (4.0 * nl * nv);
+}
+
+/* ---- shadowing and visibility: the rest of the menu ------------------------ */
+
+double facet_oracle_g_implicit(double nol, double nov)
+{
+    return unitd(nol) * unitd(nov);
+}
+
+/* Karis's form; 0 where both are 0 (the limit along any path is 0) */
+double facet_oracle_g_neumann(double nol, double nov)
+{
+    double nl = unitd(nol), nv = unitd(nov), m = fmax(nl, nv);
+    return m > 0.0 ? nl * nv / m : 0.0;
+}
+
+double facet_oracle_g_cook_torrance(double nol, double nov, double noh, double voh)
+{
+    double nl = cosd(nol), nv = cosd(nov), nh = unitd(noh), vh = unitd(voh);
+    double g;
+    if (vh == 0.0)
+        return 1.0; /* both ratios are +Inf (N.H > 0) or 0/0: the cap */
+    g = fmin(2.0 * nh * nv / vh, 2.0 * nh * nl / vh);
+    return fmin(1.0, g);
+}
+
+double facet_oracle_g_kelemen(double nol, double nov, double voh)
+{
+    double nl = cosd(nol), nv = cosd(nov), vh = unitd(voh);
+    if (vh == 0.0)
+        return 1.0;
+    return fmin(1.0, nl * nv / (vh * vh));
+}
+
+/* c = N.V / (alpha sqrt(1 - N.V^2)); 1 - N.V^2 as (1 - n)(1 + n) */
+static double beckmann_c(double n, double a)
+{
+    double w = (1.0 - n) * (1.0 + n);
+    return w > 0.0 ? n / (a * sqrt(w)) : INFINITY;
+}
+
+double facet_oracle_smith_g1_beckmann(double nov, double alpha)
+{
+    double c = beckmann_c(unitd(nov), alphad(alpha));
+    if (!(c < 1.6))
+        return 1.0;
+    return fmin(1.0, (3.535 * c + 2.181 * c * c) / (1.0 + 2.276 * c + 2.577 * c * c));
+}
+
+/* 1 / (1 + Lambda), Lambda = (erf(c) - 1)/2 + exp(-c^2) / (2 c sqrt(pi)),
+ * with erf(c) - 1 = -erfc(c) (no cancellation in erf itself) */
+double facet_oracle_smith_g1_beckmann_exact(double nov, double alpha)
+{
+    double n = unitd(nov), c = beckmann_c(n, alphad(alpha)), lambda;
+    if (n == 0.0)
+        return 0.0;
+    if (isinf(c))
+        return 1.0;
+    lambda = 0.5 * (exp(-c * c) / (c * sqrt(PI)) - erfc(c));
+    return 1.0 / (1.0 + lambda);
+}
+
+double facet_oracle_smith_g1_schlick_beckmann(double nov, double alpha)
+{
+    double n = unitd(nov), k = alphad(alpha) * sqrt(2.0 / PI);
+    return n / (n * (1.0 - k) + k);
+}
+
+double facet_oracle_smith_vis_joint_approx(double nol, double nov, double alpha)
+{
+    double nl = cosd(nol), nv = cosd(nov), a = alphad(alpha);
+    return 0.5 / (nl * (nv * (1.0 - a) + a) + nv * (nl * (1.0 - a) + a));
+}
+
+/* r~(x) = max(k1 a, k2 a + k3 t, k4 a + k5 t), t = x (1 + a (c1 + c2 a)),
+ * with the constants of facet/detail/vis_fit.h (stored as 2 k_i) */
+static double vis_fit_r(double x, double a)
+{
+    double t = x * (1.0 + a * ((double)FACET_VIS_FIT_C1 + (double)FACET_VIS_FIT_C2 * a));
+    double l1 = 0.5 * (double)FACET_VIS_FIT_K1 * a;
+    double l2 = 0.5 * ((double)FACET_VIS_FIT_K2 * a + (double)FACET_VIS_FIT_K3 * t);
+    double l3 = 0.5 * ((double)FACET_VIS_FIT_K4 * a + (double)FACET_VIS_FIT_K5 * t);
+    return fmax(l1, fmax(l2, l3));
+}
+
+double facet_oracle_smith_vis_fit(double nol, double nov, double alpha)
+{
+    double nl = cosd(nol), nv = cosd(nov), a = alphad(alpha);
+    return 0.5 / (nv * vis_fit_r(nl, a) + nl * vis_fit_r(nv, a));
 }
 
 /* 1 - (1 - x)^5 as -expm1(5 log1p(-x)): 1 - pow(1 - x, 5) cancels for

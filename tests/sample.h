@@ -8,6 +8,7 @@
 #include <string.h>
 #include <math.h>
 #include "facet.h"
+#include "../src/kernel_list.h"
 
 typedef struct { uint64_t s; } smp_rng;
 
@@ -89,12 +90,33 @@ static inline int smp_two_cos(const facet_kernel *k)
     return !strcmp(k->inputs[0], "nol");
 }
 
+/* each input's domain class, as src/kernels.def gives it (COS: the cosine
+ * floor FACET_COS_MIN; UNIT: 0; ...) */
+#define SMP_DOMAIN_CLASS_(input, domain) #domain
+static const struct smp_domains_ {
+    const char *name, *cls[FACET_MAX_INPUTS];
+} smp_domains_[] = {
+#define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...) \
+    { #name, { FACET_MAP_INPUTS(n, SMP_DOMAIN_CLASS_, __VA_ARGS__) } },
+#include "../src/kernels.def"
+#undef FACET_KERNEL
+};
+
+static inline const char *smp_domain_class(const facet_kernel *k, int i)
+{
+    size_t j;
+    for (j = 0; j < sizeof smp_domains_ / sizeof smp_domains_[0]; j++)
+        if (!strcmp(smp_domains_[j].name, k->name))
+            return smp_domains_[j].cls[i];
+    return "UNIT";
+}
+
 static inline float smp_domain_lo(const facet_kernel *k, int i)
 {
-    const char *n = k->inputs[i];
+    const char *n = k->inputs[i], *c = smp_domain_class(k, i);
     if (!strcmp(n, "lov") || !strcmp(n, "toh") || !strcmp(n, "boh")) return -1.0f;
     if (!strncmp(n, "alpha", 5)) return FACET_ALPHA_MIN;
-    if (smp_two_cos(k) && (!strcmp(n, "nol") || !strcmp(n, "nov"))) return FACET_COS_MIN;
+    if (!strcmp(c, "COS")) return FACET_COS_MIN;
     return 0.0f;
 }
 

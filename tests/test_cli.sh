@@ -22,7 +22,9 @@ trap 'rm -rf "$tmp"' EXIT
 expect "list ggx_d" "ggx_d noh alpha" "$(grep '^ggx_d ' "$tmp/list")"
 expect "list brdf_hammon" "brdf_hammon nol nov lov alpha f0 albedo" "$(grep '^brdf_hammon ' "$tmp/list")"
 for k in noh_from_dots loh_from_dots fresnel_schlick ggx_d smith_g1 smith_g2 smith_g2_uncorrelated \
-         smith_vis smith_g1_hammon smith_g2_hammon smith_vis_hammon diffuse_hammon brdf_hammon; do
+         smith_vis smith_g1_hammon smith_g2_hammon smith_vis_hammon diffuse_hammon brdf_hammon \
+         g_implicit g_neumann g_cook_torrance g_kelemen smith_g1_beckmann smith_g1_schlick_beckmann \
+         smith_vis_joint_approx smith_vis_fit; do
     grep -q "^$k " "$tmp/list" && ok || bad "list lacks $k"
 done
 

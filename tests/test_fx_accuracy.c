@@ -325,6 +325,11 @@ int main(void)
             { "smith_g2_hammon", "alpha", -1 }, { "smith_vis_hammon", "nov", -1 },
             { "smith_vis_hammon", "alpha", -1 }, { "diffuse_hammon", "albedo", 1 },
             { "brdf_hammon", "f0", 1 }, { "brdf_hammon", "albedo", 1 },
+            { "g_implicit", "nol", 1 }, { "g_neumann", "nov", 1 }, { "g_cook_torrance", "noh", 1 },
+            { "g_cook_torrance", "voh", -1 }, { "g_kelemen", "nol", 1 }, { "g_kelemen", "voh", -1 },
+            { "smith_g1_beckmann", "nov", 1 }, { "smith_g1_beckmann", "alpha", -1 },
+            { "smith_g1_schlick_beckmann", "nov", 1 }, { "smith_g1_schlick_beckmann", "alpha", -1 },
+            { "smith_vis_joint_approx", "nov", -1 }, { "smith_vis_fit", "nov", -1 },
         };
         for (i = 0; i < sizeof mono / sizeof mono[0]; i++)
             monotonic(facet_fx_kernel_find(mono[i].k), mono[i].in, mono[i].dir);

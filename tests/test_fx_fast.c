@@ -27,9 +27,13 @@ typedef uint64_t (*fast_fn)(const int32_t *in);
 #define W1(k, T) static uint64_t f_##k(const int32_t *x) { return (uint64_t)(T)facet_##k##_fx_fast(x[0]); }
 #define W2(k, T) static uint64_t f_##k(const int32_t *x) { return (uint64_t)(T)facet_##k##_fx_fast(x[0], x[1]); }
 #define W3(k, T) static uint64_t f_##k(const int32_t *x) { return (uint64_t)(T)facet_##k##_fx_fast(x[0], x[1], x[2]); }
+#define W4(k, T) static uint64_t f_##k(const int32_t *x) { return (uint64_t)(T)facet_##k##_fx_fast(x[0], x[1], x[2], x[3]); }
 W3(noh_from_dots, uint32_t) W1(loh_from_dots, uint32_t) W2(fresnel_schlick, uint32_t) W2(ggx_d, uint32_t)
 W2(smith_g1, uint32_t) W3(smith_g2, uint32_t) W3(smith_g2_uncorrelated, uint32_t) W3(smith_vis, uint32_t)
 W2(smith_g1_hammon, uint32_t) W3(smith_g2_hammon, uint32_t) W3(smith_vis_hammon, uint32_t)
+W2(g_implicit, uint32_t) W2(g_neumann, uint32_t) W4(g_cook_torrance, uint32_t) W3(g_kelemen, uint32_t)
+W2(smith_g1_beckmann, uint32_t) W2(smith_g1_schlick_beckmann, uint32_t) W3(smith_vis_joint_approx, uint32_t)
+W3(smith_vis_fit, uint32_t)
 static uint64_t f_diffuse_hammon(const int32_t *x) { return facet_diffuse_hammon_fx_fast(x[0], x[1], x[2], x[3], x[4]); }
 static uint64_t f_brdf_hammon(const int32_t *x) { return facet_brdf_hammon_fx_fast(x[0], x[1], x[2], x[3], x[4], x[5]); }
 
@@ -45,6 +49,14 @@ static const struct { const char *name; fast_fn fn; double err; } fast[] = {
     { "smith_g1_hammon", f_smith_g1_hammon, FACET_FX_FAST_ERR_SMITH_G1_HAMMON },
     { "smith_g2_hammon", f_smith_g2_hammon, FACET_FX_FAST_ERR_SMITH_G2_HAMMON },
     { "smith_vis_hammon", f_smith_vis_hammon, FACET_FX_FAST_ERR_SMITH_VIS_HAMMON },
+    { "g_implicit", f_g_implicit, FACET_FX_FAST_ERR_G_IMPLICIT },
+    { "g_neumann", f_g_neumann, FACET_FX_FAST_ERR_G_NEUMANN },
+    { "g_cook_torrance", f_g_cook_torrance, FACET_FX_FAST_ERR_G_COOK_TORRANCE },
+    { "g_kelemen", f_g_kelemen, FACET_FX_FAST_ERR_G_KELEMEN },
+    { "smith_g1_beckmann", f_smith_g1_beckmann, FACET_FX_FAST_ERR_SMITH_G1_BECKMANN },
+    { "smith_g1_schlick_beckmann", f_smith_g1_schlick_beckmann, FACET_FX_FAST_ERR_SMITH_G1_SCHLICK_BECKMANN },
+    { "smith_vis_joint_approx", f_smith_vis_joint_approx, FACET_FX_FAST_ERR_SMITH_VIS_JOINT_APPROX },
+    { "smith_vis_fit", f_smith_vis_fit, FACET_FX_FAST_ERR_SMITH_VIS_FIT },
     { "diffuse_hammon", f_diffuse_hammon, FACET_FX_FAST_ERR_DIFFUSE_HAMMON },
     { "brdf_hammon", f_brdf_hammon, FACET_FX_FAST_ERR_BRDF_HAMMON },
 };

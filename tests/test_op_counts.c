@@ -48,9 +48,17 @@ static float cnt_getmant(float x) { int e; n_ops++; return 2.0f * (float)frexp(x
 
 typedef struct { const char *name; long ops, rcp, rsqrt; } counted;
 
+/* one entry per kernel of the list */
+enum {
+    N_KERNELS_ = 0
+#define FACET_KERNEL(...) + 1
+#include "../src/kernels.def"
+#undef FACET_KERNEL
+};
+
 int main(void)
 {
-    static counted c[32];
+    static counted c[N_KERNELS_];
     int n = 0, i;
     char *hdr;
     long len;

@@ -856,7 +856,8 @@ static void rnd_triple(smp_rng *r, double *nl, double *nv, double *lv)
 static const char *const sym_names[] = {
     "noh_from_dots", "smith_g2", "smith_g2_uncorrelated", "smith_vis", "smith_g2_hammon",
     "smith_vis_hammon", "diffuse_hammon", "brdf_hammon", "diffuse_burley", "diffuse_oren_nayar",
-    "diffuse_hammon_hybrid", "diffuse_hammon_cheap",
+    "diffuse_hammon_hybrid", "diffuse_hammon_cheap", "g_implicit", "g_neumann", "g_cook_torrance",
+    "g_kelemen", "smith_vis_joint_approx", "smith_vis_fit",
 };
 
 static int input_index(const facet_kernel *k, const char *name)

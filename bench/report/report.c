@@ -401,64 +401,118 @@ static const tsv *arm_of(const char *what, const char *kernel, const char *cpu)
     return NULL;
 }
 
-/* ---- model error of the approximations ------------------------------------- */
+/* ---- model error of the approximations -------------------------------------
+ * Table-driven: one line per (approximation, exact reference, domain).  An
+ * entry names the two double oracles as functions of its axes' values x[]
+ * (the M2 / M3 wrappers below adapt a facet_oracle_* of 2 or 3 inputs
+ * taken in axis order), the kernels whose cost the table shows, and up to
+ * three axes (name, low end, high end, log-spaced or linear; the sweep
+ * takes half its points log-spaced and half linear on each axis, so both
+ * the grazing ends and the middle are dense).  Adding a pair is one line. */
+typedef struct model_axis { const char *name; double lo, hi; } model_axis;
 
 typedef struct tradeoff {
     const char *term, *approx, *exact;
     const char *cheap_kernel, *exact_kernel; /* for the cost columns */
-    double max_rel, mean_rel, arg[3];         /* arg: N.L, N.V, alpha */
+    double (*f_approx)(const double *x), (*f_exact)(const double *x);
+    int n_axes;
+    model_axis axes[3];
+    double max_rel, mean_rel, arg[3];
     long n;
 } tradeoff;
 
-static double approx_err(int which, double nl, double nv, double lv, double a)
-{
-    switch (which) {
-    case 0: return bench_rel_err(facet_oracle_smith_vis_hammon(nl, nv, a), facet_oracle_smith_vis(nl, nv, a));
-    case 1: return bench_rel_err(facet_oracle_smith_g2_hammon(nl, nv, a), facet_oracle_smith_g2(nl, nv, a));
-    case 2: return bench_rel_err(facet_oracle_smith_g1_hammon(nv, a), facet_oracle_smith_g1(nv, a));
-    case 3: return bench_rel_err(facet_oracle_smith_g2_uncorrelated(nl, nv, a), facet_oracle_smith_g2(nl, nv, a));
-    case 4: return bench_rel_err(facet_oracle_lambert(0.8), facet_oracle_diffuse_hammon(nl, nv, lv, a, 0.8));
-    default: return bench_rel_err(facet_oracle_brdf_hammon(nl, nv, lv, a, 0.04, 0.8),
-                                  bench_oracle_brdf_exact(nl, nv, lv, a, 0.04, 0.8));
-    }
-}
+#define M2(fn) static double m2_##fn(const double *x) { return facet_oracle_##fn(x[0], x[1]); }
+#define M3(fn) static double m3_##fn(const double *x) { return facet_oracle_##fn(x[0], x[1], x[2]); }
+M3(smith_vis) M3(smith_vis_hammon) M3(smith_vis_joint_approx) M3(smith_vis_fit)
+M3(smith_g2) M3(smith_g2_hammon) M3(smith_g2_uncorrelated)
+M2(smith_g1) M2(smith_g1_hammon) M2(smith_g1_beckmann) M2(smith_g1_beckmann_exact) M2(smith_g1_schlick_beckmann)
+M2(fresnel_schlick) M2(fresnel_schlick_sg) M2(fresnel_cook_torrance)
+M3(smith_g1_gtr) M3(smith_g1_gtr_exact)
+/* the diffuse and whole-BRDF rows: L.V = N.L N.V (azimuths 90 deg apart), f0 = 0.04, albedo = 0.8 */
+static double m_lambert(const double *x) { (void)x; return facet_oracle_lambert(0.8); }
+static double m_diffuse_hammon(const double *x) { return facet_oracle_diffuse_hammon(x[0], x[1], x[0] * x[1], x[2], 0.8); }
+static double m_brdf_hammon(const double *x) { return facet_oracle_brdf_hammon(x[0], x[1], x[0] * x[1], x[2], 0.04, 0.8); }
+static double m_brdf_exact(const double *x) { return bench_oracle_brdf_exact(x[0], x[1], x[0] * x[1], x[2], 0.04, 0.8); }
 
-#define N_TRADE 6
-static tradeoff trades[N_TRADE] = {
-    { "visibility", "smith_vis_hammon", "smith_vis (exact, correlated)", "smith_vis_hammon", "smith_vis", 0, 0, { 0 }, 0 },
-    { "G2", "smith_g2_hammon", "smith_g2 (exact, correlated)", "smith_g2_hammon", "smith_g2", 0, 0, { 0 }, 0 },
-    { "G1", "smith_g1_hammon (Schlick-GGX k = a/2)", "smith_g1 (exact)", "smith_g1_hammon", "smith_g1", 0, 0, { 0 }, 0 },
-    { "G2 correlation", "smith_g2_uncorrelated", "smith_g2 (correlated)", "smith_g2_uncorrelated", "smith_g2", 0, 0, { 0 }, 0 },
-    { "diffuse", "lambert", "diffuse_hammon", "lambert", "diffuse_hammon", 0, 0, { 0 }, 0 },
-    { "whole BRDF", "brdf_hammon (Hammon Vis)", "D Vis_exact F + diffuse_hammon", "brdf_hammon", "", 0, 0, { 0 }, 0 },
+#define AX_NL(lo) { "N.L", lo, 1.0 }
+#define AX_NV(lo) { "N.V", lo, 1.0 }
+#define AX_A { "alpha", 0x1p-10, 1.0 }
+#define VIS3 3, { AX_NL(0x1p-8), AX_NV(0x1p-8), AX_A }   /* the fixed-point cos floor, and issue 10's domain */
+#define G3 3, { AX_NL(0x1p-12), AX_NV(0x1p-12), AX_A }
+#define G1D 2, { AX_NV(0x1p-12), AX_A }
+#define FRES 2, { { "f0", 0.02, 0.1 }, { "V.H", 0x1p-10, 1.0 } } /* dielectrics: eta 1.33 .. 1.92 */
+#define G1GTR 3, { AX_NV(0x1p-12), AX_A, { "gamma", 0.25, 4.0 } }
+
+static tradeoff trades[] = {
+    { "visibility", "smith_vis_hammon", "smith_vis (exact, correlated)", "smith_vis_hammon", "smith_vis",
+      m3_smith_vis_hammon, m3_smith_vis, VIS3, 0, 0, { 0 }, 0 },
+    { "visibility", "smith_vis_joint_approx (= Hammon's)", "smith_vis (exact, correlated)", "smith_vis_joint_approx",
+      "smith_vis", m3_smith_vis_joint_approx, m3_smith_vis, VIS3, 0, 0, { 0 }, 0 },
+    { "visibility", "smith_vis_fit (3 lines, fitted)", "smith_vis (exact, correlated)", "smith_vis_fit", "smith_vis",
+      m3_smith_vis_fit, m3_smith_vis, VIS3, 0, 0, { 0 }, 0 },
+    { "G2", "smith_g2_hammon", "smith_g2 (exact, correlated)", "smith_g2_hammon", "smith_g2",
+      m3_smith_g2_hammon, m3_smith_g2, G3, 0, 0, { 0 }, 0 },
+    { "G1", "smith_g1_hammon (Schlick-GGX k = a/2)", "smith_g1 (exact)", "smith_g1_hammon", "smith_g1",
+      m2_smith_g1_hammon, m2_smith_g1, G1D, 0, 0, { 0 }, 0 },
+    { "G1 Beckmann", "smith_g1_beckmann (Walter)", "exact Beckmann G1 (erf)", "smith_g1_beckmann", "",
+      m2_smith_g1_beckmann, m2_smith_g1_beckmann_exact, G1D, 0, 0, { 0 }, 0 },
+    { "G1 Beckmann", "smith_g1_schlick_beckmann (k = a sqrt(2/pi))", "exact Beckmann G1 (erf)",
+      "smith_g1_schlick_beckmann", "", m2_smith_g1_schlick_beckmann, m2_smith_g1_beckmann_exact, G1D, 0, 0, { 0 }, 0 },
+    { "G2 correlation", "smith_g2_uncorrelated", "smith_g2 (correlated)", "smith_g2_uncorrelated", "smith_g2",
+      m3_smith_g2_uncorrelated, m3_smith_g2, G3, 0, 0, { 0 }, 0 },
+    { "Fresnel", "fresnel_schlick", "fresnel_cook_torrance (exact dielectric)", "fresnel_schlick",
+      "fresnel_cook_torrance", m2_fresnel_schlick, m2_fresnel_cook_torrance, FRES, 0, 0, { 0 }, 0 },
+    { "Fresnel", "fresnel_schlick_sg (spherical Gaussian)", "fresnel_cook_torrance (exact dielectric)",
+      "fresnel_schlick_sg", "fresnel_cook_torrance", m2_fresnel_schlick_sg, m2_fresnel_cook_torrance, FRES, 0, 0,
+      { 0 }, 0 },
+    { "G1 GTR", "smith_g1_gtr (Dimov: closed forms, cubic in gamma)", "GTR G1 by quadrature", "smith_g1_gtr", "",
+      m3_smith_g1_gtr, m3_smith_g1_gtr_exact, G1GTR, 0, 0, { 0 }, 0 },
+    { "diffuse", "lambert", "diffuse_hammon", "lambert", "diffuse_hammon", m_lambert, m_diffuse_hammon, G3, 0, 0, { 0 }, 0 },
+    { "whole BRDF", "brdf_hammon (Hammon Vis)", "D Vis_exact F + diffuse_hammon", "brdf_hammon", "",
+      m_brdf_hammon, m_brdf_exact, G3, 0, 0, { 0 }, 0 },
 };
+#define N_TRADE ((int)(sizeof trades / sizeof trades[0]))
+
+/* point i of n on an axis: even i log-spaced, odd i linear, both lo .. hi */
+static double axis_at(const model_axis *ax, int i, int n)
+{
+    double u = (double)(i / 2) / (double)((n + 1) / 2 - 1);
+    if (i & 1)
+        return ax->lo + (ax->hi - ax->lo) * u;
+    return exp2(log2(ax->lo) + (log2(ax->hi) - log2(ax->lo)) * u);
+}
 
 static void sweep_tradeoffs(void)
 {
-    int t, i, j, k, N = quick ? 24 : 96, NA = quick ? 6 : 21;
+    int t;
     for (t = 0; t < N_TRADE; t++) {
         tradeoff *x = &trades[t];
+        int n = x->n_axes == 3 ? (quick ? 24 : 96) : x->n_axes == 2 ? (quick ? 200 : 1000) : 100000;
+        if (x->f_exact == m3_smith_g1_gtr_exact) /* a quadrature per point (~0.1 ms) */
+            n = quick ? 10 : 24;
+        long total = 1, c;
+        int d;
         double sum = 0;
         x->max_rel = -1;
         x->n = 0;
-        for (k = 0; k < NA; k++) {
-            double a = pow(2.0, -10.0 + 10.0 * k / (NA - 1));
-            for (i = 0; i < N; i++)
-                for (j = 0; j < N; j++) {
-                    /* cosines on a grid dense at grazing angles: 2^-12 .. 1 */
-                    double nl = i == N - 1 ? 1.0 : pow(2.0, -12.0 * (1.0 - (double)i / (N - 1)) * (1.0 - (double)i / (N - 1)));
-                    double nv = j == N - 1 ? 1.0 : pow(2.0, -12.0 * (1.0 - (double)j / (N - 1)) * (1.0 - (double)j / (N - 1)));
-                    double lv = nl * nv; /* azimuth 90 deg apart */
-                    double e = approx_err(t, nl, nv, lv, a);
-                    sum += e;
-                    x->n++;
-                    if (e > x->max_rel) {
-                        x->max_rel = e;
-                        x->arg[0] = nl;
-                        x->arg[1] = nv;
-                        x->arg[2] = a;
-                    }
-                }
+        for (d = 0; d < x->n_axes; d++)
+            total *= n;
+        for (c = 0; c < total; c++) {
+            double v[3];
+            long r = c;
+            double e;
+            for (d = 0; d < x->n_axes; d++) {
+                v[d] = axis_at(&x->axes[d], (int)(r % n), n);
+                r /= n;
+            }
+            e = bench_rel_err(x->f_approx(v), x->f_exact(v));
+            sum += e;
+            x->n++;
+            if (e > x->max_rel) {
+                x->max_rel = e;
+                for (d = 0; d < x->n_axes; d++)
+                    x->arg[d] = v[d];
+            }
         }
         x->mean_rel = sum / (double)x->n;
     }
@@ -711,11 +765,15 @@ static void section_tradeoff(void)
     int t;
     char b[8][64];
     h2("Tradeoff per term: model error of each approximation vs the exact model");
-    para("Double-precision oracles of both formulas on a grid of N.L, N.V in [2^-12, 1] (dense at grazing "
-         "angles) x %s alpha values log-spaced in [2^-10, 1]; L.V = N.L N.V where needed (L and V 90 deg "
-         "apart in azimuth), f0 = 0.04, albedo = 0.8. Cost: the best port's batch, est. cycles per sample.",
-         quick ? "6" : "21");
-    thead(8, "term", "approximation", "exact", "max rel err", "mean rel err", "argmax (N.L, N.V, alpha)",
+    para("Model error, not implementation error: the double-precision oracles of both formulas (the "
+         "approximation's own formula and the exact reference) on a grid over each row's domain (per axis half "
+         "the points log-spaced, half linear; %s), relative error |approx / exact - 1|: max, mean, and the "
+         "argmax in the domain's axes. Domains: visibility N.L, N.V in [2^-8, 1]; the other two-cosine rows "
+         "[2^-12, 1]; G1 rows N.V in [2^-12, 1]; alpha in [2^-10, 1] everywhere; L.V = N.L N.V where needed "
+         "(L and V 90 deg apart in azimuth), f0 = 0.04, albedo = 0.8. The implementation error of each kernel "
+         "(vs its own formula) is in the kernels table. Cost: the best port's batch, est. cycles per sample.",
+         quick ? "24 points per axis for 3 axes, 200 for 2" : "96 points per axis for 3 axes, 1000 for 2");
+    thead(8, "term", "approximation", "exact", "max rel err", "mean rel err", "argmax (domain axes)",
           "cost approx", "cost exact");
     for (t = 0; t < N_TRADE; t++) {
         const tradeoff *x = &trades[t];
@@ -726,7 +784,14 @@ static void section_tradeoff(void)
         cells[2] = x->exact;
         cells[3] = g3(b[0], x->max_rel);
         cells[4] = g3(b[1], x->mean_rel);
-        cells[5] = fmt(b[2], sizeof b[2], "%.3g, %.3g, %.3g", x->arg[0], x->arg[1], x->arg[2]);
+        {
+            char *q = b[2];
+            int d;
+            *q = 0;
+            for (d = 0; d < x->n_axes; d++)
+                q += snprintf(q, 20, "%s%s %.3g", d ? ", " : "", x->axes[d].name, x->arg[d]);
+            cells[5] = b[2];
+        }
         cells[6] = ca ? fmt(b[3], sizeof b[3], "%.2f (%s)", est(ca->r.thr.median), ca->port) : "-";
         if (!strcmp(x->term, "whole BRDF")) {
             const row *p = NULL;
@@ -764,6 +829,7 @@ static double model_of(const char *kn)
 static const char *const pareto_groups[][10] = {
     { "D (normal distribution)", "ggx_d", "beckmann_d", "blinn_phong_d", "gtr_d", "ggx_aniso_d", NULL },
     { "G1 (masking)", "smith_g1", "smith_g1_hammon", "smith_g1_gtr", NULL },
+    { "G1 for Beckmann's D", "smith_g1_beckmann", "smith_g1_schlick_beckmann", NULL },
     { "G2 (masking-shadowing)", "smith_g2", "smith_g2_hammon", "smith_g2_uncorrelated", "g_implicit", "g_neumann",
       "g_cook_torrance", "g_kelemen", NULL },
     { "visibility (G2 / (4 N.L N.V))", "smith_vis", "smith_vis_hammon", "smith_vis_joint_approx", "smith_vis_fit", NULL },

@@ -148,6 +148,117 @@ int32_t facet_smith_g2_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
 /* Hammon's Vis ~ 0.5 / m; domains as smith_g2.  UQ16.16, max 13117.
  * Error: FACET_FX_ERR_SMITH_VIS_HAMMON LSB.  Cost: 1 division, ~6 mul. */
 uint32_t facet_smith_vis_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
+
+/* ---- shadowing and visibility: the rest of the menu (facet.h) ------------
+ * Both fixed-point tiers, the formulas of facet.h, the same domains as the
+ * f32 kernels with the fixed-point cos floor (N.L, N.V of the 3- and
+ * 4-input kernels in [2^-8, 1]; the 2-input ones and N.H, V.H in [0, 1]).
+ * Outputs: the G terms Q15 (max 1: every one is capped at 1 or a product
+ * or minimum of [0, 1] values); the Vis terms UQ16.16 (smith_vis_joint_approx
+ * max 13117 as smith_vis_hammon; smith_vis_fit max 15521, both at
+ * N.L = N.V = 2^-8, alpha = 2^-10 [raw < 2^30]).  Scaling (src/fx_kernels.c
+ * and src/fx_fast_body.h give each step's Q format and bound):
+ *   g_implicit  N.L N.V Q30 exact [<= 2^30], rounded once to Q15;
+ *   g_neumann   min(N.L, N.V) exact;
+ *   g_cook_torrance  g = 2 N.H min(N.L, N.V) Q30 exact [<= 2^31]; 1 where
+ *               g >= V.H 2^15 (V.H = 0 included), else g / V.H;
+ *   g_kelemen   N.L N.V and V.H^2 Q30 exact [<= 2^30]; 1 where the first is
+ *               not below the second, else their quotient;
+ *   smith_g1_beckmann  the branch c < 1.6 as 25 N^2 2^24 < A^2 (1 - n^2)
+ *               Q60 exact (fast: from the high words; misjudged only within
+ *               2^-20 of c = 1.6, where both pieces are 1); the rational in
+ *               fxf (fast: in c Q29, c^2 Q29, the sums Q59 in 64 bits
+ *               [< 2^63]); sqrt(1 - n^2) by the exact root (fast: the table);
+ *   smith_g1_schlick_beckmann  k = a round(sqrt(2/pi) 2^32); the
+ *               denominator N (1 - k) + k exact in 64 bits [< 2^63];
+ *   smith_vis_joint_approx  Hammon's exact m45 (the same code as
+ *               smith_vis_hammon in each tier: the same bits);
+ *   smith_vis_fit  the float constants exact in Q30; sigma exact in Q60
+ *               (fast: Q30 stages, every value < 2^32, R >= 2^21); the
+ *               denominator in fxf (fast: exact in 64 bits [< 2^48]).
+ * Errors: FACET_FX_ERR_* in LSB (precise; measured: correctly rounded, 0
+ * LSB, but for the two Vis terms, 1 LSB: fxf's 32-bit rounding of the
+ * denominator), FACET_FX_FAST_ERR_* in the fast tier's measure (its
+ * maximum over tests/test_fx_fast.c's sweep, 0.8 M to 2 M tuples per
+ * kernel, and its quick variant under FACET_TEST_QUICK; e, LSB < 1K, rel >= 1K, argmax):
+ *   g_implicit                 0.500  0.500  -         (512, 32)
+ *   g_neumann                  0      0      -         (exact)
+ *   g_cook_torrance            0.513  0.512  -         (quick sweep; full: 0.5115 at 8143, 137, 32753, 9181)
+ *   g_kelemen                  0.513  0.512  -         (32748, 128, 11613)
+ *   smith_g1_beckmann          0.523  0.523  -         (23, 2665)
+ *   smith_g1_schlick_beckmann  0.508  0.507  -         (150, 6527)
+ *   smith_vis_joint_approx     0.037  0.000  2^-14.79  (as smith_vis_hammon: the same bits)
+ *   smith_vis_fit              0.048  0.000  2^-14.39  (32751, 32733, 27251) */
+#define FACET_FX_ERR_G_IMPLICIT                1
+#define FACET_FX_ERR_G_NEUMANN                 1
+#define FACET_FX_ERR_G_COOK_TORRANCE           1
+#define FACET_FX_ERR_G_KELEMEN                 1
+#define FACET_FX_ERR_SMITH_G1_BECKMANN         1
+#define FACET_FX_ERR_SMITH_G1_SCHLICK_BECKMANN 1
+#define FACET_FX_ERR_SMITH_VIS_JOINT_APPROX    1
+#define FACET_FX_ERR_SMITH_VIS_FIT             1
+#define FACET_FX_FAST_ERR_G_IMPLICIT                0.500
+#define FACET_FX_FAST_ERR_G_NEUMANN                 0.000
+#define FACET_FX_FAST_ERR_G_COOK_TORRANCE           0.513
+#define FACET_FX_FAST_ERR_G_KELEMEN                 0.513
+#define FACET_FX_FAST_ERR_SMITH_G1_BECKMANN         0.523
+#define FACET_FX_FAST_ERR_SMITH_G1_SCHLICK_BECKMANN 0.508
+#define FACET_FX_FAST_ERR_SMITH_VIS_JOINT_APPROX    0.037
+#define FACET_FX_FAST_ERR_SMITH_VIS_FIT             0.048
+
+/* N.L N.V; Q15.  Cost: 1 mul. */
+int32_t facet_g_implicit_fx(int32_t nol, int32_t nov);
+/* min(N.L, N.V) (= N.L N.V / max); Q15, exact. */
+int32_t facet_g_neumann_fx(int32_t nol, int32_t nov);
+/* min(1, 2 N.H min(N.L, N.V) / V.H); Q15.  Cost: 1 division, 2 mul. */
+int32_t facet_g_cook_torrance_fx(int32_t nol, int32_t nov, int32_t noh, int32_t voh);
+/* min(1, N.L N.V / V.H^2); Q15.  Cost: 1 division, 2 mul. */
+int32_t facet_g_kelemen_fx(int32_t nol, int32_t nov, int32_t voh);
+/* Walter's Beckmann G1 (facet.h); Q15, G1(0) = 0, G1(1) = 1.
+ * Cost: 1 sqrt, 1 division, ~8 fxf. */
+int32_t facet_smith_g1_beckmann_fx(int32_t nov, int32_t alpha);
+/* N.V / (N.V (1 - k) + k), k = alpha sqrt(2/pi); Q15.  Cost: 1 division, 3 mul64. */
+int32_t facet_smith_g1_schlick_beckmann_fx(int32_t nov, int32_t alpha);
+/* The joint approximation = Hammon's Vis; UQ16.16.  Cost: as smith_vis_hammon. */
+uint32_t facet_smith_vis_joint_approx_fx(int32_t nol, int32_t nov, int32_t alpha);
+/* The fitted visibility (facet.h); UQ16.16, max 15521.  Cost: 1 division, ~14 fxf. */
+uint32_t facet_smith_vis_fit_fx(int32_t nol, int32_t nov, int32_t alpha);
+int32_t facet_g_implicit_fx_fast(int32_t nol, int32_t nov);
+int32_t facet_g_neumann_fx_fast(int32_t nol, int32_t nov);
+int32_t facet_g_cook_torrance_fx_fast(int32_t nol, int32_t nov, int32_t noh, int32_t voh);
+int32_t facet_g_kelemen_fx_fast(int32_t nol, int32_t nov, int32_t voh);
+int32_t facet_smith_g1_beckmann_fx_fast(int32_t nov, int32_t alpha);
+int32_t facet_smith_g1_schlick_beckmann_fx_fast(int32_t nov, int32_t alpha);
+uint32_t facet_smith_vis_joint_approx_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+uint32_t facet_smith_vis_fit_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+/* batches (both tiers), as the batches below */
+void facet_g_implicit_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov, size_t n);
+void facet_g_neumann_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov, size_t n);
+void facet_g_cook_torrance_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                    const int32_t *noh, const int32_t *voh, size_t n);
+void facet_g_kelemen_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                              const int32_t *voh, size_t n);
+void facet_smith_g1_beckmann_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
+void facet_smith_g1_schlick_beckmann_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
+                                              size_t n);
+void facet_smith_vis_joint_approx_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                           const int32_t *alpha, size_t n);
+void facet_smith_vis_fit_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                  const int32_t *alpha, size_t n);
+void facet_g_implicit_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov, size_t n);
+void facet_g_neumann_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov, size_t n);
+void facet_g_cook_torrance_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                         const int32_t *noh, const int32_t *voh, size_t n);
+void facet_g_kelemen_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                   const int32_t *voh, size_t n);
+void facet_smith_g1_beckmann_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
+                                           size_t n);
+void facet_smith_g1_schlick_beckmann_fx_fast_batch(int32_t *out, const int32_t *nov,
+                                                   const int32_t *alpha, size_t n);
+void facet_smith_vis_joint_approx_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                                const int32_t *alpha, size_t n);
+void facet_smith_vis_fit_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                       const int32_t *alpha, size_t n);
 /* Hammon's GGX diffuse (facet.h's formula, 1 + L.V raised to
  * (N.L + N.V)^2 / 2); nol, nov [2^-8, 1], lov [-1, 1], alpha [2^-10, 1],
  * albedo [0, 1].  UQ8.24, max 20.65 (nl = nv = 2^-8, L.V = 1, alpha =

@@ -82,6 +82,19 @@ double facet_oracle_smith_g1_gtr_order(double nov, double alpha, int order);
 double facet_oracle_smith_g1_gtr_exact(double nov, double alpha, double gamma);
 double facet_oracle_smith_g2_hammon(double nol, double nov, double alpha);
 double facet_oracle_smith_vis_hammon(double nol, double nov, double alpha);
+/* the rest of the shadowing/visibility menu (facet.h), each from its own
+ * formula; and the exact Beckmann Smith G1, 1 / (1 + Lambda) with
+ * Lambda = (erf(c) - 1) / 2 + exp(-c^2) / (2 c sqrt(pi)), c = N.V / (alpha
+ * sqrt(1 - N.V^2)): the reference Walter's and Schlick's forms approximate */
+double facet_oracle_g_implicit(double nol, double nov);
+double facet_oracle_g_neumann(double nol, double nov);
+double facet_oracle_g_cook_torrance(double nol, double nov, double noh, double voh);
+double facet_oracle_g_kelemen(double nol, double nov, double voh);
+double facet_oracle_smith_g1_beckmann(double nov, double alpha);
+double facet_oracle_smith_g1_beckmann_exact(double nov, double alpha);
+double facet_oracle_smith_g1_schlick_beckmann(double nov, double alpha);
+double facet_oracle_smith_vis_joint_approx(double nol, double nov, double alpha);
+double facet_oracle_smith_vis_fit(double nol, double nov, double alpha);
 double facet_oracle_diffuse_hammon(double nol, double nov, double lov, double alpha,
                                    double albedo);
 double facet_oracle_diffuse_burley(double nol, double nov, double loh, double alpha,

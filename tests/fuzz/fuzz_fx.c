@@ -30,13 +30,22 @@
     X(smith_g1_hammon, int32_t, 2)           \
     X(smith_g2_hammon, int32_t, 3)           \
     X(smith_vis_hammon, uint32_t, 3)         \
+    X(g_implicit, int32_t, 2)                \
+    X(g_neumann, int32_t, 2)                 \
+    X(g_cook_torrance, int32_t, 4)           \
+    X(g_kelemen, int32_t, 3)                 \
+    X(smith_g1_beckmann, int32_t, 2)         \
+    X(smith_g1_schlick_beckmann, int32_t, 2) \
+    X(smith_vis_joint_approx, uint32_t, 3)   \
+    X(smith_vis_fit, uint32_t, 3)            \
     X(diffuse_hammon, uint32_t, 5)           \
     X(brdf_hammon, uint64_t, 6)
 
 #define IN1 in[0]
 #define IN2 IN1, in[1]
 #define IN3 IN2, in[2]
-#define IN5 IN3, in[3], in[4]
+#define IN4 IN3, in[3]
+#define IN5 IN4, in[4]
 #define IN6 IN5, in[5]
 #define X(name, T, n)                                                                   \
     static void batch_##name(void *out, const int32_t *const *in, size_t cnt)          \

@@ -655,6 +655,125 @@ FACET_INLINE V_ FACET_K(smith_g1_gtr)(V_ nov, V_ alpha, V_ gamma)
     return NAN0_(CLAMP_(S, C_(0.0f), C_(1.0f)), nov, alpha, gamma);
 }
 
+/* ---- shadowing and visibility: the rest of the menu ------------------------ */
+
+/* Implicit G = N.L N.V: one rounding. */
+FACET_INLINE V_ FACET_K(g_implicit)(V_ nol, V_ nov)
+{
+    return NAN0_(MUL_(X_UNIT_(nol), X_UNIT_(nov)), nol, nov);
+}
+
+/* Neumann G = N.L N.V / max(N.L, N.V), which is min(N.L, N.V) exactly
+ * (and 0, not 0/0, at N.L = N.V = 0). */
+FACET_INLINE V_ FACET_K(g_neumann)(V_ nol, V_ nov)
+{
+    return NAN0_(MIN_(X_UNIT_(nol), X_UNIT_(nov)), nol, nov);
+}
+
+/* Cook-Torrance G = min(1, 2 N.H N.V / V.H, 2 N.H N.L / V.H)
+ *                 = min(1, g / V.H), g = 2 N.H min(N.L, N.V):
+ * where g >= V.H (also V.H = 0) the result is 1 and no reciprocal is used;
+ * below, V.H > g >= 0 and the quotient is < 1.  N.H and V.H enter only as
+ * their ratio, so below V.H = 2^-40 both are scaled by 2^60 (exactly):
+ * the reciprocal never sees a denormal (scaled, V.H >= 2^-89 or 0; the
+ * floor 2^-100 only keeps 1/0 out of the unselected side), and g keeps its
+ * precision. */
+FACET_INLINE V_ FACET_K(g_cook_torrance)(V_ nol, V_ nov, V_ noh, V_ voh)
+{
+    V_ m = MIN_(X_COS_(nol), X_COS_(nov));
+    V_ nh = X_UNIT_(noh), vh = X_UNIT_(voh);
+    V_ sc = FACET_OP(sel_lt)(vh, C_(9.09494702e-13f), C_(1.15292150e18f), C_(1.0f));
+    V_ g, v;
+    nh = MUL_(nh, sc);
+    v = MUL_(vh, sc);
+    g = MUL_(ADD_(nh, nh), m);
+    return NAN0_(FACET_OP(sel_lt)(g, v, MUL_(g, RCP_(MAX_(v, C_(7.88860905e-31f)))), C_(1.0f)),
+                 nol, nov, noh, voh);
+}
+
+/* Kelemen G = N.L N.V / (V.H)^2, taken as min(1, ...): for real vectors
+ * N.L N.V <= (V.H)^2 (= (1 + L.V)/2 >= (1 + cos(theta_l + theta_v))/2 >= N.L N.V),
+ * so the cap only acts on triples no pair of vectors forms (e.g. V.H = 0).
+ * The quotient is taken only where (V.H)^2 > N.L N.V >= 2^-40, so the
+ * floor 2^-60 under the reciprocal's argument never changes a result. */
+FACET_INLINE V_ FACET_K(g_kelemen)(V_ nol, V_ nov, V_ voh)
+{
+    V_ p = MUL_(X_COS_(nol), X_COS_(nov));
+    V_ vh = X_UNIT_(voh);
+    V_ q = MUL_(vh, vh);
+    return NAN0_(FACET_OP(sel_lt)(p, q, MUL_(p, RCP_(MAX_(q, C_(8.67361738e-19f)))), C_(1.0f)), nol, nov, voh);
+}
+
+/* Walter's rational fit of Beckmann's Smith G1, c = N.V / (alpha sqrt(1 - N.V^2)):
+ *   G1 = (3.535 c + 2.181 c^2) / (1 + 2.276 c + 2.577 c^2) for c < 1.6, else 1,
+ * capped at 1 (the rational exceeds 1 by up to 6.1e-5 (at c = 1.589) for c in (1.548,
+ * 1.631); with the cap the two pieces meet continuously).  Multiplied
+ * through by (alpha s)^2, s = sqrt((1 - n)(1 + n)), p = alpha s, q = n:
+ *   G1 = q (3.535 p + 2.181 q) / (p (p + 2.276 q) + 2.577 q^2),  q < 1.6 p,
+ * no infinity at n = 1 (p = 0 selects 1) nor at n = 0 (q = 0 gives 0), and
+ * every term >= 0.  The radicand is floored at 2^-30 (only n = 1 is below). */
+FACET_INLINE V_ FACET_K(smith_g1_beckmann)(V_ nov, V_ alpha)
+{
+    V_ q = X_UNIT_(nov);
+    V_ a = X_ALPHA_(alpha);
+    V_ w = MAX_(MUL_(SUB_(C_(1.0f), q), ADD_(C_(1.0f), q)), C_(9.31322575e-10f));
+    V_ p = MUL_(a, X_SQRT_(w));
+    V_ num = MUL_(q, FMA_(C_(3.535f), p, MUL_(C_(2.181f), q)));
+    V_ den = FMA_(p, FMA_(C_(2.276f), q, p), MUL_(C_(2.577f), MUL_(q, q)));
+    V_ g = MIN_(MUL_(num, RCP_(den)), C_(1.0f));
+    return NAN0_(FACET_OP(sel_lt)(q, MUL_(C_(1.6f), p), g, C_(1.0f)), nov, alpha);
+}
+
+/* Schlick's G1 for Beckmann: N.V / (N.V (1 - k) + k), k = alpha sqrt(2/pi)
+ * (<= 0.798, so 1 - k > 0 and every term is >= 0). */
+FACET_INLINE V_ FACET_K(smith_g1_schlick_beckmann)(V_ nov, V_ alpha)
+{
+    V_ n = X_UNIT_(nov);
+    V_ k = MUL_(X_ALPHA_(alpha), C_(0.797884561f));
+    V_ den = FMA_(n, SUB_(C_(1.0f), k), k);
+    return NAN0_(MIN_(MUL_(n, RCP_(den)), C_(1.0f)), nov, alpha);
+}
+
+/* The joint approximation engines ship (Karis's UE4 form):
+ *   0.5 / (N.L (N.V (1 - a) + a) + N.V (N.L (1 - a) + a))
+ * = 0.5 / ((1 - a) 2 N.L N.V + a (N.L + N.V)), Hammon's visibility: the same
+ * function, here in that form (terms >= 0; the two products are added, not
+ * fused, so swapping N.L and N.V gives the same bits). */
+FACET_INLINE V_ FACET_K(smith_vis_joint_approx)(V_ nol, V_ nov, V_ alpha)
+{
+    V_ nl = X_COS_(nol), nv = X_COS_(nov);
+    V_ a = X_ALPHA_(alpha);
+    V_ b = SUB_(C_(1.0f), a);
+    V_ den = ADD_(MUL_(nl, FMA_(nv, b, a)), MUL_(nv, FMA_(nl, b, a)));
+    return NAN0_(MUL_(C_(0.5f), RCP_(den)), nol, nov, alpha);
+}
+
+/* The fitted visibility (bench/fit/fit_vis.c): exact correlated Smith is
+ * 0.5 / (N.V r(N.L) + N.L r(N.V)), r(x) = sqrt(a^2 + (1 - a^2) x^2) = |(a, s x)|,
+ * s = sqrt(1 - a^2); r is replaced by the largest of three lines in a and
+ * t = x sigma(a), sigma(a) = 1 + a (c1 + c2 a) standing in for s:
+ *   R(x) = max(K1 a, K2 a + K3 t, K4 a + K5 t)  (= 2 r~: the 0.5 folded in)
+ *   Vis ~ 1 / (N.V R(N.L) + N.L R(N.V)).
+ * Every term >= 0; the products are added unfused (symmetric to the bit). */
+#include "facet/detail/vis_fit.h"
+FACET_INLINE V_ FACET_K(x_vis_fit_r)(V_ x, V_ ka1, V_ ka2, V_ ka4, V_ s3, V_ s5)
+{
+    return MAX_(ka1, MAX_(FMA_(s3, x, ka2), FMA_(s5, x, ka4)));
+}
+
+FACET_INLINE V_ FACET_K(smith_vis_fit)(V_ nol, V_ nov, V_ alpha)
+{
+    V_ nl = X_COS_(nol), nv = X_COS_(nov);
+    V_ a = X_ALPHA_(alpha);
+    V_ sg = FMA_(a, FMA_(C_(FACET_VIS_FIT_C2), a, C_(FACET_VIS_FIT_C1)), C_(1.0f));
+    V_ ka1 = MUL_(C_(FACET_VIS_FIT_K1), a), ka2 = MUL_(C_(FACET_VIS_FIT_K2), a);
+    V_ ka4 = MUL_(C_(FACET_VIS_FIT_K4), a);
+    V_ s3 = MUL_(C_(FACET_VIS_FIT_K3), sg), s5 = MUL_(C_(FACET_VIS_FIT_K5), sg);
+    V_ rl = FACET_K(x_vis_fit_r)(nl, ka1, ka2, ka4, s3, s5);
+    V_ rv = FACET_K(x_vis_fit_r)(nv, ka1, ka2, ka4, s3, s5);
+    return NAN0_(RCP_(ADD_(MUL_(nv, rl), MUL_(nl, rv))), nol, nov, alpha);
+}
+
 /* ---- Hammon's GGX diffuse --------------------------------------------------- */
 
 /* pi * diffuse, from the pieces the caller shares (h = 0.5 / N.H):
