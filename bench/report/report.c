@@ -434,6 +434,28 @@ static double m_diffuse_hammon(const double *x) { return facet_oracle_diffuse_ha
 static double m_brdf_hammon(const double *x) { return facet_oracle_brdf_hammon(x[0], x[1], x[0] * x[1], x[2], 0.04, 0.8); }
 static double m_brdf_exact(const double *x) { return bench_oracle_brdf_exact(x[0], x[1], x[0] * x[1], x[2], 0.04, 0.8); }
 
+/* the classic G terms (no alpha) and Schlick with f90 = 1, on the same
+ * geometry: L.V = N.L N.V, N.H and V.H from the identities (geom.c) */
+static double m_g_classic(int which, const double *x)
+{
+    geom g = { 0 };
+    double nh, vh;
+    g.nl = x[0], g.nv = x[1], g.lv = x[0] * x[1], g.alpha = x[2];
+    geom_input(&g, "noh", &nh);
+    geom_input(&g, "voh", &vh);
+    switch (which) {
+    case 0: return facet_oracle_g_implicit(g.nl, g.nv);
+    case 1: return facet_oracle_g_neumann(g.nl, g.nv);
+    case 2: return facet_oracle_g_cook_torrance(g.nl, g.nv, nh, vh);
+    default: return facet_oracle_g_kelemen(g.nl, g.nv, vh);
+    }
+}
+static double m_g_implicit(const double *x) { return m_g_classic(0, x); }
+static double m_g_neumann(const double *x) { return m_g_classic(1, x); }
+static double m_g_cook_torrance(const double *x) { return m_g_classic(2, x); }
+static double m_g_kelemen(const double *x) { return m_g_classic(3, x); }
+static double m_fresnel_schlick_f90(const double *x) { return facet_oracle_fresnel_schlick_f90(x[0], 1.0, x[1]); }
+
 #define AX_NL(lo) { "N.L", lo, 1.0 }
 #define AX_NV(lo) { "N.V", lo, 1.0 }
 #define AX_A { "alpha", 0x1p-10, 1.0 }
@@ -458,6 +480,16 @@ static tradeoff trades[] = {
       m2_smith_g1_beckmann, m2_smith_g1_beckmann_exact, G1D, 0, 0, { 0 }, 0 },
     { "G1 Beckmann", "smith_g1_schlick_beckmann (k = a sqrt(2/pi))", "exact Beckmann G1 (erf)",
       "smith_g1_schlick_beckmann", "", m2_smith_g1_schlick_beckmann, m2_smith_g1_beckmann_exact, G1D, 0, 0, { 0 }, 0 },
+    { "G2", "g_implicit (N.L N.V)", "smith_g2 (exact, correlated)", "g_implicit", "smith_g2", m_g_implicit,
+      m3_smith_g2, G3, 0, 0, { 0 }, 0 },
+    { "G2", "g_neumann (min(N.L, N.V))", "smith_g2 (exact, correlated)", "g_neumann", "smith_g2", m_g_neumann,
+      m3_smith_g2, G3, 0, 0, { 0 }, 0 },
+    { "G2", "g_cook_torrance (V-groove)", "smith_g2 (exact, correlated)", "g_cook_torrance", "smith_g2",
+      m_g_cook_torrance, m3_smith_g2, G3, 0, 0, { 0 }, 0 },
+    { "G2", "g_kelemen", "smith_g2 (exact, correlated)", "g_kelemen", "smith_g2", m_g_kelemen, m3_smith_g2, G3, 0, 0,
+      { 0 }, 0 },
+    { "Fresnel", "fresnel_schlick_f90 (f90 = 1)", "fresnel_cook_torrance (exact dielectric)", "fresnel_schlick_f90",
+      "fresnel_cook_torrance", m_fresnel_schlick_f90, m2_fresnel_cook_torrance, FRES, 0, 0, { 0 }, 0 },
     { "G2 correlation", "smith_g2_uncorrelated", "smith_g2 (correlated)", "smith_g2_uncorrelated", "smith_g2",
       m3_smith_g2_uncorrelated, m3_smith_g2, G3, 0, 0, { 0 }, 0 },
     { "Fresnel", "fresnel_schlick", "fresnel_cook_torrance (exact dielectric)", "fresnel_schlick",
@@ -827,6 +859,8 @@ static double model_of(const char *kn)
 /* The terms a user chooses among, each with the kernels that compute it
  * (names not in this build are skipped). */
 static const char *const pareto_groups[][10] = {
+    /* no exact reference: each variant is its own model (a look, not an
+     * approximation): D and diffuse */
     { "D (normal distribution)", "ggx_d", "beckmann_d", "blinn_phong_d", "gtr_d", "ggx_aniso_d", NULL },
     { "G1 (masking)", "smith_g1", "smith_g1_hammon", "smith_g1_gtr", NULL },
     { "G1 for Beckmann's D", "smith_g1_beckmann", "smith_g1_schlick_beckmann", NULL },
@@ -839,6 +873,10 @@ static const char *const pareto_groups[][10] = {
     { "whole BRDF", "brdf_hammon", NULL },
 };
 #define N_PARETO_GROUPS ((int)(sizeof pareto_groups / sizeof pareto_groups[0]))
+static int group_has_reference(int g)
+{
+    return strncmp(pareto_groups[g][0], "D ", 2) && strcmp(pareto_groups[g][0], "diffuse");
+}
 
 static void section_pareto(void)
 {
@@ -854,7 +892,7 @@ static void section_pareto(void)
         int n = 0, s2, i, f;
         for (s2 = 1; pareto_groups[g][s2] && n < 128; s2++) {
             const char *kn = pareto_groups[g][s2];
-            double model = model_of(kn);
+            double model = group_has_reference(g) ? model_of(kn) : -1;
             for (f = 0; f < 4; f++)
                 for (i = 0; i < n_rows && n < 128; i++) {
                     const row *x = &rows[i];
@@ -956,7 +994,9 @@ static void section_choose(void)
          "this machine's ports in est. core cycles per sample (batch, %s run); Cortex-M in cycles per call, "
          "MODELLED from executed-instruction traces (M0: TRM timings, M4: llvm-mca; section Cortex-M). NEON, "
          "Helium and RISC-V are not measured on this machine. Details: the Pareto figures below, then the long "
-         "tables.", quick ? "a quick" : "a full");
+         "tables. D and diffuse have no exact reference (each variant is a model of its own, a look rather "
+         "than an approximation): there each variant's cheapest format is listed with its cost.",
+         quick ? "a quick" : "a full");
     for (g = 0; g < N_PARETO_GROUPS; g++) {
         int any = 0;
         for (t = 0; t < (int)(sizeof tg / sizeof tg[0]); t++) {
@@ -1002,7 +1042,35 @@ static void section_choose(void)
                 thead(3, "target", "candidates", "within this cost, the most accurate choice");
                 any = 1;
             }
-            frontier_cell(cell, sizeof cell, c, n, tg[t].unit);
+            {
+                int ref = group_has_reference(g), m = 0, i, j;
+                choice other[64];
+                size_t len;
+                /* the frontier over the candidates compared with the term's
+                 * reference; the others (a different model, or a term
+                 * without a reference) listed by their cheapest format */
+                for (i = 0; i < n; i++)
+                    if (ref && c[i].model >= 0)
+                        c[m++] = c[i];
+                    else
+                        other[i - m] = c[i];
+                frontier_cell(cell, sizeof cell, c, m, tg[t].unit);
+                if (!m)
+                    cell[0] = 0;
+                len = strlen(cell);
+                for (i = 0; i < n - m && len + 200 < sizeof cell; i++) {
+                    int best = 1;
+                    for (j = 0; j < n - m; j++)
+                        if (!strcmp(other[j].kernel, other[i].kernel) &&
+                            (other[j].cost < other[i].cost || (other[j].cost == other[i].cost && j < i)))
+                            best = 0;
+                    if (!best)
+                        continue;
+                    len += (size_t)snprintf(cell + len, sizeof cell - len, "%s%s <b>%s %s</b>: %.3g %s (impl. error %.3g)",
+                                            len ? "<br>" : "", ref ? "a different model:" : "", other[i].kernel,
+                                            other[i].format, other[i].cost, tg[t].unit, other[i].impl);
+                }
+            }
             {
                 char nb[16];
                 cells[0] = tg[t].name;
