@@ -183,6 +183,27 @@ static void compare(img_err *e, const scene *s, int (*got)[3], int (*want)[3], p
     free(de);
 }
 
+void img_compare_rgb8(img_err *e, const unsigned char *got, const unsigned char *want, const int *idx, long n)
+{
+    int (*g)[3] = malloc((size_t)(n ? n : 1) * sizeof *g), (*w)[3] = malloc((size_t)(n ? n : 1) * sizeof *w);
+    scene s;
+    long i;
+    int c;
+    for (i = 0; i < n; i++)
+        for (c = 0; c < 3; c++) {
+            g[i][c] = got[(size_t)idx[i] * 3 + (size_t)c];
+            w[i][c] = want[(size_t)idx[i] * 3 + (size_t)c];
+        }
+    memset(&s, 0, sizeof s);
+    s.n = n;
+    if (n)
+        compare(e, &s, g, w, NULL, 0);
+    else
+        memset(e, 0, sizeof *e);
+    free(g);
+    free(w);
+}
+
 static int32_t q15_in(float x, int32_t lo, int32_t hi)
 {
     double r = floor((double)x * 32768.0 + 0.5); /* ties up, the fx.h rule */

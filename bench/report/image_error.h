@@ -25,4 +25,8 @@ typedef struct img_err {
  * candidate (x 32, so 8 codes are white), both labelled (pic_axes). */
 int img_error_run(img_err *out, int max, pic *ref, pic *diff);
 
+/* The same measures for two 8-bit RGB images over the n pixels idx[] (the
+ * rasterizer's shaded pixels): fills e's code and delta E fields. */
+void img_compare_rgb8(img_err *e, const unsigned char *got, const unsigned char *want, const int *idx, long n);
+
 #endif

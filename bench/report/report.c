@@ -1325,7 +1325,7 @@ static void section_raster(void)
     rs_gbuf *g;
     unsigned char *ref, *img;
     size_t np;
-    char b[8][64];
+    char b[10][64];
     pic pp = { 0 };
     say("rasterizer: %dx%d ...", W, H);
     g = rs_render(W, H);
@@ -1339,26 +1339,30 @@ static void section_raster(void)
          "normals and positions), %d shaded pixels, %d lights (directional + point), RGB: %d BRDF "
          "evaluations per pixel. Cost of the shading pass only (dots from the interpolated normal, view "
          "and light vectors, BRDF, accumulation), measured like the kernels (R vs 2R frames, >= 11 epochs). "
-         "Difference: 8-bit sRGB against the same frame shaded by the double oracle, over shaded pixels.",
+         "Difference: 8-bit sRGB against the same frame shaded by the double oracle, over shaded pixels "
+         "(max and mean per channel; p99 of each pixel's largest channel difference; CIE76 delta E).",
          W, H, g->triangles, g->n, g->n_lights, 3 * g->n_lights);
-    thead(7, "path", "ticks/pixel", "est. cyc/pixel", "est. cyc/BRDF eval", "spread", "max diff", "mean diff");
+    thead(10, "path", "ticks/pixel", "est. cyc/pixel", "est. cyc/BRDF eval", "spread", "max diff", "mean diff",
+          "p99 diff", "mean dE76", "max dE76");
     for (p = 0; p < 9; p++) {
         shade_ctx c;
         cyc_stat s;
         long reps;
         int maxd;
         double meand, per_eval;
-        const char *cells[7];
+        const char *cells[10];
+        img_err ie;
         c.g = g;
         c.path = p;
         if (!shade(g, p)) {
             cells[0] = names[p];
-            cells[1] = cells[2] = cells[3] = cells[4] = cells[5] = cells[6] = "n/a";
+            cells[1] = cells[2] = cells[3] = cells[4] = cells[5] = cells[6] = cells[7] = cells[8] = cells[9] = "n/a";
             trow(cells);
             continue;
         }
         rs_to_srgb(g, img);
         rs_diff(g, ref, img, &maxd, &meand);
+        img_compare_rgb8(&ie, img, ref, g->idx, g->n);
         reps = 1;
         s = cyc_measure(shade_work, &c, reps, (double)g->n, quick ? 11 : 11);
         per_eval = est(s.median) / (3.0 * g->n_lights);
@@ -1373,6 +1377,9 @@ static void section_raster(void)
         cells[4] = fmt(b[3], sizeof b[3], "%.1f%%%s", 100 * s.spread, s.noisy ? " !" : "");
         cells[5] = fmt(b[4], sizeof b[4], "%d", maxd);
         cells[6] = fmt(b[5], sizeof b[5], "%.4f", meand);
+        cells[7] = fmt(b[6], sizeof b[6], "%.0f", ie.p99_code);
+        cells[8] = fmt(b[7], sizeof b[7], "%.4f", ie.mean_de);
+        cells[9] = fmt(b[8], sizeof b[8], "%.2f", ie.max_de);
         trow(cells);
         {
             char path[1024];
