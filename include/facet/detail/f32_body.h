@@ -618,8 +618,10 @@ FACET_INLINE V_ FACET_K(smith_g1_gtr)(V_ nov, V_ alpha, V_ gamma)
     /* gamma = 2: GGX, 2n / (n + W) */
     y2 = MUL_(n2, RCP_EXP_(nW));
     /* gamma = 3: 4 (1 + alpha^2) n W / (alpha^2 (3 alpha^2 + 1) s2 + 2 (1 + alpha^2) n (n + W)) */
-    y3 = MUL_(MUL_(C_(2.0f), b), MUL_(n2, W));
-    y3 = MUL_(y3, RCP_EXP_(FMA_(MUL_(a2, FMA_(C_(3.0f), a2, C_(1.0f))), s2, MUL_(b, MUL_(n2, nW)))));
+    /* n2 multiplies last in y3 and y4: n W or n W^3 underflows for a
+     * denormal N.V where the quotient does not */
+    y3 = MUL_(MUL_(C_(2.0f), b), W);
+    y3 = MUL_(n2, MUL_(y3, RCP_EXP_(FMA_(MUL_(a2, FMA_(C_(3.0f), a2, C_(1.0f))), s2, MUL_(b, MUL_(n2, nW))))));
     /* gamma = 4: 2 n W^3 / (n (W^3 + n^3) + k4 (alpha^2 P5 s2^2 + 4 n^2 s2 P2)),
      * k4 = 3 alpha^2 / K, K = 8 (alpha^4 + alpha^2 + 1),
      * P5 = 5 alpha^4 + 2 alpha^2 + 1, P2 = 2 alpha^4 + alpha^2 + 1 */
@@ -628,7 +630,7 @@ FACET_INLINE V_ FACET_K(smith_g1_gtr)(V_ nov, V_ alpha, V_ gamma)
     num4 = FMA_(MUL_(a2, FMA_(a2, FMA_(C_(5.0f), a2, C_(2.0f)), C_(1.0f))), s2,
                 MUL_(MUL_(C_(4.0f), MUL_(n, n)), FMA_(a2, FMA_(C_(2.0f), a2, C_(1.0f)), C_(1.0f))));
     den4 = FMA_(k4, MUL_(num4, s2), MUL_(n, FMA_(MUL_(n, n), n, W3)));
-    y4 = MUL_(MUL_(n2, W3), RCP_EXP_(den4));
+    y4 = MUL_(n2, MUL_(W3, RCP_EXP_(den4)));
     /* the monotone cubic in gamma */
     d0 = SUB_(y1, y0);
     d1 = SUB_(y2, y1);
