@@ -46,6 +46,11 @@
 #define AT_alpha_x 3
 #define AT_alpha_y 5
 #define AT_gamma 7
+/* the menu's other inputs: V.H = L.H (the cos slot), L.H likewise, f90 =
+ * albedo's slot */
+#define AT_voh 7
+#define AT_loh 7
+#define AT_f90 5
 #define INPUT_(input, domain) p[AT_##input]
 
 volatile uint64_t bench_sink;

@@ -97,6 +97,17 @@ build/facet-bench bench lambert --quick --no-peers >/dev/full 2>/dev/null; [ $? 
 build/facet-bench bench lambert --epochs 1002 >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "--epochs 1002: want exit 2"
 build/facet-bench bench lambert --samples 65544 >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "--samples 65544: want exit 2"
 build/facet-bench bench lambert --samples " 8" >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "--samples ' 8': want exit 2"
+# the Cortex-M harness of make report (bench/cortexm/cortexm_main.c, one call
+# per kernel of the list) compiles in every format: a kernel input it has no
+# point for broke every Cortex-M figure of the report without a failing check
+if command -v arm-none-eabi-gcc > /dev/null 2>&1; then
+    for f in "-DBENCH_FX" "-DBENCH_FX -DBENCH_FX_FAST" "-mfloat-abi=soft"; do
+        # shellcheck disable=SC2086
+        arm-none-eabi-gcc -mcpu=cortex-m4 -mthumb -O2 -std=c99 -Wall -Wextra -Werror -Iinclude $f -fsyntax-only \
+            bench/cortexm/cortexm_main.c 2> build/bench-suite.cortexm.log && ok ||
+            { head -5 build/bench-suite.cortexm.log; bad "bench/cortexm/cortexm_main.c does not compile ($f)"; }
+    done
+fi
 # the report's own part on its own (no mca, no Cortex-M traces): a quick run
 # writes a self-contained index.html that is valid UTF-8, whose labelled
 # figures put every label inside their SVG (an uninitialised picture once
