@@ -141,8 +141,9 @@ static int in_domain(const facet_kernel *k, const float *in)
     return 1;
 }
 
-/* FACET_TEST_QUICK=2: a full-system emulator (the Cortex-M55 image,
- * tests/helium.mk, where the double oracle is emulated): the 5- and 6-input
+/* FACET_TEST_QUICK=2: under an emulator (the Cortex-M55 image,
+ * tests/helium.mk, where the double oracle is emulated; the qemu-user and
+ * old-CPU suites): the 5- and 6-input
  * kernels' edge grids are walked with a prime stride (13, 211: every edge
  * value still in every input, 1/13 and 1/211 of the 17^5 and 17^6
  * combinations) and their dense grids are 6 and 5 points per input */
