@@ -378,7 +378,7 @@ float facet_g_neumann_f32(float nol, float nov);
  * N.L, N.V.  Where 2 N.H min(N.L, N.V) >= V.H the result is 1 exactly
  * (V.H = 0 included); the reciprocal sees V.H >= FACET_COS_MIN only.
  * Error: <= FACET_ERR_G_COOK_TORRANCE_F32 (2^-22).
- * Cost: 23 ops (0 rsqrt, 1 rcp). */
+ * Cost: 24 ops (0 rsqrt, 1 rcp). */
 float facet_g_cook_torrance_f32(float nol, float nov, float noh, float voh);
 
 /* Kelemen G = N.L N.V / (V.H)^2 (Kelemen and Szirmay-Kalos: G / (4 N.L N.V)

@@ -681,7 +681,8 @@ FACET_INLINE V_ FACET_K(g_neumann)(V_ nol, V_ nov)
  *                 = min(1, g / V.H), g = 2 N.H min(N.L, N.V):
  * where g >= V.H (also V.H = 0) the result is 1 and no reciprocal is used;
  * below, V.H > g >= 0 and the quotient is < 1.  N.H and V.H enter only as
- * their ratio, so below V.H = 2^-40 both are scaled by 2^60 (exactly):
+ * their ratio, so where either is below 2^-40 both are scaled by 2^60
+ * (exactly; else 2 N.H min(N.L, N.V) would lose its bits as a denormal):
  * the reciprocal never sees a denormal (scaled, V.H >= 2^-89 or 0; the
  * floor 2^-100 only keeps 1/0 out of the unselected side), and g keeps its
  * precision. */
@@ -689,7 +690,7 @@ FACET_INLINE V_ FACET_K(g_cook_torrance)(V_ nol, V_ nov, V_ noh, V_ voh)
 {
     V_ m = MIN_(X_COS_(nol), X_COS_(nov));
     V_ nh = X_UNIT_(noh), vh = X_UNIT_(voh);
-    V_ sc = FACET_OP(sel_lt)(vh, C_(9.09494702e-13f), C_(1.15292150e18f), C_(1.0f));
+    V_ sc = FACET_OP(sel_lt)(MIN_(nh, vh), C_(9.09494702e-13f), C_(1.15292150e18f), C_(1.0f));
     V_ g, v;
     nh = MUL_(nh, sc);
     v = MUL_(vh, sc);
