@@ -46,6 +46,17 @@
 #define STORE_N facet_sse2_store_n
 #define BRDF facet_brdf_hammon_f32_sse2
 #define GGX facet_ggx_d_f32_fast_sse2
+#elif defined(__ARM_FEATURE_MVE) && (__ARM_FEATURE_MVE & 2)
+#include "facet/helium.h"
+#define PORT "helium"
+#define W 4
+#define V float32x4_t
+#define LOAD vld1q_f32
+#define STORE vst1q_f32
+#define LOAD_N facet_helium_load_n
+#define STORE_N facet_helium_store_n
+#define BRDF facet_brdf_hammon_f32_helium
+#define GGX facet_ggx_d_f32_fast_helium
 #elif defined(__ARM_NEON) && (defined(__aarch64__) || defined(__ARM_FEATURE_FMA))
 #include "facet/neon.h"
 #define PORT "neon"

@@ -24,6 +24,7 @@
 #error "facet/helium.h needs MVE with floating point (-mcpu=cortex-m55 -mfloat-abi=hard)"
 #endif
 #include <arm_mve.h>
+#include <stddef.h>
 #include "facet/common.h"
 
 FACET_INLINE float32x4_t facet_helium_set(float x) { return vdupq_n_f32(x); }
@@ -92,6 +93,22 @@ FACET_INLINE float32x4_t facet_helium_sqr_err(float32x4_t a, float32x4_t p)
 /* The fast tier (f32_fast): two steps each. */
 FACET_INLINE float32x4_t facet_helium_rcp_fast(float32x4_t x) { return facet_helium_rcp_steps_(x, 2); }
 FACET_INLINE float32x4_t facet_helium_rsqrt_fast(float32x4_t x) { return facet_helium_rsqrt_steps_(x, 2); }
+
+/* Tails, so that a loop over any n needs no padding by the caller:
+ * facet_helium_load_n(p, r) loads r floats (0 <= r <= 4) into the first r
+ * lanes and 0.5 (inside every kernel's domain) into the others, reading
+ * nothing past p + r; facet_helium_store_n(p, v, r) stores the first r
+ * lanes, writing nothing else.  Tail-predicated (VCTP), no stack copy.
+ * Tested at every n mod 4 (tests/test_tails.c, on the M55 image). */
+FACET_INLINE float32x4_t facet_helium_load_n(const float *p, size_t r)
+{
+    mve_pred16_t m = vctp32q((uint32_t)(r < 4 ? r : 4));
+    return vpselq_f32(vldrwq_z_f32(p, m), vdupq_n_f32(0.5f), m);
+}
+FACET_INLINE void facet_helium_store_n(float *p, float32x4_t v, size_t r)
+{
+    vstrwq_p_f32(p, v, vctp32q((uint32_t)(r < 4 ? r : 4)));
+}
 
 /* Exponent-bit ops (exp2/log2 of f32_body.h and the samplers):
  *   exp2i(k)    2^k for an integral-valued k in [-126, 127] (exponent bits)
