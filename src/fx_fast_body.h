@@ -684,4 +684,221 @@ FXF_INLINE fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, f
     return fxf_fast_brdf_channel(&G, f0_in, albedo);
 }
 
+/* ---- Fresnel and diffuse: the rest of the menu (the fast tier only) -------------
+ * No precise fixed-point kernel (kernels.def fx_code fast).  Fresnel Q15,
+ * the diffuse terms UQ8.24 as diffuse_hammon.  No vector here is a struct
+ * member or an array element: the helpers return one value, the others
+ * through out-parameters. */
+
+/* y^5 Q30 for Y = 2^15 (1 - x) Q15, as fresnel_schlick's: y2 = 2 Y^2 Q31
+ * exact [<= 2^31], y4 = hi(y2, y2) Q30, y5 = hi(2 y4, Y 2^16) Q30 [every
+ * operand <= 2^31, each truncation <= 2^-30]; Y = 0 gives 0, Y = 2^15 2^30. */
+FXF_INLINE fxv_u32 fxm_y5(fxv_u32 y)
+{
+    fxv_u32 y2 = fxv_shl(fxv_mul32(y, y), 1);
+    fxv_u32 y4 = fxw_mulhi(y2, y2);
+    return fxw_mulhi(fxv_shl(y4, 1), fxv_shl(y, 16));
+}
+
+/* Schlick with f90: f0 (1 - y^5) + f90 y^5 (the convex combination: no
+ * signed difference), y = 1 - V.H:
+ *   F30 = hi(2 (2^30 - y5), F0 2^16) + hi(2 y5, F90 2^16)   Q30 [<= 2^30:
+ *         a convex combination of two values <= 1; operands <= 2^31]
+ *   raw = round(F30 / 2^15).
+ * Two truncations <= 2^-30 each: the error is the final rounding.  V.H = 1
+ * gives f0 exactly (y5 = 0), V.H = 0 f90 exactly (y5 = 2^30). */
+FXF_INLINE fxv_u32 fxf_fast_fresnel_schlick_f90(fxv_i32 f0_in, fxv_i32 f90_in, fxv_i32 voh)
+{
+    fxv_u32 y5 = fxm_y5(fxv_sub32(fxv_k32(FXF_ONE), fxf_unit(voh)));
+    fxv_u32 f = fxv_add32(fxw_mulhi(fxv_shl(fxv_sub32(fxv_k32(1u << 30), y5), 1), fxv_shl(fxf_unit(f0_in), 16)),
+                          fxw_mulhi(fxv_shl(y5, 1), fxv_shl(fxf_unit(f90_in), 16)));
+    return fxv_shr(fxv_add32(f, fxv_k32(1u << 14)), 15);
+}
+
+/* 2^(-i/256) Q31, i = 0..256: fxm_exp2_tab[i] = round(2^31 2^(-i/256))
+ * [2^30 .. 2^31; steps < 2^23] */
+static const uint32_t fxm_exp2_tab[257] = {
+    2147483648u, 2141676973, 2135885998, 2130110682, 2124350982, 2118606857, 2112878262, 2107165158,
+    2101467502, 2095785251, 2090118366, 2084466803, 2078830522, 2073209480, 2067603638, 2062012954,
+    2056437387, 2050876895, 2045331439, 2039800978, 2034285470, 2028784876, 2023299156, 2017828268,
+    2012372174, 2006930832, 2001504204, 1996092249, 1990694927, 1985312200, 1979944027, 1974590370,
+    1969251188, 1963926443, 1958616096, 1953320108, 1948038440, 1942771053, 1937517909, 1932278970,
+    1927054196, 1921843549, 1916646992, 1911464486, 1906295993, 1901141476, 1896000896, 1890874216,
+    1885761398, 1880662405, 1875577199, 1870505744, 1865448001, 1860403934, 1855373507, 1850356681,
+    1845353420, 1840363688, 1835387448, 1830424663, 1825475297, 1820539314, 1815616678, 1810707353,
+    1805811301, 1800928489, 1796058879, 1791202437, 1786359126, 1781528911, 1776711757, 1771907628,
+    1767116489, 1762338305, 1757573041, 1752820662, 1748081133, 1743354420, 1738640488, 1733939301,
+    1729250827, 1724575029, 1719911875, 1715261330, 1710623359, 1705997930, 1701385007, 1696784557,
+    1692196547, 1687620943, 1683057710, 1678506817, 1673968228, 1669441912, 1664927835, 1660425963,
+    1655936265, 1651458706, 1646993254, 1642539877, 1638098541, 1633669214, 1629251865, 1624846459,
+    1620452965, 1616071351, 1611701585, 1607343634, 1602997467, 1598663052, 1594340357, 1590029350,
+    1585730000, 1581442275, 1577166143, 1572901575, 1568648537, 1564406999, 1560176931, 1555958300,
+    1551751076, 1547555228, 1543370725, 1539197537, 1535035634, 1530884983, 1526745556, 1522617322,
+    1518500250, 1514394310, 1510299473, 1506215708, 1502142985, 1498081275, 1494030547, 1489990772,
+    1485961921, 1481943963, 1477936870, 1473940611, 1469955159, 1465980482, 1462016553, 1458063343,
+    1454120821, 1450188960, 1446267730, 1442357104, 1438457051, 1434567544, 1430688553, 1426820052,
+    1422962010, 1419114401, 1415277195, 1411450365, 1407633882, 1403827719, 1400031848, 1396246240,
+    1392470869, 1388705706, 1384950723, 1381205894, 1377471191, 1373746586, 1370032052, 1366327563,
+    1362633090, 1358948606, 1355274085, 1351609500, 1347954824, 1344310030, 1340675091, 1337049980,
+    1333434672, 1329829140, 1326233356, 1322647296, 1319070932, 1315504238, 1311947188, 1308399756,
+    1304861917, 1301333643, 1297814910, 1294305692, 1290805962, 1287315695, 1283834865, 1280363448,
+    1276901417, 1273448747, 1270005413, 1266571390, 1263146652, 1259731174, 1256324931, 1252927899,
+    1249540052, 1246161366, 1242791816, 1239431376, 1236080024, 1232737732, 1229404479, 1226080238,
+    1222764986, 1219458698, 1216161350, 1212872918, 1209593378, 1206322705, 1203060876, 1199807867,
+    1196563654, 1193328213, 1190101520, 1186883552, 1183674286, 1180473697, 1177281762, 1174098458,
+    1170923762, 1167757650, 1164600099, 1161451085, 1158310587, 1155178580, 1152055042, 1148939949,
+    1145833280, 1142735011, 1139645120, 1136563583, 1133490379, 1130425485, 1127368878, 1124320536,
+    1121280436, 1118248556, 1115224875, 1112209370, 1109202018, 1106202798, 1103211687, 1100228665,
+    1097253708, 1094286796, 1091327906, 1088377016, 1085434106, 1082499153, 1079572136, 1076653033,
+    1073741824,
+};
+
+/* Schlick with the spherical-Gaussian power: f0 + (1 - f0) 2^-p,
+ * p = (5.55473 c + 6.98316) c in [0, 12.54]:
+ *   p Q28 = hi(2 C^2, K1) + hi(C 2^16, K2), K1 = round(5.55473 2^29),
+ *           K2 = round(6.98316 2^29) [C^2 Q30 <= 2^30; p < 12.54 2^28 <
+ *           2^31.65; truncations 2^-28 each]
+ *   2^-p = 2^-n 2^-f: n = p >> 28 in [0, 12]; f's top 8 bits index
+ *           fxm_exp2_tab, its next 20 interpolate linearly (one high word:
+ *           hi(step < 2^23, f 2^12 < 2^32)); E = the Q31 value >> n
+ *           [<= 2^31; chord error h^2/8 (ln 2)^2 = 2^-20.1 relative]
+ *   F30 = F0 2^15 + hi((2^15 - F0) 2^16, E)   Q30 [<= 2^30]
+ *   raw = round(F30 / 2^15).
+ * cos = 0 gives 1 exactly (p = 0, E = 2^31). */
+#define FXM_SG_K1 2982172961u /* round(5.55473 2^29) */
+#define FXM_SG_K2 3749055478u /* round(6.98316 2^29) */
+FXF_INLINE fxv_u32 fxf_fast_fresnel_schlick_sg(fxv_i32 f0_in, fxv_i32 cos_in)
+{
+    fxv_u32 f0 = fxf_unit(f0_in), c = fxf_unit(cos_in);
+    fxv_u32 p = fxv_add32(fxw_mulhi(fxv_shl(fxv_mul32(c, c), 1), fxv_k32(FXM_SG_K1)),
+                          fxw_mulhi(fxv_shl(c, 16), fxv_k32(FXM_SG_K2)));
+    fxv_u32 i = fxv_and(fxv_shr(p, 20), fxv_k32(255)), fr = fxv_shl(fxv_and(p, fxv_k32(0xFFFFF)), 12);
+    fxv_u32 e0 = fxv_lut(fxm_exp2_tab, i), e1 = fxv_lut(fxm_exp2_tab, fxv_add32(i, fxv_k32(1)));
+    fxv_u32 e = fxv_shrv(fxv_sub32(e0, fxw_mulhi(fxv_sub32(e0, e1), fr)), fxv_shr(p, 28));
+    fxv_u32 f = fxv_add32(fxv_shl(f0, 15), fxw_mulhi(fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), f0), 16), e));
+    return fxv_shr(fxv_add32(f, fxv_k32(1u << 14)), 15);
+}
+
+/* Burley: albedo / pi (1 + (fd - 1) yl^5)(1 + (fd - 1) yv^5), fd = 0.5 +
+ * 2 sqrt(a) L.H^2, each factor the convex combination (1 - y^5) + fd y^5:
+ *   sqrt(a) Q19: A 2^ka in [2^30, 2^32), ka odd in [15, 25], the sqrt
+ *         table, >> (ka - 15) / 2 [<= 2^19; 2^-15 relative]
+ *   fd Q29 = 2^28 + hi(sq 2^12, LH^2 2^1)   [<= 2.5 2^29]
+ *   fl Q29 = (2^30 - y5) / 2 + hi(2 fd, 2 y5)   [in [0.5, 2.5] 2^29]
+ *   pr Q28 = hi(2 fl, 2 fv)   [<= 6.25 2^28 < 2^31]
+ *   d Q30 = hi(2 pr, alb / pi Q33)   [alb round(2^18 / pi) < 2^31.4;
+ *         d <= 1.99 2^30]
+ *   raw UQ8.24 = round(d / 2^6). */
+FXF_INLINE fxv_u32 fxm_diffuse_out30(fxv_u32 pr28, fxv_u32 alb)
+{
+    fxv_u32 d = fxw_mulhi(fxv_shl(pr28, 1), fxv_mul32(alb, fxv_k32(FXW_INV_PI)));
+    return fxv_shr(fxv_add32(d, fxv_k32(32)), 6);
+}
+
+FXF_INLINE fxv_u32 fxm_burley_factor(fxv_u32 fd, fxv_u32 x)
+{
+    fxv_u32 y5 = fxm_y5(fxv_sub32(fxv_k32(FXF_ONE), x));
+    return fxv_add32(fxv_shr(fxv_sub32(fxv_k32(1u << 30), y5), 1), fxw_mulhi(fxv_shl(fd, 1), fxv_shl(y5, 1)));
+}
+
+FXF_INLINE fxv_u32 fxf_fast_diffuse_burley(fxv_i32 nol, fxv_i32 nov, fxv_i32 loh, fxv_i32 alpha,
+                                           fxv_i32 albedo)
+{
+    fxv_u32 a = fxf_alpha(alpha), lh = fxf_unit(loh);
+    fxv_u32 ka = fxv_sub32(fxv_and(fxv_add32(fxv_clz(a), fxv_k32(1)), fxv_k32(30)), fxv_k32(1));
+    fxv_u32 sq = fxv_shrv(fxf_sqrt20(fxv_shlv(a, ka)), fxv_shr(fxv_sub32(ka, fxv_k32(15)), 1));
+    fxv_u32 fd = fxv_add32(fxv_k32(1u << 28), fxw_mulhi(fxv_shl(sq, 12), fxv_shl(fxv_mul32(lh, lh), 1)));
+    fxv_u32 pr = fxw_mulhi(fxv_shl(fxm_burley_factor(fd, fxf_cos(nol)), 1),
+                           fxv_shl(fxm_burley_factor(fd, fxf_cos(nov)), 1));
+    return fxm_diffuse_out30(pr, fxf_unit(albedo));
+}
+
+/* Hammon's rough and multi with another smooth term (hybrid, cheap): the
+ * dot triple and the rough term of diffuse_hammon (fxf_dots_of, fxf_sqrt32,
+ * fxw_diffuse26_shape: the same steps and bounds, here as single values):
+ *   c = ~min(P, Q) = L.H^2 2^32 - 1 (the raised triple), L.H = ls 2^-(20 + h)
+ *   a rough Q25 as there; the bracket (1 - a) smooth Q29 / 16 + a rough Q25
+ *   [smooth <= 1 here: B <= 64.9 as there], then fxw_diffuse26_albedo and
+ *   diffuse_hammon's final (d + 2.5) / 4. */
+FXF_INLINE fxv_u32 fxm_dots_c(fxv_u32 s, fxv_i32 lov)
+{
+    fxv_u32 t = fxv_clamp_off(lov, -FACET_FX_ONE + 1, FACET_FX_ONE); /* LOV + 32767 */
+    fxv_u32 p = fxv_mul32(fxv_sub32(fxv_k32(65536), s), fxv_add32(fxv_k32(65536), s));
+    fxv_u32 q = fxv_shl(fxv_sub32(fxv_k32(65535), t), 16);
+    return fxv_not(fxv_min(p, q));
+}
+
+FXF_INLINE fxv_u32 fxm_rough25(fxv_u32 a, fxv_u32 s, fxv_u32 c)
+{
+    fxv_u32 k = fxv_and(fxv_clz(c), fxv_k32(30)), h = fxv_shr(k, 1), x = fxv_shlv(c, k);
+    fxv_u32 ls = fxf_sqrt20(x);
+    fxv_u32 mh = fxw_mulhi(x, fxv_sub32(fxv_k32(9u << 28), fxv_shr(c, 2)));
+    fxv_u32 ks = fxv_clz(s), rs = fxf_rcp20(fxv_shlv(s, ks));
+    fxv_u32 q = fxv_add32(fxv_k32(1u << 24), fxv_shrv(fxw_mulhi(fxv_shl(ls, 12), fxv_shl(rs, 12)),
+                                                      fxv_sub32(fxv_add32(h, fxv_k32(24)), ks)));
+    fxv_u32 x1 = fxw_mulhi(mh, fxv_mul32(a, fxv_k32(FXW_TENTH)));
+    return fxv_shrv(fxv_shl(fxw_mulhi(fxv_shl(x1, 1), q), 1), k);
+}
+
+FXF_INLINE fxv_u32 fxm_hammon_variant(fxv_u32 smooth29, fxv_u32 nl, fxv_u32 nv, fxv_i32 lov, fxv_u32 a,
+                                      fxv_u32 alb)
+{
+    fxv_u32 s = fxv_add32(nl, nv);
+    fxv_u32 shape = fxv_add32(fxv_shr(fxv_add32(smooth29, fxv_k32(8)), 4), fxm_rough25(a, s, fxm_dots_c(s, lov)));
+    fxv_u32 d = fxw_diffuse26_albedo(shape, a, alb);
+    return fxv_shr(fxv_add32(fxv_shl(d, 1), fxv_k32(5)), 3);
+}
+
+/* hybrid: smooth = (1 - yl^5 / 2)(1 - yv^5 / 2), each Q30 [<= 2^30], their
+ * product hi(2 fl, 2 fv) Q30, times (1 - a) Q31 [(2^15 - A) 2^16 <= 2^31]:
+ * Q29 */
+FXF_INLINE fxv_u32 fxf_fast_diffuse_hammon_hybrid(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
+                                                  fxv_i32 albedo)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
+    fxv_u32 fl = fxv_sub32(fxv_k32(1u << 30), fxv_shr(fxm_y5(fxv_sub32(fxv_k32(FXF_ONE), nl)), 1));
+    fxv_u32 fv = fxv_sub32(fxv_k32(1u << 30), fxv_shr(fxm_y5(fxv_sub32(fxv_k32(FXF_ONE), nv)), 1));
+    fxv_u32 sm = fxw_mulhi(fxw_mulhi(fxv_shl(fl, 1), fxv_shl(fv, 1)), fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), a), 16));
+    return fxm_hammon_variant(sm, nl, nv, lov, a, fxf_unit(albedo));
+}
+
+/* cheap: smooth = 1, (1 - a) Q29 exact */
+FXF_INLINE fxv_u32 fxf_fast_diffuse_hammon_cheap(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
+                                                 fxv_i32 albedo)
+{
+    fxv_u32 a = fxf_alpha(alpha);
+    return fxm_hammon_variant(fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), a), 14), fxf_cos(nol), fxf_cos(nov), lov, a,
+                              fxf_unit(albedo));
+}
+
+/* Oren-Nayar: albedo / pi (A + B max(0, L.V - nl nv) / max(nl, nv)) (facet.h's
+ * identity, no raise), sigma^2 = a^2 / 4:
+ *   s2 = A^2 = sigma^2 Q32 exact [<= 2^30]
+ *   A Q31 = 2^31 - (s2 / (s2 + 0.33 2^32) Q31) / 2,  B Q31 = hi(s2 / (s2 +
+ *         0.09 2^32) Q31, 0.45 2^32)   [two fxr_div, 2^-15.9 relative;
+ *         A in [0.785, 1], B <= 0.331]
+ *   num Q30 = max(T 2^15, 2^30 + NL NV) - (2^30 + NL NV), T = LOV + 2^15
+ *         [(1 + L.V) and (1 + nl nv) 2^30 <= 2^31; num < 2^31]
+ *   term Q22 = num / max(NL, NV) 2^7, one fxr_div   [term <= 256: < 2^30]
+ *   sum Q21 = A / 2^10 + hi(B, term)   [<= 85.7 2^21 < 2^27.5]
+ *   d Q26 = hi(16 sum, alb / pi Q33)   [<= 27.3 2^26 < 2^30.8]
+ *   raw UQ8.24 = round(d / 4). */
+#define FXM_ON_033 1417339208u /* round(0.33 2^32) */
+#define FXM_ON_009 386547057u  /* round(0.09 2^32) */
+#define FXM_ON_045 1932735283u /* round(0.45 2^32) */
+FXF_INLINE fxv_u32 fxf_fast_diffuse_oren_nayar(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
+                                               fxv_i32 albedo)
+{
+    fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha), s2 = fxv_mul32(a, a);
+    fxv_u32 ra = fxr_div(s2, fxv_add32(s2, fxv_k32(FXM_ON_033)), 31, 1u << 31);
+    fxv_u32 rb = fxr_div(s2, fxv_add32(s2, fxv_k32(FXM_ON_009)), 31, 1u << 31);
+    fxv_u32 bb = fxw_mulhi(rb, fxv_k32(FXM_ON_045));
+    fxv_u32 p = fxv_add32(fxv_k32(1u << 30), fxv_mul32(nl, nv));
+    fxv_u32 num = fxv_sub32(fxv_max(fxv_shl(fxv_clamp_off(lov, -FACET_FX_ONE, FACET_FX_ONE), 15), p), p);
+    fxv_u32 term = fxr_div(num, fxv_max(nl, nv), 7, 1u << 30);
+    fxv_u32 sum = fxv_add32(fxv_shr(fxv_sub32(fxv_k32(1u << 31), fxv_shr(ra, 1)), 10), fxw_mulhi(bb, term));
+    fxv_u32 d = fxw_mulhi(fxv_shl(sum, 4), fxv_mul32(fxf_unit(albedo), fxv_k32(FXW_INV_PI)));
+    return fxv_shr(fxv_add32(d, fxv_k32(2)), 2);
+}
+
 #endif

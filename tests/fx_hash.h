@@ -108,6 +108,13 @@ static const struct { const char *name; uint64_t hash; } fxh_pinned_fast[] = {
     { "smith_vis_fit", 0xa736c6b884a9d72cull },
     { "diffuse_hammon", 0x08cbfb8476579d9cull },
     { "brdf_hammon", 0xb03e03d0f7286755ull },
+    /* the fast tier only (no precise kernel, so not in fxh_pinned) */
+    { "fresnel_schlick_f90", 0x0dae320f77d0d831ull },
+    { "fresnel_schlick_sg", 0xd1f161746c0c0a69ull },
+    { "diffuse_burley", 0xe8019d74b0a0a641ull },
+    { "diffuse_oren_nayar", 0x5dcb551eac3871f8ull },
+    { "diffuse_hammon_hybrid", 0x145fb7dbfd878ab7ull },
+    { "diffuse_hammon_cheap", 0xcc3967ded50b38a2ull },
 };
 #define FXH_N_PINNED_FAST (sizeof fxh_pinned_fast / sizeof fxh_pinned_fast[0])
 #endif

@@ -34,6 +34,9 @@ W2(smith_g1_hammon, uint32_t) W3(smith_g2_hammon, uint32_t) W3(smith_vis_hammon,
 W2(g_implicit, uint32_t) W2(g_neumann, uint32_t) W4(g_cook_torrance, uint32_t) W3(g_kelemen, uint32_t)
 W2(smith_g1_beckmann, uint32_t) W2(smith_g1_schlick_beckmann, uint32_t) W3(smith_vis_joint_approx, uint32_t)
 W3(smith_vis_fit, uint32_t)
+W3(fresnel_schlick_f90, uint32_t) W2(fresnel_schlick_sg, uint32_t)
+#define W5(k) static uint64_t f_##k(const int32_t *x) { return facet_##k##_fx_fast(x[0], x[1], x[2], x[3], x[4]); }
+W5(diffuse_burley) W5(diffuse_oren_nayar) W5(diffuse_hammon_hybrid) W5(diffuse_hammon_cheap)
 static uint64_t f_diffuse_hammon(const int32_t *x) { return facet_diffuse_hammon_fx_fast(x[0], x[1], x[2], x[3], x[4]); }
 static uint64_t f_brdf_hammon(const int32_t *x) { return facet_brdf_hammon_fx_fast(x[0], x[1], x[2], x[3], x[4], x[5]); }
 
@@ -58,6 +61,12 @@ static const struct { const char *name; fast_fn fn; double err; } fast[] = {
     { "smith_vis_joint_approx", f_smith_vis_joint_approx, FACET_FX_FAST_ERR_SMITH_VIS_JOINT_APPROX },
     { "smith_vis_fit", f_smith_vis_fit, FACET_FX_FAST_ERR_SMITH_VIS_FIT },
     { "diffuse_hammon", f_diffuse_hammon, FACET_FX_FAST_ERR_DIFFUSE_HAMMON },
+    { "fresnel_schlick_f90", f_fresnel_schlick_f90, FACET_FX_FAST_ERR_FRESNEL_SCHLICK_F90 },
+    { "fresnel_schlick_sg", f_fresnel_schlick_sg, FACET_FX_FAST_ERR_FRESNEL_SCHLICK_SG },
+    { "diffuse_burley", f_diffuse_burley, FACET_FX_FAST_ERR_DIFFUSE_BURLEY },
+    { "diffuse_oren_nayar", f_diffuse_oren_nayar, FACET_FX_FAST_ERR_DIFFUSE_OREN_NAYAR },
+    { "diffuse_hammon_hybrid", f_diffuse_hammon_hybrid, FACET_FX_FAST_ERR_DIFFUSE_HAMMON_HYBRID },
+    { "diffuse_hammon_cheap", f_diffuse_hammon_cheap, FACET_FX_FAST_ERR_DIFFUSE_HAMMON_CHEAP },
     { "brdf_hammon", f_brdf_hammon, FACET_FX_FAST_ERR_BRDF_HAMMON },
 };
 #define N_FAST (sizeof fast / sizeof fast[0])

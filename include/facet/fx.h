@@ -492,6 +492,94 @@ void facet_brdf_hammon_rgb_fx_fast_batch_interleaved(uint64_t *out, const int32_
                                                      const int32_t *alpha, const int32_t *f0,
                                                      const int32_t *albedo, size_t n);
 
+/* ---- Fresnel and diffuse: the rest of the menu, the fast tier only -------
+ * No precise fixed-point kernel (no facet_<kernel>_fx: the fx table's fx
+ * and fx_batch are NULL; `facet eval --format fx` refuses them).  The
+ * formulas of facet.h, the fixed-point domains (nol, nov [2^-8, 1]; lov
+ * [-1, 1]; f0, f90, voh, cos, loh, albedo [0, 1]; alpha [2^-10, 1]; every
+ * int32 outside clamps), the fast tier's bound (above) and datapath.
+ * Outputs: Fresnel Q15 (max 1: convex combinations of [0, 1] values), the
+ * diffuse terms UQ8.24 as diffuse_hammon (diffuse_burley max 6.25/pi =
+ * 1.99; diffuse_oren_nayar (A + B 256)/pi <= 27.3 at nl = nv = 2^-8, L.V =
+ * 1 [raw < 2^28.8]; the two Hammon variants <= diffuse_hammon's 20.65).
+ * Scaling (src/fx_fast_body.h gives each step's Q format and bound):
+ *   fresnel_schlick_f90  y^5 Q30 as fresnel_schlick's; f0 (1 - y^5) + f90
+ *               y^5 as two high words Q30 [<= 2^30], rounded once: f0 at
+ *               V.H = 1, f90 at V.H = 0 exactly;
+ *   fresnel_schlick_sg  p = (5.55473 c + 6.98316) c Q28 [< 2^31.65] (the
+ *               constants Q29); 2^-p = 2^-floor(p) times a 257-entry Q31
+ *               table of 2^(-i/256) with 20 interpolation bits (2^-20.1);
+ *               F(f0, 0) = 1 exactly;
+ *   diffuse_burley  sqrt(alpha) Q19 from the sqrt table; f_d90 Q29
+ *               [<= 2.5 2^29]; each factor (1 - y^5) + f_d90 y^5 Q29, their
+ *               product Q28 [< 2^31], times albedo/pi Q33: Q30;
+ *   diffuse_oren_nayar  sigma^2 = a^2/4 Q32 exact; A, B by one table 1/x
+ *               each (Q31); max(0, L.V - nl nv) Q30 exact, / max(nl, nv)
+ *               Q22 [<= 256 2^22]; A + B term Q21 [< 2^27.5]; times
+ *               albedo/pi Q33: Q26;
+ *   diffuse_hammon_hybrid, diffuse_hammon_cheap  diffuse_hammon's rough,
+ *               multi and final steps (its bounds) with the smooth term
+ *               (1 - yl^5/2)(1 - yv^5/2) Q30 (hybrid), 1 (cheap).
+ * Errors: FACET_FX_FAST_ERR_* (the fast tier's measure, its maximum over
+ * tests/test_fx_fast.c's full sweep, 0.8 M to 2.3 M tuples per kernel, x86-64;
+ * e, LSB < 1K, rel >= 1K, argmax; the error is the final rounding in each):
+ *   fresnel_schlick_f90     0.500  0.500  -         (35, 6472, 24521)
+ *   fresnel_schlick_sg      0.501  0.500  -         (46, 17697)
+ *   diffuse_burley          0.506  0.505  2^-11.01  (170, 188, 24325, 13879, 3)
+ *   diffuse_oren_nayar      0.507  0.507  2^-11.00  (2230, 2227, 32768, 22716, 1)
+ *   diffuse_hammon_hybrid   0.511  0.511  2^-10.99  (28017, 5031, -14686, 32745, 18)
+ *   diffuse_hammon_cheap    0.506  0.506  2^-11.01  (184, 22231, -30411, 32717, 40)
+ * Cost: executed instructions per call on Cortex-M4 / Cortex-M0 (as the
+ * fast tier above). */
+#define FACET_FX_FAST_ERR_FRESNEL_SCHLICK_F90   0.501
+#define FACET_FX_FAST_ERR_FRESNEL_SCHLICK_SG    0.502
+#define FACET_FX_FAST_ERR_DIFFUSE_BURLEY        0.506
+#define FACET_FX_FAST_ERR_DIFFUSE_OREN_NAYAR    0.508
+#define FACET_FX_FAST_ERR_DIFFUSE_HAMMON_HYBRID 0.512
+#define FACET_FX_FAST_ERR_DIFFUSE_HAMMON_CHEAP  0.507
+
+/* f0 (1 - (1 - V.H)^5) + f90 (1 - V.H)^5, Q15.  2 mul, 5 high-word products.
+ * Error: FACET_FX_FAST_ERR_FRESNEL_SCHLICK_F90.  Cost: see the README. */
+int32_t facet_fresnel_schlick_f90_fx_fast(int32_t f0, int32_t f90, int32_t voh);
+/* f0 + (1 - f0) 2^((-5.55473 cos - 6.98316) cos), Q15; F(f0, 0) = 1.
+ * 1 mul, 3 high-word products, one interpolated table.
+ * Error: FACET_FX_FAST_ERR_FRESNEL_SCHLICK_SG.  Cost: see the README. */
+int32_t facet_fresnel_schlick_sg_fx_fast(int32_t f0, int32_t cos_theta);
+/* Burley's diffuse (facet.h); UQ8.24, max 1.99.  One sqrt (table).
+ * Error: FACET_FX_FAST_ERR_DIFFUSE_BURLEY.  Cost: see the README. */
+uint32_t facet_diffuse_burley_fx_fast(int32_t nol, int32_t nov, int32_t loh, int32_t alpha,
+                                      int32_t albedo);
+/* Oren-Nayar's qualitative diffuse from the dots (facet.h); UQ8.24, max
+ * 27.3.  Three 1/x (table).
+ * Error: FACET_FX_FAST_ERR_DIFFUSE_OREN_NAYAR.  Cost: see the README. */
+uint32_t facet_diffuse_oren_nayar_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
+                                          int32_t albedo);
+/* Hammon's hybrid diffuse (facet.h); UQ8.24.  One sqrt, one 1/x.
+ * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON_HYBRID.  Cost: see the README. */
+uint32_t facet_diffuse_hammon_hybrid_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
+                                             int32_t albedo);
+/* Hammon's cheaper diffuse (facet.h); UQ8.24.  One sqrt, one 1/x.
+ * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON_CHEAP.  Cost: see the README. */
+uint32_t facet_diffuse_hammon_cheap_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
+                                            int32_t albedo);
+/* their batches, as the fast tier batches below */
+void facet_fresnel_schlick_f90_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *f90,
+                                             const int32_t *voh, size_t n);
+void facet_fresnel_schlick_sg_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *cos_theta,
+                                            size_t n);
+void facet_diffuse_burley_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                        const int32_t *loh, const int32_t *alpha, const int32_t *albedo,
+                                        size_t n);
+void facet_diffuse_oren_nayar_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                            const int32_t *lov, const int32_t *alpha,
+                                            const int32_t *albedo, size_t n);
+void facet_diffuse_hammon_hybrid_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                               const int32_t *lov, const int32_t *alpha,
+                                               const int32_t *albedo, size_t n);
+void facet_diffuse_hammon_cheap_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                              const int32_t *lov, const int32_t *alpha,
+                                              const int32_t *albedo, size_t n);
+
 /* ---- fast tier batches: out[i] = facet_<kernel>_fx_fast(in1[i], ...) ---
  * Dispatched like the precise batches (one port choice for every format):
  * the active port's code (avx2 and avx512: AVX2 lanes; aarch64 neon: NEON
