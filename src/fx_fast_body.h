@@ -779,6 +779,68 @@ FXF_INLINE fxv_u32 fxf_fast_fresnel_schlick_sg(fxv_i32 f0_in, fxv_i32 cos_in)
     return fxv_shr(fxv_add32(f, fxv_k32(1u << 14)), 15);
 }
 
+/* The exact dielectric Fresnel (facet.h's fresnel_cook_torrance), with
+ * u = 1/eta = (1 - s)/(1 + s), s = sqrt(f0), and the refracted cosine
+ * ct = sqrt(1 - u^2 (1 - c^2)) = sqrt(v + u^2 c^2), v = 1 - u^2 = 4 s t^2,
+ * t = 1/(1 + s):
+ *   rs = (u c - ct)/(u c + ct),  rp = (c - u ct)/(c + u ct),  F = (rs^2 + rp^2)/2
+ * (the Fresnel equations divided by eta: every term in [0, 1]; a difference
+ * costs only its operands' absolute error, since each is divided by the
+ * matching sum).  f0 = 0 gives 0 and f0 = 1 gives 1 (selected); the body
+ * runs on f0 clamped to [2^-15, 1 - 2^-15] (s >= 2^-7.5, u >= 2^-17.6):
+ *   s Q31 = the sqrt table at F0 2^ks (ks = (clz - 1) | 1, odd in [17, 31]),
+ *         >> (ks - 17)/2
+ *         [< 2^31; 2^-15 relative]
+ *   t Q31 = rcp20(2^31 + s) 2^11 [(1 + s) Q31 in [2^31, 2^32); <= 2^31]
+ *   t^2 Q32 = hi(2t, 2t) [< 2^32: s > 0];  v Q30 = hi(2s, t^2) [<= 2^30]
+ *   u = (1 - f0) t^2 exactly scaled: (2^15 - F0) 2^ku in [2^31, 2^32), ku =
+ *         clz in [17, 31], um = hi(that, t^2) [>= 2^29]: u = um 2^-(ku + 15)
+ *         (u to 2^-14 relative however small)
+ *   u c Q31 = hi(um, C 2^16) >> (ku - 17) [< 2^31]
+ *   ct^2 Q30 = v + hi(2 uc, 2 uc) / 4 [<= 2^30, >= v >= 2^24.4]; ct Q31 from
+ *         the sqrt table (an even shift 2h <= 6): (sq 2^12) >> h [<= 2^31]
+ *   |rs| Q31 = (ct - uc) / (ct + uc) [the sum < 2^32], one fxr_div,
+ *         saturated at 2^31 - 1
+ *   rp: c + u ct and |c - u ct| at the scale 2^(ku + 30) in 64 bits (c
+ *         2^31 times 2^(ku - 1); um ct >> 16) [each < 2^61, the sum >= 2^41],
+ *         the sum's top word and the difference at the same shift, one
+ *         fxr_div: |rp| Q31
+ *   F Q31 = hi(2|rs|, 2|rs|) / 4 + hi(2|rp|, 2|rp|) / 4 [<= 2^31]
+ *   raw = round(F / 2^16). */
+FXF_INLINE fxv_u32 fxm_top_at(fxv_u64 v, fxv_u32 kk)
+{
+    return fxv_or(fxv_shlv(fxv_hi(v), kk), fxv_shrv(fxv_lo(v), fxv_sub32(fxv_k32(32), kk)));
+}
+
+FXF_INLINE fxv_u32 fxm_sq31(fxv_u32 q) { return fxw_mulhi(fxv_shl(q, 1), fxv_shl(q, 1)); }
+
+FXF_INLINE fxv_u32 fxf_fast_fresnel_cook_torrance(fxv_i32 f0_in, fxv_i32 voh)
+{
+    fxv_u32 f0 = fxf_unit(f0_in), c = fxf_unit(voh);
+    fxv_u32 fc = fxv_min(fxv_max(f0, fxv_k32(1)), fxv_k32(FXF_ONE - 1));
+    fxv_u32 ks = fxv_or(fxv_sub32(fxv_clz(fc), fxv_k32(1)), fxv_k32(1)); /* odd: F0 2^ks in [2^30, 2^32) */
+    fxv_u32 s = fxv_shrv(fxv_shl(fxf_sqrt20(fxv_shlv(fc, ks)), 11), fxv_shr(fxv_sub32(ks, fxv_k32(17)), 1));
+    fxv_u32 t = fxv_shl(fxf_rcp20(fxv_add32(fxv_k32(1u << 31), s)), 11);
+    fxv_u32 t2 = fxw_mulhi(fxv_shl(t, 1), fxv_shl(t, 1));
+    fxv_u32 v = fxw_mulhi(fxv_shl(s, 1), t2);
+    fxv_u32 om = fxv_sub32(fxv_k32(FXF_ONE), fc), ku = fxv_clz(om);
+    fxv_u32 um = fxw_mulhi(fxv_shlv(om, ku), t2);
+    fxv_u32 uc = fxv_shrv(fxw_mulhi(um, fxv_shl(c, 16)), fxv_sub32(ku, fxv_k32(17)));
+    fxv_u32 ct2 = fxv_add32(v, fxv_shr(fxm_sq31(uc), 2));
+    fxv_u32 k2 = fxv_and(fxv_clz(ct2), fxv_k32(30));
+    fxv_u32 ct = fxv_shrv(fxv_shl(fxf_sqrt20(fxv_shlv(ct2, k2)), 12), fxv_shr(k2, 1));
+    fxv_u32 rs = fxr_div(fxv_sub32(fxv_max(ct, uc), uc), fxv_add32(ct, uc), 31, 0x7FFFFFFFu);
+    fxv_u64 cp = fxv_mulw(fxv_shl(c, 16), fxv_shlv(fxv_k32(1), fxv_sub32(ku, fxv_k32(1))));
+    fxv_u64 up = fxv_shr64(fxv_mulw(um, ct), 16);
+    fxv_u32 e, dt = fxw_top(fxv_add64(cp, up), &e);
+    fxv_u32 ct_ = fxm_top_at(cp, e), ut_ = fxm_top_at(up, e);
+    fxv_u32 rp = fxr_div(fxv_sub32(fxv_max(ct_, ut_), fxv_min(ct_, ut_)), dt, 31, 0x7FFFFFFFu);
+    fxv_u32 f = fxv_add32(fxv_shr(fxm_sq31(rs), 2), fxv_shr(fxm_sq31(rp), 2));
+    fxv_u32 raw = fxv_shr(fxv_add32(f, fxv_k32(1u << 15)), 16);
+    raw = fxv_sel(fxv_lt(f0, fxv_k32(1)), fxv_k32(0), raw);
+    return fxv_sel(fxv_lt(fxv_k32(FXF_ONE - 1), f0), fxv_k32(FXF_ONE), raw);
+}
+
 /* Burley: albedo / pi (1 + (fd - 1) yl^5)(1 + (fd - 1) yv^5), fd = 0.5 +
  * 2 sqrt(a) L.H^2, each factor the convex combination (1 - y^5) + fd y^5:
  *   sqrt(a) Q19: A 2^ka in [2^30, 2^32), ka odd in [15, 25], the sqrt

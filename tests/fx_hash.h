@@ -109,6 +109,7 @@ static const struct { const char *name; uint64_t hash; } fxh_pinned_fast[] = {
     { "diffuse_hammon", 0x08cbfb8476579d9cull },
     { "brdf_hammon", 0xb03e03d0f7286755ull },
     /* the fast tier only (no precise kernel, so not in fxh_pinned) */
+    { "fresnel_cook_torrance", 0xfab7c63e85bcc30dull },
     { "fresnel_schlick_f90", 0x0dae320f77d0d831ull },
     { "fresnel_schlick_sg", 0xd1f161746c0c0a69ull },
     { "diffuse_burley", 0xe8019d74b0a0a641ull },

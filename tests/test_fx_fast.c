@@ -34,7 +34,7 @@ W2(smith_g1_hammon, uint32_t) W3(smith_g2_hammon, uint32_t) W3(smith_vis_hammon,
 W2(g_implicit, uint32_t) W2(g_neumann, uint32_t) W4(g_cook_torrance, uint32_t) W3(g_kelemen, uint32_t)
 W2(smith_g1_beckmann, uint32_t) W2(smith_g1_schlick_beckmann, uint32_t) W3(smith_vis_joint_approx, uint32_t)
 W3(smith_vis_fit, uint32_t)
-W3(fresnel_schlick_f90, uint32_t) W2(fresnel_schlick_sg, uint32_t)
+W2(fresnel_cook_torrance, uint32_t) W3(fresnel_schlick_f90, uint32_t) W2(fresnel_schlick_sg, uint32_t)
 #define W5(k) static uint64_t f_##k(const int32_t *x) { return facet_##k##_fx_fast(x[0], x[1], x[2], x[3], x[4]); }
 W5(diffuse_burley) W5(diffuse_oren_nayar) W5(diffuse_hammon_hybrid) W5(diffuse_hammon_cheap)
 static uint64_t f_diffuse_hammon(const int32_t *x) { return facet_diffuse_hammon_fx_fast(x[0], x[1], x[2], x[3], x[4]); }
@@ -61,6 +61,7 @@ static const struct { const char *name; fast_fn fn; double err; } fast[] = {
     { "smith_vis_joint_approx", f_smith_vis_joint_approx, FACET_FX_FAST_ERR_SMITH_VIS_JOINT_APPROX },
     { "smith_vis_fit", f_smith_vis_fit, FACET_FX_FAST_ERR_SMITH_VIS_FIT },
     { "diffuse_hammon", f_diffuse_hammon, FACET_FX_FAST_ERR_DIFFUSE_HAMMON },
+    { "fresnel_cook_torrance", f_fresnel_cook_torrance, FACET_FX_FAST_ERR_FRESNEL_COOK_TORRANCE },
     { "fresnel_schlick_f90", f_fresnel_schlick_f90, FACET_FX_FAST_ERR_FRESNEL_SCHLICK_F90 },
     { "fresnel_schlick_sg", f_fresnel_schlick_sg, FACET_FX_FAST_ERR_FRESNEL_SCHLICK_SG },
     { "diffuse_burley", f_diffuse_burley, FACET_FX_FAST_ERR_DIFFUSE_BURLEY },
@@ -313,6 +314,15 @@ static void key_points(void)
         bad += facet_fresnel_schlick_fx_fast(x, 0) != 32768;
     }
     CHECK(bad == 0, "fast F(f0, cos = 1) = f0 / F(f0, 0) = 1 fails for %ld f0", bad);
+    for (bad = 0, x = 0; x <= 32768; x++) {
+        bad += facet_fresnel_schlick_f90_fx_fast(x, 12345, 32768) != x;
+        bad += facet_fresnel_schlick_f90_fx_fast(12345, x, 0) != x;
+        bad += facet_fresnel_schlick_sg_fx_fast(x, 0) != 32768;
+        bad += x > 0 && facet_fresnel_cook_torrance_fx_fast(x, 0) != 32768;
+        bad += facet_fresnel_cook_torrance_fx_fast(0, x) != 0 || facet_fresnel_cook_torrance_fx_fast(32768, x) != 32768;
+    }
+    CHECK(bad == 0, "fast F90(f0, f90, 1) = f0, F90(f0, f90, 0) = f90, F_sg(f0, 0) = 1, F_ct(f0 > 0, 0) = 1, "
+          "F_ct(0, c) = 0, F_ct(1, c) = 1: %ld fail", bad);
     CHECK(facet_noh_from_dots_fx_fast(32768, 32768, 32768) == 32768 && facet_loh_from_dots_fx_fast(32768) == 32768 &&
           facet_loh_from_dots_fx_fast(-32768) == 0 && facet_smith_g1_fx_fast(0, 1000) == 0 &&
           facet_smith_g1_hammon_fx_fast(0, 1000) == 0, "fast N.H, L.H, G1 key points");

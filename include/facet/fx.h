@@ -503,6 +503,15 @@ void facet_brdf_hammon_rgb_fx_fast_batch_interleaved(uint64_t *out, const int32_
  * 1.99; diffuse_oren_nayar (A + B 256)/pi <= 27.3 at nl = nv = 2^-8, L.V =
  * 1 [raw < 2^28.8]; the two Hammon variants <= diffuse_hammon's 20.65).
  * Scaling (src/fx_fast_body.h gives each step's Q format and bound):
+ *   fresnel_cook_torrance  the Fresnel equations divided by eta (u = 1/eta
+ *               = (1 - s)/(1 + s), s = sqrt(f0)): rs = (u c - ct)/(u c + ct),
+ *               rp = (c - u ct)/(c + u ct), ct = sqrt(v + u^2 c^2), v = 1 -
+ *               u^2 = 4 s/(1 + s)^2, every term in [0, 1]; s, ct from the
+ *               sqrt table, 1/(1 + s) from the 1/x table, all Q31/Q30; u =
+ *               (1 - f0)/(1 + s)^2 with its own exponent (to 2^-14 relative
+ *               down to u = 2^-17.6 at f0 = 1 - 2^-15), c +- u ct in 64 bits
+ *               at the scale 2^(ku + 30) [< 2^62]; |rs|, |rp| by one 1/x
+ *               each, F Q31 [<= 2^31]; f0 = 0 and f0 = 1 selected (0, 1);
  *   fresnel_schlick_f90  y^5 Q30 as fresnel_schlick's; f0 (1 - y^5) + f90
  *               y^5 as two high words Q30 [<= 2^30], rounded once: f0 at
  *               V.H = 1, f90 at V.H = 0 exactly;
@@ -522,7 +531,11 @@ void facet_brdf_hammon_rgb_fx_fast_batch_interleaved(uint64_t *out, const int32_
  *               (1 - yl^5/2)(1 - yv^5/2) Q30 (hybrid), 1 (cheap).
  * Errors: FACET_FX_FAST_ERR_* (the fast tier's measure, its maximum over
  * tests/test_fx_fast.c's full sweep, 0.8 M to 2.3 M tuples per kernel, x86-64;
- * e, LSB < 1K, rel >= 1K, argmax; the error is the final rounding in each):
+ * e, LSB < 1K, rel >= 1K, argmax; the error is the final rounding in each
+ * but cook_torrance):
+ *   fresnel_cook_torrance   0.634  0.634  -         (51, 11657; the test's sweep: 0.610 at
+ *                                                    49, 11673; this from every f0 x every
+ *                                                    5th V.H, 2.1e8 pairs: the tables' s, ct)
  *   fresnel_schlick_f90     0.500  0.500  -         (35, 6472, 24521)
  *   fresnel_schlick_sg      0.501  0.500  -         (46, 17697)
  *   diffuse_burley          0.506  0.505  2^-11.01  (170, 188, 24325, 13879, 3)
@@ -531,6 +544,7 @@ void facet_brdf_hammon_rgb_fx_fast_batch_interleaved(uint64_t *out, const int32_
  *   diffuse_hammon_cheap    0.506  0.506  2^-11.01  (184, 22231, -30411, 32717, 40)
  * Cost: executed instructions per call on Cortex-M4 / Cortex-M0 (as the
  * fast tier above). */
+#define FACET_FX_FAST_ERR_FRESNEL_COOK_TORRANCE 0.634
 #define FACET_FX_FAST_ERR_FRESNEL_SCHLICK_F90   0.501
 #define FACET_FX_FAST_ERR_FRESNEL_SCHLICK_SG    0.502
 #define FACET_FX_FAST_ERR_DIFFUSE_BURLEY        0.506
@@ -538,31 +552,36 @@ void facet_brdf_hammon_rgb_fx_fast_batch_interleaved(uint64_t *out, const int32_
 #define FACET_FX_FAST_ERR_DIFFUSE_HAMMON_HYBRID 0.512
 #define FACET_FX_FAST_ERR_DIFFUSE_HAMMON_CHEAP  0.507
 
-/* f0 (1 - (1 - V.H)^5) + f90 (1 - V.H)^5, Q15.  2 mul, 5 high-word products.
- * Error: FACET_FX_FAST_ERR_FRESNEL_SCHLICK_F90.  Cost: see the README. */
+/* The exact dielectric Fresnel (facet.h), eta from f0; Q15, F(0, c) = 0,
+ * F(1, c) = 1, F(f0, 0) = 1.  Two sqrt, three 1/x (tables).
+ * Error: FACET_FX_FAST_ERR_FRESNEL_COOK_TORRANCE.  Cost: 206 / 620. */
+int32_t facet_fresnel_cook_torrance_fx_fast(int32_t f0, int32_t voh);
+/* f0 (1 - (1 - V.H)^5) + f90 (1 - V.H)^5, Q15.  1 mul, 4 high-word products.
+ * Error: FACET_FX_FAST_ERR_FRESNEL_SCHLICK_F90.  Cost: 30 / 78. */
 int32_t facet_fresnel_schlick_f90_fx_fast(int32_t f0, int32_t f90, int32_t voh);
 /* f0 + (1 - f0) 2^((-5.55473 cos - 6.98316) cos), Q15; F(f0, 0) = 1.
- * 1 mul, 3 high-word products, one interpolated table.
- * Error: FACET_FX_FAST_ERR_FRESNEL_SCHLICK_SG.  Cost: see the README. */
+ * 1 mul, 4 high-word products, one interpolated table.
+ * Error: FACET_FX_FAST_ERR_FRESNEL_SCHLICK_SG.  Cost: 36 / 95. */
 int32_t facet_fresnel_schlick_sg_fx_fast(int32_t f0, int32_t cos_theta);
 /* Burley's diffuse (facet.h); UQ8.24, max 1.99.  One sqrt (table).
- * Error: FACET_FX_FAST_ERR_DIFFUSE_BURLEY.  Cost: see the README. */
+ * Error: FACET_FX_FAST_ERR_DIFFUSE_BURLEY.  Cost: 85 / 298. */
 uint32_t facet_diffuse_burley_fx_fast(int32_t nol, int32_t nov, int32_t loh, int32_t alpha,
                                       int32_t albedo);
 /* Oren-Nayar's qualitative diffuse from the dots (facet.h); UQ8.24, max
  * 27.3.  Three 1/x (table).
- * Error: FACET_FX_FAST_ERR_DIFFUSE_OREN_NAYAR.  Cost: see the README. */
+ * Error: FACET_FX_FAST_ERR_DIFFUSE_OREN_NAYAR.  Cost: 172 / 453. */
 uint32_t facet_diffuse_oren_nayar_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                           int32_t albedo);
 /* Hammon's hybrid diffuse (facet.h); UQ8.24.  One sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON_HYBRID.  Cost: see the README. */
+ * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON_HYBRID.  Cost: 121 / 469. */
 uint32_t facet_diffuse_hammon_hybrid_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                              int32_t albedo);
 /* Hammon's cheaper diffuse (facet.h); UQ8.24.  One sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON_CHEAP.  Cost: see the README. */
+ * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON_CHEAP.  Cost: 98 / 368. */
 uint32_t facet_diffuse_hammon_cheap_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                             int32_t albedo);
 /* their batches, as the fast tier batches below */
+void facet_fresnel_cook_torrance_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *voh, size_t n);
 void facet_fresnel_schlick_f90_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *f90,
                                              const int32_t *voh, size_t n);
 void facet_fresnel_schlick_sg_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *cos_theta,
@@ -636,7 +655,9 @@ typedef struct facet_fx_kernel {
     int out_bits;                           /* 32 or 64 (container) */
     const char *out_format;                 /* "Q15", "UQ19.13", ... */
     uint64_t out_max;                       /* saturation value (raw) */
-    uint64_t (*fx)(const int32_t *in);      /* the kernel, raw output widened */
+    uint64_t (*fx)(const int32_t *in);      /* the kernel, raw output widened;
+                                             * NULL (and fx_batch NULL, err_lsb 0)
+                                             * for a kernel with the fast tier only */
     /* batch on the active port: out[i] = kernel(in[0][i], ...), out an
      * array of the output container (out_bits) */
     void (*fx_batch)(void *out, const int32_t *const *in, size_t n);
