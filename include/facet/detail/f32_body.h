@@ -602,7 +602,7 @@ FACET_INLINE V_ FACET_K(smith_g1_gtr)(V_ nov, V_ alpha, V_ gamma)
     V_ W = MUL_(w2, RSQRT_X5_(w2)); /* cubed in G^4: the precise rsqrt in both tiers */
     V_ n2 = ADD_(n, n), nW = ADD_(n, W), b = ADD_(C_(1.0f), a2);
     V_ y0, y1, y2, y3, y4, la, e, den1, u, W3, num4, den4, k4;
-    V_ d0, d1, d2, d3, m0, m1, m2, m3, m4, yj, yk, mj, mk, t, t1, j1, j2, j3, S, sc;
+    V_ d0, d1, d2, d3, m0, m1, m2, m3, m4, yj, yk, mj, mk, t, t1, j1, j2, j3, S, ex, sc;
     /* gamma = 0: 2n / (1 + n) */
     y0 = MUL_(n2, RCP_EXP_(ADD_(C_(1.0f), n)));
     /* gamma = 1: n / (n + e s2 (W + n (1 - R(u))) / ((W + 1)(n + W))),
@@ -635,7 +635,8 @@ FACET_INLINE V_ FACET_K(smith_g1_gtr)(V_ nov, V_ alpha, V_ gamma)
      * y (d0 d1 ...), which underflow for a tiny N.V (the y go as N.V):
      * they are formed on the differences scaled by sc = 2^-floor(log2 N.V)
      * (exact), and the slope term is scaled back by 1 / sc. */
-    sc = FACET_OP(exp2i)(SUB_(C_(0.0f), FACET_OP(getexp)(MAX_(n, C_(0x1p-126f)))));
+    ex = FACET_OP(getexp)(MAX_(n, C_(0x1p-126f)));
+    sc = FACET_OP(exp2i)(SUB_(C_(0.0f), ex));
     d0 = MUL_(SUB_(y1, y0), sc);
     d1 = MUL_(SUB_(y2, y1), sc);
     d2 = MUL_(SUB_(y3, y2), sc);
@@ -657,8 +658,7 @@ FACET_INLINE V_ FACET_K(smith_g1_gtr)(V_ nov, V_ alpha, V_ gamma)
     /* (1 + 2t)(1 - t)^2 yj + t^2 (3 - 2t) yk + t (1 - t) ((1 - t) mj - t mk) */
     S = MUL_(MUL_(FMA_(C_(2.0f), t, C_(1.0f)), MUL_(t1, t1)), yj);
     S = FMA_(MUL_(MUL_(t, t), FNMA_(C_(2.0f), t, C_(3.0f))), yk, S);
-    S = FMA_(MUL_(t, t1), MUL_(FNMA_(t, mk, MUL_(t1, mj)), FACET_OP(exp2i)(FACET_OP(getexp)(MAX_(n, C_(0x1p-126f))))),
-             S);
+    S = FMA_(MUL_(t, t1), MUL_(FNMA_(t, mk, MUL_(t1, mj)), FACET_OP(exp2i)(ex)), S);
     return NAN0_(CLAMP_(S, C_(0.0f), C_(1.0f)), nov, alpha, gamma);
 }
 
