@@ -1164,8 +1164,10 @@ static void section_image_variants(void)
     img_variant *v = calloc((size_t)nmax, sizeof *v);
     pic diff;
     char port[32];
+    clock_t ts = clock();
     say("image-space error: the menu's variants ...");
     n = img_variants_run(v, nmax, &diff, port, sizeof port);
+    say("image-space error: %d variants in %.1f s CPU", n, (double)(clock() - ts) / CLOCKS_PER_SEC);
     fprintf(md, "\n### The menu's variants in image space\n\n");
     fprintf(html, "<h3>The menu's variants in image space</h3>\n");
     para("The same spheres with a BRDF assembled as D * Vis * F + diffuse from double oracles (GGX D, exact "

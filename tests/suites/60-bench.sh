@@ -198,7 +198,7 @@ for v in 'ggx_d' 'blinn_phong_d' 'beckmann_d' 'ggx_aniso_d (alpha_y = alpha/2)' 
     build/facet list | grep -q "^$k " || continue
     grep -qF "| $v | " $r/variants.md && ok || bad "image-space variants: no row for '$v'"
 done
-cell='[0-9]+ / [0-9]+ / [0-9]+\.[0-9]{3} \([0-9]+\.[0-9]{2}\)'
+cell='[0-9]+ / [0-9]+ / [0-9]+\.[0-9][0-9][0-9] \([0-9]+\.[0-9][0-9]\)' # (no {n}: mawk has none)
 # columns: variant, term, f32, f32_fast, fx, fx_fast, model against, model error
 CELL="^$cell\$" awk 'BEGIN { c = ENVIRON["CELL"] } /^\| / && !/^\| variant / && !/^\|---/ {
         sub(/^\| /, ""); sub(/ \|$/, ""); n = split($0, f, / \| /)
