@@ -106,7 +106,7 @@ static const sample_entry *sample_port(void)
 #define SCALAR_DEF_vec(name, tier, n_in, n_out)                               \
     void facet_##name##_##tier(float out[n_out], CAT(SC_P_, n_in))           \
     {                                                                         \
-        facet_##name##_##tier##_scalar(out, CAT(IN_A_, n_in));                \
+        facet_##name##_##tier##_scalar(FACET_SAMPLE_OUTS(n_out, out), CAT(IN_A_, n_in));                \
     }
 #define SCALAR_DEF_ret(name, tier, n_in, n_out)                               \
     float facet_##name##_##tier(CAT(SC_P_, n_in))                             \
@@ -124,15 +124,15 @@ static const sample_entry *sample_port(void)
 #define FACET_SAMPLER(name, NAME, kind, err, n_out, n_in, ...)                          \
     static void t_f32_##name(float *out, const float *in)                              \
     {                                                                                  \
-        FACET_SAMPLE_CALL(kind, facet_##name##_f32_scalar, out, in, n_in);             \
+        FACET_SAMPLE_CALL(kind, facet_##name##_f32_scalar, out, n_out, in, n_in);             \
     }                                                                                  \
     static void t_fast_##name(float *out, const float *in)                             \
     {                                                                                  \
-        FACET_SAMPLE_CALL(kind, facet_##name##_f32_fast_scalar, out, in, n_in);        \
+        FACET_SAMPLE_CALL(kind, facet_##name##_f32_fast_scalar, out, n_out, in, n_in);        \
     }                                                                                  \
     static void t_oracle_##name(double *out, const double *in)                         \
     {                                                                                  \
-        FACET_SAMPLE_CALL(kind, facet_oracle_##name, out, in, n_in);                   \
+        FACET_SAMPLE_CALL_ARRAY(kind, facet_oracle_##name, out, in, n_in);                   \
     }                                                                                  \
     static void t_batch_##name(float *const *out, const float *const *in, size_t n)    \
     {                                                                                  \
