@@ -17,6 +17,8 @@
 #define SAMPLE_ARM 1
 #elif defined(__ARM_FEATURE_MVE) && (__ARM_FEATURE_MVE & 2)
 #define SAMPLE_HELIUM 1
+#elif defined(__riscv) && __riscv_xlen == 64 && defined(__linux__) && defined(FACET_PORT_RVV)
+#define SAMPLE_RVV 1
 #endif
 
 typedef struct { const facet_sample_port *f32, *f32_fast; } sample_entry;
@@ -35,6 +37,9 @@ static const sample_entry sample_ports[] = {
 #endif
 #if SAMPLE_HELIUM
     { &facet_sample_port_helium_f32, &facet_sample_port_helium_f32_fast },
+#endif
+#if SAMPLE_RVV
+    { &facet_sample_port_rvv_f32, &facet_sample_port_rvv_f32_fast },
 #endif
     { &facet_sample_port_scalar_f32, &facet_sample_port_scalar_f32_fast },
 };

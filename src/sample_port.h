@@ -25,6 +25,7 @@ extern const facet_sample_port facet_sample_port_avx2_f32, facet_sample_port_avx
 extern const facet_sample_port facet_sample_port_avx512_f32, facet_sample_port_avx512_f32_fast;
 extern const facet_sample_port facet_sample_port_neon_f32, facet_sample_port_neon_f32_fast;
 extern const facet_sample_port facet_sample_port_helium_f32, facet_sample_port_helium_f32_fast;
+extern const facet_sample_port facet_sample_port_rvv_f32, facet_sample_port_rvv_f32_fast;
 
 /* argument lists a[0], ..., a[n - 1] */
 #define FACET_SAMPLE_ARGS(n, a) FACET_SAMPLE_ARGS_##n(a)
