@@ -70,7 +70,11 @@ typedef vbool32_t facet_rvv_mask;
 #define facet_rvv_i2f_(v) vreinterpret_v_i32m1_f32m1(v)
 #define facet_rvv_u2i_(v) vreinterpret_v_u32m1_i32m1(v)
 #endif
-#define FACET_RVV_VL_ facet_rvv_vlmax()
+/* the ops' vl: all ones, which RVV reads as VLMAX (an AVL >= 2 VLMAX
+ * gives vl = VLMAX) and clang as its VLMAX sentinel, so one vsetvli serves
+ * a whole run of ops (vsetvlmax() in each op was one vsetvli per op: clang
+ * 14 does not merge them) */
+#define FACET_RVV_VL_ ((size_t)-1)
 
 FACET_INLINE facet_rvv_v facet_rvv_set(float x) { return FACET_RVV_F_(vfmv_v_f)(x, FACET_RVV_VL_); }
 FACET_INLINE facet_rvv_v facet_rvv_add(facet_rvv_v a, facet_rvv_v b) { return FACET_RVV_F_(vfadd_vv)(a, b, FACET_RVV_VL_); }

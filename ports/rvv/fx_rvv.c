@@ -23,7 +23,7 @@ typedef vuint32m1_t fxv_u32;
 typedef vuint64m2_t fxv_u64;
 
 #define FXV_FAST_ static inline __attribute__((always_inline, unused))
-#define FXV_VL_ vsetvlmax_e32m1()
+#define FXV_VL_ ((size_t)-1) /* VLMAX: see FACET_RVV_VL_ in facet/rvv.h */
 FXV_FAST_ fxv_u32 fxv_k32(uint32_t c) { return vmv_v_x_u32m1(c, FXV_VL_); }
 FXV_FAST_ fxv_u32 fxv_clamp(fxv_i32 x, int32_t lo, int32_t hi)
 {
