@@ -26,6 +26,7 @@ skip() {
     exit 0
 }
 have riscv64-linux-gnu-gcc || skip "riscv64-linux-gnu-gcc not installed (apt-get install gcc-riscv64-linux-gnu libc6-dev-riscv64-cross)"
+[ -f /usr/riscv64-linux-gnu/include/stdio.h ] || skip "libc6-dev-riscv64-cross not installed (apt-get install libc6-dev-riscv64-cross)"
 have qemu-riscv64 || skip "qemu-riscv64 not installed (apt-get install qemu-user)"
 have clang || skip "clang not installed (apt-get install clang: the RVV intrinsics; gcc 12 has none)"
 sysroot=/usr/riscv64-linux-gnu
