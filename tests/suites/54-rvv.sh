@@ -11,6 +11,10 @@
 #   test_fx_hash       the pinned hashes
 #   test_sample_ports, test_f32_bad_input, test_f32_rgb  samplers, bad
 #                      input, the RGB batches (every layout, tail, alias)
+#   test_tails_rvv     a caller's strip-mined loop over facet/rvv.h (vl
+#                      loads and stores) equals the batch bit for bit at
+#                      every n up to 4 VLMAX + 1, exact-size buffers, a
+#                      guard after the output, out == an input
 #   test_f32_accuracy  both tiers against the oracle at the facet.h bounds
 #                      (FACET_TEST_QUICK=2), at VLEN 128 only: each lane's
 #                      arithmetic does not depend on VLEN (the lane and tail
@@ -31,7 +35,8 @@ have qemu-riscv64 || skip "qemu-riscv64 not installed (apt-get install qemu-user
 have clang || skip "clang not installed (apt-get install clang: the RVV intrinsics; gcc 12 has none)"
 sysroot=/usr/riscv64-linux-gnu
 dir=build/rv64
-tests="test_f32_ports test_f32_accuracy test_fx_ports test_fx_hash test_sample_ports test_f32_bad_input test_f32_rgb"
+tests="test_f32_ports test_f32_accuracy test_fx_ports test_fx_hash test_sample_ports test_f32_bad_input test_f32_rgb
+       test_tails_rvv"
 bins=""
 for t in $tests; do bins="$bins $dir/tests/$t"; done
 mkdir -p $dir
