@@ -110,33 +110,30 @@ FXF_INLINE fxv_u32 fxf_alpha(fxv_i32 x) { return fxv_clamp(x, FACET_FX_ALPHA_MIN
  *                               cancellation without rounding)
  *   c = ~u = 2^32 - 1 - u     = (t_r / 2) 2^32 - 1 = L.H^2 2^32 - 1
  *                               [c >= 2^16 - 1: t_r >= s^2/2 >= 2^-15] */
-typedef struct { fxv_u32 s, u, w, c; } fxf_dots;
-
-FXF_INLINE fxf_dots fxf_dots_of(fxv_u32 nl, fxv_u32 nv, fxv_i32 lov)
+/* Results through out-parameters, here and below, not structs: RVV's
+ * vector types are sizeless (no struct members), and one body serves
+ * every port. */
+FXF_INLINE void fxf_dots_of(fxv_u32 nl, fxv_u32 nv, fxv_i32 lov, fxv_u32 *s, fxv_u32 *u, fxv_u32 *w,
+                            fxv_u32 *c)
 {
-    fxf_dots g;
     fxv_u32 t = fxv_clamp_off(lov, -FACET_FX_ONE + 1, FACET_FX_ONE); /* LOV + 32767 */
     fxv_u32 p, q;
-    g.s = fxv_add32(nl, nv);
-    p = fxv_mul32(fxv_sub32(fxv_k32(65536), g.s), fxv_add32(fxv_k32(65536), g.s));
+    *s = fxv_add32(nl, nv);
+    p = fxv_mul32(fxv_sub32(fxv_k32(65536), *s), fxv_add32(fxv_k32(65536), *s));
     q = fxv_shl(fxv_sub32(fxv_k32(65535), t), 16); /* 2^15 - LOV in [0, 65535] */
-    g.u = fxv_min(p, q);
-    g.w = fxv_sub32(p, g.u);
-    g.c = fxv_not(g.u);
-    return g;
+    *u = fxv_min(p, q);
+    *w = fxv_sub32(p, *u);
+    *c = fxv_not(*u);
 }
 
 /* sqrt(c 2^-32) for c in [2^16 - 1, 2^32): an even normalising shift 2h
- * [h <= 8], the table: sqrt = s 2^-(20 + h), s in [2^19, 2^20) */
-typedef struct { fxv_u32 s, h; } fxf_root;
-
-FXF_INLINE fxf_root fxf_sqrt32(fxv_u32 c)
+ * [h <= 8], the table: sqrt = s 2^-(20 + h), s in [2^19, 2^20); returns s,
+ * *h = h */
+FXF_INLINE fxv_u32 fxf_sqrt32(fxv_u32 c, fxv_u32 *h)
 {
-    fxf_root r;
     fxv_u32 k = fxv_and(fxv_clz(c), fxv_k32(30));
-    r.s = fxf_sqrt20(fxv_shlv(c, k));
-    r.h = fxv_shr(k, 1);
-    return r;
+    *h = fxv_shr(k, 1);
+    return fxf_sqrt20(fxv_shlv(c, k));
 }
 
 /* ---- loh_from_dots ------------------------------------------------------------
@@ -146,8 +143,8 @@ FXF_INLINE fxv_u32 fxf_fast_loh_from_dots(fxv_i32 lov)
 {
     fxv_u32 t = fxv_clamp_off(lov, -FACET_FX_ONE, FACET_FX_ONE);
     fxv_u32 c = fxv_add32(fxv_shl(fxv_sub32(fxv_max(t, fxv_k32(1)), fxv_k32(1)), 16), fxv_k32(0xFFFF));
-    fxf_root r = fxf_sqrt32(c);
-    fxv_u32 v = fxv_shr(fxv_add32(fxv_shrv(r.s, fxv_add32(r.h, fxv_k32(4))), fxv_k32(1)), 1);
+    fxv_u32 rh, rs = fxf_sqrt32(c, &rh);
+    fxv_u32 v = fxv_shr(fxv_add32(fxv_shrv(rs, fxv_add32(rh, fxv_k32(4))), fxv_k32(1)), 1);
     return fxv_sel(fxv_lt(t, fxv_k32(1)), fxv_k32(0), v);
 }
 
@@ -158,12 +155,13 @@ FXF_INLINE fxv_u32 fxf_fast_loh_from_dots(fxv_i32 lov)
  * N.H = 1) gives 2^15. */
 FXF_INLINE fxv_u32 fxf_fast_noh_from_dots(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov)
 {
-    fxf_dots g = fxf_dots_of(fxf_cos(nol), fxf_cos(nov), lov);
-    fxf_root r = fxf_sqrt32(g.c);
-    fxv_u32 x = fxw_mulhi(fxv_shl(g.s, 15), fxv_shl(fxf_rcp20(fxv_shl(r.s, 12)), 12));
-    fxv_u32 v = fxv_shr(fxv_add32(fxv_shrv(x, fxv_sub32(fxv_k32(14), r.h)), fxv_k32(1)), 1);
+    fxv_u32 gs, gu, gw, gc, rh, rs, x, v;
+    fxf_dots_of(fxf_cos(nol), fxf_cos(nov), lov, &gs, &gu, &gw, &gc);
+    rs = fxf_sqrt32(gc, &rh);
+    x = fxw_mulhi(fxv_shl(gs, 15), fxv_shl(fxf_rcp20(fxv_shl(rs, 12)), 12));
+    v = fxv_shr(fxv_add32(fxv_shrv(x, fxv_sub32(fxv_k32(14), rh)), fxv_k32(1)), 1);
     v = fxv_min(v, fxv_k32(FXF_ONE));
-    return fxv_sel(fxv_lt(g.w, fxv_k32(1)), fxv_k32(FXF_ONE), v);
+    return fxv_sel(fxv_lt(gw, fxv_k32(1)), fxv_k32(FXF_ONE), v);
 }
 
 /* ---- 32-bit fixed helpers ---------------------------------------------------
@@ -392,9 +390,9 @@ FXF_INLINE fxv_u32 fxf_fast_smith_g1_beckmann(fxv_i32 nov, fxv_i32 alpha)
     fxv_u32 w = fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), n), fxv_add32(fxv_k32(FXF_ONE), n));
     fxv_u32 p2 = fxw_mulhi(fxv_shl(fxv_mul32(a, a), 1), fxv_shl(w, 1));
     fxv_u32 branch = fxv_lt(fxv_mul32(fxv_shr(fxv_mul32(n, n), 6), fxv_k32(25)), p2);
-    fxf_root r = fxf_sqrt32(fxv_max(fxv_shl(w, 2), fxv_k32(1u << 16)));
-    fxv_u32 pm = fxw_mulhi(fxv_shl(a, 16), fxv_shl(r.s, 12));
-    fxv_u32 c = fxr_divb(n, pm, fxv_sub32(fxv_k32(50), r.h), 858993459u); /* 1.6 2^29 */
+    fxv_u32 rh, rs = fxf_sqrt32(fxv_max(fxv_shl(w, 2), fxv_k32(1u << 16)), &rh);
+    fxv_u32 pm = fxw_mulhi(fxv_shl(a, 16), fxv_shl(rs, 12));
+    fxv_u32 c = fxr_divb(n, pm, fxv_sub32(fxv_k32(50), rh), 858993459u); /* 1.6 2^29 */
     fxv_u32 cc = fxw_mulhi(fxv_shl(c, 2), fxv_shl(c, 1));
     fxv_u32 en, ed, nt, dt, g;
     nt = fxw_top(fxv_add64(fxv_mulw(c, fxv_k32(FXW_WALTER_A)), fxv_mulw(cc, fxv_k32(FXW_WALTER_B))), &en);
@@ -534,7 +532,7 @@ FXF_INLINE fxv_u32 fxf_p5(fxv_u32 x)
 /* split in two for the RGB form (the shape before albedo enters, then the
  * albedo part); integer sums, so the same bits as one expression */
 FXF_INLINE fxv_u32 fxw_diffuse26_shape(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 s,
-                                       fxv_u32 c, fxv_u32 x, fxv_u32 k, fxf_root lh)
+                                       fxv_u32 c, fxv_u32 x, fxv_u32 k, fxv_u32 lh_s, fxv_u32 lh_h)
 {
     fxv_u32 pp = fxw_mulhi(fxf_p5(nl), fxf_p5(nv));                                   /* Q30 */
     fxv_u32 k1 = fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), a), fxv_k32(FXW_C105));       /* Q30 <= 2^30.07 */
@@ -542,8 +540,8 @@ FXF_INLINE fxv_u32 fxw_diffuse26_shape(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u3
     fxv_u32 t45 = fxv_sub32(fxv_k32(9u << 28), fxv_shr(c, 2));                       /* Q29 */
     fxv_u32 mh = fxw_mulhi(x, t45);
     fxv_u32 ks = fxv_clz(s), rs = fxf_rcp20(fxv_shlv(s, ks));
-    fxv_u32 q = fxv_add32(fxv_k32(1u << 24), fxv_shrv(fxw_mulhi(fxv_shl(lh.s, 12), fxv_shl(rs, 12)),
-                                                      fxv_sub32(fxv_add32(lh.h, fxv_k32(24)), ks)));
+    fxv_u32 q = fxv_add32(fxv_k32(1u << 24), fxv_shrv(fxw_mulhi(fxv_shl(lh_s, 12), fxv_shl(rs, 12)),
+                                                      fxv_sub32(fxv_add32(lh_h, fxv_k32(24)), ks)));
     /* a t (4.5 - t) / 10 = x1 2^-(31 + k) [mh < 4.5 2^29: t < 2^(1 - k);
      * A floor(2^20 / 10) < 2^31.68: x1 < 2^30.85]; a rough = x2 2^-(24 + k),
      * x2 = hi(2 x1, q); Q25: 2 x2 >> k [a rough 2^(25 + k) < 2^31.9: rough
@@ -561,19 +559,20 @@ FXF_INLINE fxv_u32 fxw_diffuse26_albedo(fxv_u32 shape, fxv_u32 a, fxv_u32 alb)
 }
 
 FXF_INLINE fxv_u32 fxw_diffuse26(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 alb, fxv_u32 s,
-                                    fxv_u32 c, fxv_u32 x, fxv_u32 k, fxf_root lh)
+                                    fxv_u32 c, fxv_u32 x, fxv_u32 k, fxv_u32 lh_s, fxv_u32 lh_h)
 {
-    return fxw_diffuse26_albedo(fxw_diffuse26_shape(nl, nv, a, s, c, x, k, lh), a, alb);
+    return fxw_diffuse26_albedo(fxw_diffuse26_shape(nl, nv, a, s, c, x, k, lh_s, lh_h), a, alb);
 }
 
 FXF_INLINE fxv_u32 fxf_fast_diffuse_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
                                               fxv_i32 albedo)
 {
     fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov);
-    fxf_dots g = fxf_dots_of(nl, nv, lov);
-    fxf_root lh = fxf_sqrt32(g.c);
-    fxv_u32 k = fxv_shl(lh.h, 1);
-    fxv_u32 d = fxw_diffuse26(nl, nv, fxf_alpha(alpha), fxf_unit(albedo), g.s, g.c, fxv_shlv(g.c, k), k, lh);
+    fxv_u32 gs, gu, gw, gc, lh_h, lh_s, k, d;
+    fxf_dots_of(nl, nv, lov, &gs, &gu, &gw, &gc);
+    lh_s = fxf_sqrt32(gc, &lh_h);
+    k = fxv_shl(lh_h, 1);
+    d = fxw_diffuse26(nl, nv, fxf_alpha(alpha), fxf_unit(albedo), gs, gc, fxv_shlv(gc, k), k, lh_s, lh_h);
     return fxv_shr(fxv_add32(fxv_shl(d, 1), fxv_k32(5)), 3); /* (d + 2.5) / 4: + half the mean floor */
 }
 
@@ -598,81 +597,84 @@ FXF_INLINE fxv_u32 fxf_fast_diffuse_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov
 /* What brdf_hammon computes before f0 and albedo enter; the RGB form
  * (facet_brdf_hammon_rgb_fx_fast) shares it across channels, and per
  * channel runs the same operations, so each channel is brdf_hammon's bits. */
-typedef struct fxf_brdf_geom {
-    fxv_u32 a, y5, k5, ka, k, g2, ee, em, kd, rd, shape;
-} fxf_brdf_geom;
+/* the geometry's 11 lanes, passed as out-parameters
+ * and then as values (sizeless vector types: no struct) */
+#define FXF_BRDF_GEOM_PARAMS_(T, P) \
+    T P##a, T P##y5, T P##k5, T P##ka, T P##k, T P##g2, T P##ee, T P##em, T P##kd, T P##rd, T P##shape
+#define FXF_BRDF_GEOM_ARGS_(P) P##a, P##y5, P##k5, P##ka, P##k, P##g2, P##ee, P##em, P##kd, P##rd, P##shape
 
-FXF_INLINE fxf_brdf_geom fxf_fast_brdf_geometry(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha)
+FXF_INLINE void fxf_fast_brdf_geometry(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
+                                       FXF_BRDF_GEOM_PARAMS_(fxv_u32 *, G_))
 {
-    fxf_brdf_geom G;
     fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
-    fxf_dots g = fxf_dots_of(nl, nv, lov);
-    fxf_root lh = fxf_sqrt32(g.c);
-    fxv_u32 k = fxv_shl(lh.h, 1), x = fxv_shlv(g.c, k);             /* 2t = x 2^-(30 + k) */
+    fxv_u32 gs, gu, gw, gc, lh_s, lh_h, k, x;
     fxv_u32 r1, uu, ku, ym, y2, y4, a2t;
     fxv_u32 as, ee, em, etop, mtop, e2, dm;
+    fxf_dots_of(nl, nv, lov, &gs, &gu, &gw, &gc);
+    lh_s = fxf_sqrt32(gc, &lh_h);
+    k = fxv_shl(lh_h, 1);
+    x = fxv_shlv(gc, k); /* 2t = x 2^-(30 + k) */
     /* Fresnel's y^5 */
-    r1 = fxf_rcp20(fxv_add32(fxv_k32(1u << 31), fxv_shlv(lh.s, fxv_sub32(fxv_k32(11), lh.h)))); /* (1 + L.H) Q31 */
-    uu = fxv_max(g.u, fxv_k32(1));
+    r1 = fxf_rcp20(fxv_add32(fxv_k32(1u << 31), fxv_shlv(lh_s, fxv_sub32(fxv_k32(11), lh_h)))); /* (1 + L.H) Q31 */
+    uu = fxv_max(gu, fxv_k32(1));
     ku = fxv_clz(uu);
     ym = fxw_mulhi(fxv_shlv(uu, ku), fxv_shl(r1, 12));
     y2 = fxw_mulhi(ym, ym);
     y4 = fxw_mulhi(y2, y2);
-    G.y5 = fxw_mulhi(y4, ym);
-    G.k5 = fxv_add32(fxv_shl(ku, 2), ku);
+    *G_y5 = fxw_mulhi(y4, ym);
+    *G_k5 = fxv_add32(fxv_shl(ku, 2), ku);
     /* (a 2t)^2 */
-    G.ka = fxv_clz(a);
-    a2t = fxw_mulhi(fxv_shlv(a, G.ka), x);
-    G.g2 = fxw_mulhi(a2t, a2t);
+    *G_ka = fxv_clz(a);
+    a2t = fxw_mulhi(fxv_shlv(a, *G_ka), x);
+    *G_g2 = fxw_mulhi(a2t, a2t);
     /* e^2 m */
-    as = fxv_mul32(a, g.s);
-    etop = fxw_top(fxv_add64(fxv_mulw(as, as), fxv_mulw(g.w, fxv_k32(1u << 30))), &ee);
+    as = fxv_mul32(a, gs);
+    etop = fxw_top(fxv_add64(fxv_mulw(as, as), fxv_mulw(gw, fxv_k32(1u << 30))), &ee);
     /* m30 = (1 - a) 2 nl nv 2^30 + A S = hi(2 NL NV, (2^15 - A) 2^17) + A S
      * [(2^15 - 32) 2^17 < 2^32; m <= 2: m30 <= 2^31; m >= 2^-15: m30 >= 2^15,
      * truncation <= 2^-15 relative], normalised: m = mtop 2^-(30 + km) */
     mtop = fxv_add32(fxw_mulhi(fxv_shl(fxv_mul32(nl, nv), 1), fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), a), 17)), as);
     em = fxv_clz(mtop);
     mtop = fxv_shlv(mtop, em);
-    G.em = fxv_add32(em, fxv_k32(17));
-    G.ee = ee;
+    *G_em = fxv_add32(em, fxv_k32(17));
+    *G_ee = ee;
     /* e = etop 2^-(28 + ee), m = mtop 2^-(13 + em) */
     e2 = fxw_mulhi(etop, etop);                        /* 2^-(24 + 2 ee) */
     dm = fxw_mulhi(e2, mtop);                          /* 2^-(5 + 2 ee + em) [>= 2^29] */
-    G.kd = fxv_clz(dm);
-    G.rd = fxf_rcp20(fxv_shlv(dm, G.kd));   /* 1/(e^2 m) = rd 2^(2ee + em + kd - 46) */
-    G.a = a;
-    G.k = k;
-    G.shape = fxw_diffuse26_shape(nl, nv, a, g.s, g.c, x, k, lh);
-    return G;
+    *G_kd = fxv_clz(dm);
+    *G_rd = fxf_rcp20(fxv_shlv(dm, *G_kd));   /* 1/(e^2 m) = rd 2^(2ee + em + kd - 46) */
+    *G_a = a;
+    *G_k = k;
+    *G_shape = fxw_diffuse26_shape(nl, nv, a, gs, gc, x, k, lh_s, lh_h);
 }
 
-FXF_INLINE fxv_u64 fxf_fast_brdf_channel(const fxf_brdf_geom *G, fxv_i32 f0_in, fxv_i32 albedo)
+FXF_INLINE fxv_u64 fxf_fast_brdf_channel(FXF_BRDF_GEOM_PARAMS_(fxv_u32, G_), fxv_i32 f0_in, fxv_i32 albedo)
 {
     fxv_u32 f0 = fxf_unit(f0_in);
     fxv_u32 kf, jj, ft, fs, kF, num, sp, ks, es, sl, sr;
     fxv_u64 spec, d64;
     /* F = f0 + (1 - f0) y^5 */
     kf = fxv_sub32(fxv_clz(f0), fxv_k32(16));            /* f0 = 0: 16 */
-    jj = fxv_min(G->k5, kf);
-    ft = fxw_mulhi(G->y5, fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), f0), 16));
+    jj = fxv_min(G_k5, kf);
+    ft = fxw_mulhi(G_y5, fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), f0), 16));
     fs = fxv_add32(fxv_shlv(f0, fxv_add32(jj, fxv_k32(15))),
-                   fxv_shrv(ft, fxv_min(fxv_sub32(fxv_add32(G->k5, fxv_k32(1)), jj), fxv_k32(31))));
+                   fxv_shrv(ft, fxv_min(fxv_sub32(fxv_add32(G_k5, fxv_k32(1)), jj), fxv_k32(31))));
     kF = fxv_min(fxv_clz(fs), fxv_k32(31)); /* fs = 0 (F < 2^-46): spec 0 */
-    num = fxw_mulhi(G->g2, fxv_shlv(fs, kF));              /* 2^-(2ka + 2k + jj + kF - 8) */
-    sp = fxw_mulhi(fxw_mulhi(num, fxv_shl(G->rd, 12)), fxv_k32(FXW_INV_2PI));
+    num = fxw_mulhi(G_g2, fxv_shlv(fs, kF));              /* 2^-(2ka + 2k + jj + kF - 8) */
+    sp = fxw_mulhi(fxw_mulhi(num, fxv_shl(G_rd, 12)), fxv_k32(FXW_INV_2PI));
     /* spec = sp 2^-Es, Es = 2ka + 2k + jj + kF + 18 - 2ee - em - kd [sp >=
      * 2^21], normalised: + ks, held biased by 256 [Es >= -2: spec < 2^33];
      * Q29: sp 2^(29 - Es) < 2^62, a left shift sl <= 30 or a right one */
     ks = fxv_min(fxv_clz(sp), fxv_k32(31));
     sp = fxv_shlv(sp, ks);
-    es = fxv_sub32(fxv_add32(fxv_add32(fxv_add32(fxv_shl(fxv_add32(G->ka, G->k), 1), jj), fxv_add32(kF, ks)),
+    es = fxv_sub32(fxv_add32(fxv_add32(fxv_add32(fxv_shl(fxv_add32(G_ka, G_k), 1), jj), fxv_add32(kF, ks)),
                              fxv_k32(274)),
-                   fxv_add32(fxv_add32(fxv_shl(G->ee, 1), G->em), G->kd));
+                   fxv_add32(fxv_add32(fxv_shl(G_ee, 1), G_em), G_kd));
     sl = fxv_sub32(fxv_k32(285), fxv_min(es, fxv_k32(285)));
     sr = fxv_min(fxv_sub32(fxv_max(es, fxv_k32(285)), fxv_k32(285)), fxv_k32(31));
     spec = fxv_mulw(fxv_shrv(sp, sr), fxv_shlv(fxv_k32(1), sl));
     /* diffuse Q26 to Q29 plus half a Q26 unit: the mean of its last floor */
-    d64 = fxv_mulw(fxv_add32(fxv_shl(fxw_diffuse26_albedo(G->shape, G->a, fxf_unit(albedo)), 1), fxv_k32(1)),
+    d64 = fxv_mulw(fxv_add32(fxv_shl(fxw_diffuse26_albedo(G_shape, G_a, fxf_unit(albedo)), 1), fxv_k32(1)),
                    fxv_k32(4));
     return fxb_rshr64(fxv_add64(spec, d64), 5);
 }
@@ -680,8 +682,9 @@ FXF_INLINE fxv_u64 fxf_fast_brdf_channel(const fxf_brdf_geom *G, fxv_i32 f0_in, 
 FXF_INLINE fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
                                            fxv_i32 f0_in, fxv_i32 albedo)
 {
-    fxf_brdf_geom G = fxf_fast_brdf_geometry(nol, nov, lov, alpha);
-    return fxf_fast_brdf_channel(&G, f0_in, albedo);
+    fxv_u32 FXF_BRDF_GEOM_ARGS_(G_);
+    fxf_fast_brdf_geometry(nol, nov, lov, alpha, FXF_BRDF_GEOM_ARGS_(&G_));
+    return fxf_fast_brdf_channel(FXF_BRDF_GEOM_ARGS_(G_), f0_in, albedo);
 }
 
 #endif

@@ -74,7 +74,6 @@
 #define X_HAMMON_DEN_ FACET_K(x_hammon_den)
 #define X_DIFFUSE_SINGLE_ FACET_K(x_diffuse_single)
 #define X_DIFFUSE_PI_ FACET_K(x_diffuse_pi)
-#define X_BRDF_PARTS_ FACET_K(x_brdf_parts)
 #define X_BRDF_GEOMETRY_ FACET_K(x_brdf_geometry)
 #define X_BRDF_CHANNEL_ FACET_K(x_brdf_channel)
 
@@ -926,11 +925,11 @@ FACET_INLINE V_ FACET_K(diffuse_hammon_cheap)(V_ nol, V_ nov, V_ lov, V_ alpha, 
  * brdf = (dv2 F + albedo (single + albedo multi)) / pi.  The RGB form shares
  * it across channels; per channel the same operations run in the same order,
  * so each channel equals brdf_hammon to the bit. */
-typedef struct X_BRDF_PARTS_ { V_ y5, dv2, single, multi; } X_BRDF_PARTS_;
-
-FACET_INLINE X_BRDF_PARTS_ X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha)
+/* The parts are out-parameters, not a struct: RVV's vector types are
+ * sizeless (no struct members, no arrays), and one body serves every port. */
+FACET_INLINE void X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha,
+                                   V_ *y5_, V_ *dv2_, V_ *single_, V_ *multi_)
 {
-    X_BRDF_PARTS_ g;
     V_ nl = X_COS_(nol), nv = X_COS_(nov);
     V_ lv = X_LOV_(lov);
     V_ a = X_ALPHA_(alpha);
@@ -968,38 +967,44 @@ FACET_INLINE X_BRDF_PARTS_ X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha)
     V_ dv_pi = MUL_(MUL_(u, m), u);             /* pi D Vis / 2; u m = alpha t / e <= 512 */
     /* 0.5 / N.H = L.H / s (N.H = s / (2 L.H)), at least 0.5 */
     V_ h = MAX_(MUL_(lh, RCP_(sh)), C_(0.5f));
-    g.y5 = MUL_(MUL_(y2, y2), y);
-    g.dv2 = ADD_(dv_pi, dv_pi);
-    g.single = X_DIFFUSE_SINGLE_(nl, nv, t, h, a, &g.multi);
-    return g;
+    *y5_ = MUL_(MUL_(y2, y2), y);
+    *dv2_ = ADD_(dv_pi, dv_pi);
+    *single_ = X_DIFFUSE_SINGLE_(nl, nv, t, h, a, multi_);
 }
 
-FACET_INLINE V_ X_BRDF_CHANNEL_(const X_BRDF_PARTS_ *g, V_ f0, V_ albedo)
+FACET_INLINE V_ X_BRDF_CHANNEL_(V_ y5, V_ dv2, V_ single, V_ multi, V_ f0, V_ albedo)
 {
     V_ f0c = X_UNIT_(f0), alb = X_UNIT_(albedo);
-    V_ f = FMA_(SUB_(C_(1.0f), f0c), g->y5, f0c);
-    V_ dif = MUL_(alb, FMA_(alb, g->multi, g->single));
-    return MUL_(FMA_(g->dv2, f, dif), C_(FACET_INV_PI_));
+    V_ f = FMA_(SUB_(C_(1.0f), f0c), y5, f0c);
+    V_ dif = MUL_(alb, FMA_(alb, multi, single));
+    return MUL_(FMA_(dv2, f, dif), C_(FACET_INV_PI_));
 }
 
 FACET_INLINE V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_ albedo)
 {
-    X_BRDF_PARTS_ g = X_BRDF_GEOMETRY_(nol, nov, lov, alpha);
-    return NAN0_(X_BRDF_CHANNEL_(&g, f0, albedo), nol, nov, lov, alpha, f0, albedo);
+    V_ y5, dv2, single, multi;
+    X_BRDF_GEOMETRY_(nol, nov, lov, alpha, &y5, &dv2, &single, &multi);
+    return NAN0_(X_BRDF_CHANNEL_(y5, dv2, single, multi, f0, albedo), nol, nov, lov, alpha, f0, albedo);
 }
 
 /* brdf_hammon for three channels of f0 and albedo at once, the geometry
- * computed once: out[c] equals brdf_hammon(..., f0[c], albedo[c]) bit for bit
+ * computed once: *out_c equals brdf_hammon(..., f0_c, albedo_c) bit for bit
  * (NaN rule included: a NaN in the geometry zeroes every channel, one in
- * f0[c] or albedo[c] channel c). */
-FACET_INLINE void FACET_K(brdf_hammon_rgb)(V_ out[3], V_ nol, V_ nov, V_ lov, V_ alpha,
-                                           const V_ f0[3], const V_ albedo[3])
+ * f0_c or albedo_c channel c).  Channels as separate arguments (sizeless
+ * vector types have no arrays). */
+#define X_BRDF_RGB_CH_(o, f0c, albc)                                                          \
+    *(o) = NAN0_(X_BRDF_CHANNEL_(y5, dv2, single, multi, f0c, albc), nol, nov, lov, alpha, f0c, albc)
+FACET_INLINE void FACET_K(brdf_hammon_rgb)(V_ *out_r, V_ *out_g, V_ *out_b, V_ nol, V_ nov, V_ lov,
+                                           V_ alpha, V_ f0_r, V_ f0_g, V_ f0_b, V_ albedo_r,
+                                           V_ albedo_g, V_ albedo_b)
 {
-    X_BRDF_PARTS_ g = X_BRDF_GEOMETRY_(nol, nov, lov, alpha);
-    int c;
-    for (c = 0; c < 3; c++)
-        out[c] = NAN0_(X_BRDF_CHANNEL_(&g, f0[c], albedo[c]), nol, nov, lov, alpha, f0[c], albedo[c]);
+    V_ y5, dv2, single, multi;
+    X_BRDF_GEOMETRY_(nol, nov, lov, alpha, &y5, &dv2, &single, &multi);
+    X_BRDF_RGB_CH_(out_r, f0_r, albedo_r);
+    X_BRDF_RGB_CH_(out_g, f0_g, albedo_g);
+    X_BRDF_RGB_CH_(out_b, f0_b, albedo_b);
 }
+#undef X_BRDF_RGB_CH_
 
 /* Lambert: albedo / pi, the baseline diffuse. */
 FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
@@ -1058,6 +1063,5 @@ FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
 #undef X_HAMMON_DEN_
 #undef X_DIFFUSE_SINGLE_
 #undef X_DIFFUSE_PI_
-#undef X_BRDF_PARTS_
 #undef X_BRDF_GEOMETRY_
 #undef X_BRDF_CHANNEL_
