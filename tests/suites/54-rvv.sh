@@ -20,8 +20,9 @@
 #                      arithmetic does not depend on VLEN (the lane and tail
 #                      tests above do, and run at every VLEN)
 # The three VLENs run side by side.  Skipped, with the reason, where a tool
-# is missing (.ci/run installs them).
-# lane: emulators
+# is missing (.ci/run installs them).  It runs in the host lane of
+# tests/check.sh, not beside 40-arm in the emulator lane: that lane is the
+# longer one (40-arm, 50, 52), and the host lane has the room.
 . tests/suite_lib.sh
 have() { command -v "$1" > /dev/null 2>&1; }
 skip() {
