@@ -240,6 +240,63 @@ FXF_INLINE fxv_u32 fxf_fast_ggx_d(fxv_i32 noh, fxv_i32 alpha)
     return fxr_divb(fxv_mul32(a, a), pd, fxv_sub32(fxv_k32(90), fxv_shl(e, 1)), FACET_FX_MAX_D);
 }
 
+/* ---- anisotropic GGX D ------------------------------------------------------
+ * The top 32 bits of x = hi 2^32 + lo (x != 0), normalised: top in [2^31,
+ * 2^32), x ~ top 2^(32 - e), e = the leading zeros of x in [0, 63]
+ * (truncated <= 2^-31); both cases computed, one selected [every shift
+ * count in [0, 31]]. */
+FXF_INLINE fxv_u32 fxw_norm_hl(fxv_u32 hi, fxv_u32 lo, fxv_u32 *e)
+{
+    fxv_u32 ch = fxv_min(fxv_clz(hi), fxv_k32(31)), cl = fxv_min(fxv_clz(lo), fxv_k32(31));
+    fxv_u32 th = fxv_or(fxv_shlv(hi, ch), fxv_shrv(fxv_shr(lo, 1), fxv_sub32(fxv_k32(31), ch)));
+    fxv_u32 zero = fxv_lt(hi, fxv_k32(1));
+    *e = fxv_sel(zero, fxv_add32(cl, fxv_k32(32)), ch);
+    return fxv_sel(zero, fxv_shlv(lo, cl), th);
+}
+
+/* D = (ax ay)^3 / (pi K^2), K = (t ay)^2 + (b ax)^2 + (n ax ay)^2:
+ *   P = AX AY Q30 exact [2^10 .. 2^30]; u = |T| AY, v = |B| AX Q30 exact [<= 2^30];
+ *   K61 = 2 u^2 + 2 v^2 + floor(N^2 P^2 / 2^29) in 64 bits [each term
+ *         <= 2^61: < 2^63]: with P^2 = H 2^32 + L (mulw, exact),
+ *         N^2 P^2 / 2^29 = N^2 (H 2^3) + N^2 L / 2^29 [H 2^3 < 2^31];
+ *         truncated by < 1 against K61 >= P^2 >= 2^20 (2^-20 relative);
+ *   the floor K >= P^2 / 2 (P^2 in Q61) as an exact 64-bit max from the
+ *         32-bit halves, normalised (fxw_norm_hl): K = kt 2^(-29 - eK)
+ *         [eK <= 2 kp + 1: K61 >= P^2 >= 2^(62 - 2 kp)];
+ *   pi K^2 = pd 2^(-24 - 2 eK), pd = hi(hi(kt, kt), pi 2^30) [>= 2^29.6];
+ *   P^3: kp = clz(P), Pn = P 2^kp, p3 = hi(hi(Pn, Pn), Pn) [>= 2^29],
+ *         (ax ay)^3 = p3 2^(-26 - 3 kp);
+ *   D 2^13 = p3 / pd 2^(11 - 3 kp + 2 eK), one fxr_div (b = 84 + 3 kp -
+ *         2 eK >= 60: no wrap). */
+FXF_INLINE fxv_u32 fxf_fast_ggx_aniso_d(fxv_i32 noh, fxv_i32 toh, fxv_i32 boh, fxv_i32 alpha_x,
+                                       fxv_i32 alpha_y)
+{
+    fxv_u32 n = fxf_unit(noh), ax = fxf_alpha(alpha_x), ay = fxf_alpha(alpha_y);
+    fxv_u32 t = fxv_clamp_off(toh, -FACET_FX_ONE, FACET_FX_ONE), b = fxv_clamp_off(boh, -FACET_FX_ONE, FACET_FX_ONE);
+    fxv_u32 p = fxv_mul32(ax, ay), n2 = fxv_mul32(n, n), u, v, kh, kl, fh, fl, m, kt, ek, kp, pn, pd, p3;
+    fxv_u64 p2 = fxv_mulw(p, p), k61;
+    /* |T| = |t - 2^15| from t in [0, 2^16] */
+    t = fxv_sub32(fxv_max(t, fxv_k32(FXF_ONE)), fxv_min(t, fxv_k32(FXF_ONE)));
+    b = fxv_sub32(fxv_max(b, fxv_k32(FXF_ONE)), fxv_min(b, fxv_k32(FXF_ONE)));
+    u = fxv_mul32(t, ay);
+    v = fxv_mul32(b, ax);
+    k61 = fxv_add64(fxv_add64(fxv_mulw(u, fxv_shl(u, 1)), fxv_mulw(v, fxv_shl(v, 1))),
+                    fxv_add64(fxv_mulw(n2, fxv_shl(fxv_hi(p2), 3)), fxv_shr64(fxv_mulw(n2, fxv_lo(p2)), 29)));
+    kh = fxv_hi(k61);
+    kl = fxv_lo(k61);
+    fh = fxv_hi(p2);
+    fl = fxv_lo(p2);
+    /* K < floor: hi below, or hi equal and lo below */
+    m = fxv_or(fxv_lt(kh, fh), fxv_and(fxv_not(fxv_lt(fh, kh)), fxv_lt(kl, fl)));
+    kt = fxw_norm_hl(fxv_sel(m, fh, kh), fxv_sel(m, fl, kl), &ek);
+    pd = fxw_mulhi(fxw_mulhi(kt, kt), fxv_k32(FXF_PI_30));
+    kp = fxv_clz(p);
+    pn = fxv_shlv(p, kp);
+    p3 = fxw_mulhi(fxw_mulhi(pn, pn), pn);
+    return fxr_divb(p3, pd, fxv_sub32(fxv_add32(fxv_k32(84), fxv_mul32(kp, fxv_k32(3))), fxv_shl(ek, 1)),
+                    FACET_FX_MAX_D);
+}
+
 /* ---- Smith, exact ------------------------------------------------------------
  * r(x) = sqrt(w), w = a^2 (1 - x)(1 + x) + x^2: w60 = A^2 (2^15 - X)(2^15 + X)
  * + X^2 2^30 Q60 exact [<= 2^60, >= a^2 2^60 >= 2^40]; its top 32 bits

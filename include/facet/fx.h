@@ -91,6 +91,7 @@ extern "C" {
 #define FACET_FX_ERR_LOH_FROM_DOTS         1
 #define FACET_FX_ERR_FRESNEL_SCHLICK       1
 #define FACET_FX_ERR_GGX_D                 1
+#define FACET_FX_ERR_GGX_ANISO_D           4
 #define FACET_FX_ERR_SMITH_G1              1
 #define FACET_FX_ERR_SMITH_G2              1
 #define FACET_FX_ERR_SMITH_G2_UNCORRELATED 1
@@ -120,6 +121,23 @@ int32_t facet_fresnel_schlick_fx(int32_t f0, int32_t cos_theta);
  * [2^-10, 1].  UQ19.13, max 2^20/pi = 333772.1 (N.H = 1, alpha = 2^-10).
  * Error: FACET_FX_ERR_GGX_D LSB.  Cost: 1 division, 3 fxf, 2 mul64. */
 uint32_t facet_ggx_d_fx(int32_t noh, int32_t alpha);
+/* Anisotropic GGX D = (ax ay)^3 / (pi K^2), K = (T.H ay)^2 + (B.H ax)^2 +
+ * (N.H ax ay)^2 (facet.h); noh [0, 1], toh, boh [-1, 1] (Q15 signed, the
+ * L.V domain), alpha_x, alpha_y [2^-10, 1].  UQ19.13 as ggx_d: for a unit h
+ * D <= 1/(pi ax ay) <= 2^20/pi (N.H = 1, both widths 2^-10), the format
+ * argument of ggx_d with alpha^2 replaced by ax ay.  Inputs no unit h has:
+ * K floored at (ax ay)^2 / 2 (facet.h), so D <= 4/(pi ax ay), which
+ * saturates at FACET_FX_MAX_D where ax ay < 2^-19.4.  Intermediates: P = AX
+ * AY Q30, T AY and B AX Q30 (each <= 2^30, exact), K Q90 exact in 96 bits
+ * [K <= 3], then one fxf rounding (src/fx_kernels.c).
+ * Error: FACET_FX_ERR_GGX_ANISO_D LSB: 5 roundings of <= 2^-32 relative
+ * (K, P/K, square, times P, times 1/pi) plus the final half LSB, which is
+ * more than 1 LSB only where raw > 2^29.7 (ax ay < 2^-17, at or near the
+ * peak); measured max 3 LSB (3.09 real) at raw 2^31.5, (129, 32, 1, 33,
+ * 32), relative 2^-29.9.  The exact peak (N.H = 1, T.H = B.H = 0) is
+ * correctly rounded, as ggx_d's.
+ * Cost: 1 division (the peak), 1 fxf division, 3 fxf mul, ~8 mul64. */
+uint32_t facet_ggx_aniso_d_fx(int32_t noh, int32_t toh, int32_t boh, int32_t alpha_x, int32_t alpha_y);
 /* Smith G1 (GGX, exact) = 2 n / (n + sqrt(alpha^2 + (1 - alpha^2) n^2));
  * nov [0, 1], alpha [2^-10, 1].  Q15, max 1; G1(0) = 0, G1(1) = 1.
  * Error: FACET_FX_ERR_SMITH_G1 LSB.  Cost: 1 sqrt, 1 division, 1 fxf, 3 mul. */
@@ -319,6 +337,9 @@ void facet_loh_from_dots_fx_batch(int32_t *out, const int32_t *lov, size_t n);
 void facet_fresnel_schlick_fx_batch(int32_t *out, const int32_t *f0, const int32_t *cos_theta,
                                     size_t n);
 void facet_ggx_d_fx_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
+void facet_ggx_aniso_d_fx_batch(uint32_t *out, const int32_t *noh, const int32_t *toh,
+                                const int32_t *boh, const int32_t *alpha_x, const int32_t *alpha_y,
+                                size_t n);
 void facet_smith_g1_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
 void facet_smith_g2_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
                              const int32_t *alpha, size_t n);
@@ -418,6 +439,7 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
 #define FACET_FX_FAST_ERR_LOH_FROM_DOTS         0.490
 #define FACET_FX_FAST_ERR_FRESNEL_SCHLICK       0.501
 #define FACET_FX_FAST_ERR_GGX_D                 0.514
+#define FACET_FX_FAST_ERR_GGX_ANISO_D           1.0
 #define FACET_FX_FAST_ERR_SMITH_G1              0.536
 #define FACET_FX_FAST_ERR_SMITH_G2              0.536
 #define FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED 0.544
@@ -443,6 +465,12 @@ int32_t facet_fresnel_schlick_fx_fast(int32_t f0, int32_t cos_theta);
  * 64 bits; UQ19.13, max 2^20/pi.  One 1/x.
  * Error: FACET_FX_FAST_ERR_GGX_D.  Cost: 73 / 217 (109 / 652). */
 uint32_t facet_ggx_d_fx_fast(int32_t noh, int32_t alpha);
+/* Anisotropic GGX D, UQ19.13 (as facet_ggx_aniso_d_fx): K in Q61 in 64 bits
+ * (the (N.H ax ay)^2 term truncated, <= 2^-20 relative), its floor by an
+ * exact 64-bit max, normalised by clz; (ax ay)^3 from the normalised
+ * product; one 1/x.
+ * Error: FACET_FX_FAST_ERR_GGX_ANISO_D.  Cost: TBD. */
+uint32_t facet_ggx_aniso_d_fx_fast(int32_t noh, int32_t toh, int32_t boh, int32_t alpha_x, int32_t alpha_y);
 /* Smith G1 (exact GGX) = 2n / (n + sqrt(a^2 + (1 - a^2) n^2)), Q15.
  * w exact in 64 bits, one sqrt, one 1/x.
  * Error: FACET_FX_FAST_ERR_SMITH_G1.  Cost: 91 / 229 (198 / 1063). */
@@ -505,6 +533,9 @@ void facet_loh_from_dots_fx_fast_batch(int32_t *out, const int32_t *lov, size_t 
 void facet_fresnel_schlick_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *cos_theta,
                                     size_t n);
 void facet_ggx_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
+void facet_ggx_aniso_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *toh,
+                                     const int32_t *boh, const int32_t *alpha_x,
+                                     const int32_t *alpha_y, size_t n);
 void facet_smith_g1_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
 void facet_smith_g2_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
                              const int32_t *alpha, size_t n);

@@ -23,6 +23,7 @@
     X(loh_from_dots, int32_t, 1)             \
     X(fresnel_schlick, int32_t, 2)           \
     X(ggx_d, uint32_t, 2)                    \
+    X(ggx_aniso_d, uint32_t, 5)              \
     X(smith_g1, int32_t, 2)                  \
     X(smith_g2, int32_t, 3)                  \
     X(smith_g2_uncorrelated, int32_t, 3)     \
