@@ -507,4 +507,5 @@ void facet_brdf_hammon_rgb_fx(uint64_t out[3], int32_t nol, int32_t nov, int32_t
 /* ---- the scalar port's batches: src/fx_scalar_loops.h ----------------- */
 #define FX_TIER fx
 #define FX_SCALAR_VAR facet_fx_port_scalar
+#define FX_TIER_PRECISE 1
 #include "fx_scalar_loops.h"
