@@ -297,6 +297,128 @@ FXF_INLINE fxv_u32 fxf_fast_ggx_aniso_d(fxv_i32 noh, fxv_i32 toh, fxv_i32 boh, f
                     FACET_FX_MAX_D);
 }
 
+/* ---- log2 and 2^f on integers (the GTR terms) -------------------------------
+ * log2 m for a normalised mantissa x = m 2^31, m in [1, 2): Q31 in [0, 2^31].
+ *   i = the 4 bits below the leading one; r_i = ceil(2^35 / (16 + i)) ~
+ *   2^31 / (1 + i/16) [2^30 .. 2^31]; (1 + u) 2^30 = hi(x, r_i), u in [0,
+ *   1/16 + 2^-30] (r_i rounded up: never below 1, exact product >= 2^62);
+ *   log2 m = L_i + log2(1 + u), L_i = round(-log2(r_i / 2^31) 2^31) the
+ *   table of the rounded r_i (so r_i's rounding cancels);
+ *   log2(1 + u) = u (c1 - u (c2 - u (c3 - u (c4 - u c5)))), c_k = 1/(k ln 2)
+ *   Q31 [c1 < 2^31.53]: the alternating Taylor series, every bracket
+ *   positive (u <= 1/16), truncated after u^5: error <= u^6 / (6 ln 2) <=
+ *   2^-26; with U = u 2^35 [< 2^31 + 2^6], hi(U, p) >> 3 = u p Q31, the
+ *   truncations 5 x 2^-31.  Total |error| <= 2^-25.5 (+ L_i's 2^-32). */
+static const uint32_t fxf_log2_rcp_tab[16] = {
+    2147483648u, 2021161081u, 1908874354u, 1808407283u, 1717986919u, 1636178018u, 1561806290u, 1493901669u,
+    1431655766u, 1374389535u, 1321528399u, 1272582903u, 1227133514u, 1184818565u, 1145324613u, 1108378658u,
+};
+static const uint32_t fxf_log2_tab[16] = {
+    0u, 187825021u, 364911162u, 532420280u, 691335319u, 842495249u, 986621887u, 1124340738u,
+    1256197404u, 1382670639u, 1504182841u, 1621108566u, 1733781491u, 1842500156u, 1947532723u, 2049120971u,
+};
+#define FXW_LOG2_C1 3098164009u /* round(2^31 / (k ln 2)), k = 1..5 */
+#define FXW_LOG2_C2 1549082005u
+#define FXW_LOG2_C3 1032721336u
+#define FXW_LOG2_C4 774541002u
+#define FXW_LOG2_C5 619632802u
+FXF_INLINE fxv_u32 fxw_log2m31(fxv_u32 x)
+{
+    fxv_u32 i = fxv_and(fxv_shr(x, 27), fxv_k32(15));
+    fxv_u32 uu = fxv_shl(fxv_sub32(fxw_mulhi(x, fxv_lut(fxf_log2_rcp_tab, i)), fxv_k32(1u << 30)), 5);
+    fxv_u32 p = fxv_sub32(fxv_k32(FXW_LOG2_C4), fxv_shr(fxw_mulhi(uu, fxv_k32(FXW_LOG2_C5)), 3));
+    p = fxv_sub32(fxv_k32(FXW_LOG2_C3), fxv_shr(fxw_mulhi(uu, p), 3));
+    p = fxv_sub32(fxv_k32(FXW_LOG2_C2), fxv_shr(fxw_mulhi(uu, p), 3));
+    p = fxv_sub32(fxv_k32(FXW_LOG2_C1), fxv_shr(fxw_mulhi(uu, p), 3));
+    return fxv_add32(fxv_lut(fxf_log2_tab, i), fxv_shr(fxw_mulhi(uu, p), 3));
+}
+
+/* 2^f for f = F 2^-32 in [0, 1): Q30 in [2^30 - 2^7, 2^31].  Degree 5,
+ * interpolated at the Chebyshev nodes of [0, 1] (relative error 2^-23.2;
+ * every coefficient positive: Horner on unsigned words), p = c_k + hi(F,
+ * p) Q30 [p <= 2^31], truncations 5 x 2^-30: total <= 2^-22.9 relative. */
+#define FXW_EXP2_C0 1073741715u
+#define FXW_EXP2_C1 744268966u
+#define FXW_EXP2_C2 257850314u
+#define FXW_EXP2_C3 59979580u
+#define FXW_EXP2_C4 9609550u
+#define FXW_EXP2_C5 2033403u
+FXF_INLINE fxv_u32 fxw_exp2f30(fxv_u32 f)
+{
+    fxv_u32 p = fxv_add32(fxv_k32(FXW_EXP2_C4), fxw_mulhi(f, fxv_k32(FXW_EXP2_C5)));
+    p = fxv_add32(fxv_k32(FXW_EXP2_C3), fxw_mulhi(f, p));
+    p = fxv_add32(fxv_k32(FXW_EXP2_C2), fxw_mulhi(f, p));
+    p = fxv_add32(fxv_k32(FXW_EXP2_C1), fxw_mulhi(f, p));
+    return fxv_add32(fxv_k32(FXW_EXP2_C0), fxw_mulhi(f, p));
+}
+
+/* g(m) = m / (1 - 2^-m) (g(0) = 1/ln 2) as a fraction *n / *d, n Q26, d
+ * Q31, for m = M 2^-26 in [0, 60]:
+ *   m >= 1/2: n = M [<= 60 2^26 < 2^32], d = (1 - 2^-m) 2^31 [>= 0.29
+ *     2^31]: m = k + f, 2^-m 2^31 = 2^(1 - f) 2^30 >> k with 1 - f read
+ *     as ~F (2^-32 low: no 2^32), k clamped to 31 (2^-m 2^31 <= 1 there);
+ *   m < 1/2: n = (1/ln 2)(1 + x/2 + x^2/12 - x^4/720) Q26, x = m ln 2
+ *     (the series of x / (1 - e^-x), next term x^6/30240 < 2^-24), d = 2^31:
+ *     no cancellation in 1 - 2^-m near 0.  Terms: mq = m Q32 [< 2^31],
+ *     m^2, m^4 Q32 by hi. */
+#define FXW_INV_LN2_26 96817625u /* round(2^26 / ln 2) */
+#define FXW_LN2_12     248087039u /* round(ln 2 / 12 2^32) */
+#define FXW_LN2C_720   1986569u   /* round((ln 2)^3 / 720 2^32) */
+FXF_INLINE void fxw_gtr_g(fxv_u32 m, fxv_u32 *n, fxv_u32 *d)
+{
+    fxv_u32 mq = fxv_shl(fxv_min(m, fxv_k32((1u << 25) - 1)), 6);
+    fxv_u32 m2 = fxw_mulhi(mq, mq), m4 = fxw_mulhi(m2, m2);
+    fxv_u32 ns = fxv_sub32(fxv_add32(fxv_add32(fxv_k32(FXW_INV_LN2_26), fxv_shr(m, 1)),
+                                     fxv_shr(fxw_mulhi(m2, fxv_k32(FXW_LN2_12)), 6)),
+                           fxv_shr(fxw_mulhi(m4, fxv_k32(FXW_LN2C_720)), 6));
+    fxv_u32 k = fxv_min(fxv_shr(m, 26), fxv_k32(31));
+    fxv_u32 e = fxv_shrv(fxw_exp2f30(fxv_not(fxv_shl(m, 6))), k); /* 2^-m 2^31 */
+    fxv_u32 small = fxv_lt(m, fxv_k32(1u << 25));
+    *n = fxv_sel(small, ns, m);
+    *d = fxv_sel(small, fxv_k32(1u << 31), fxv_sub32(fxv_k32(1u << 31), fxv_min(e, fxv_k32(1u << 31))));
+}
+
+/* ---- GTR D -------------------------------------------------------------------
+ * D = c / d^gamma (facet.h), with L = log2 alpha^2 <= 0, M = (1 - gamma) L
+ * and g above: c = 2^-max(M, 0) g(|M|) / (pi g(|L|)), so
+ *   D = 2^Z g(|M|) / (pi g(|L|)),  Z = -gamma log2 d - max(M, 0) in [-60, 20]
+ * (-log2 d <= |L|: d >= alpha^2).  Stages:
+ *   d60 exact as ggx_d's [2^40 .. 2^60], normalised (fxw_norm_hl: e in
+ *     [3, 23]); -log2 d Q26 = (e - 3) 2^26 - log2m >> 5 [<= 20 2^26];
+ *   |L| Q26 = 2 (clz(A) - 16) 2^26 - log2m(A normalised) >> 4 [<= 20 2^26];
+ *   |M| Q26 = |G - 2^15| |L| >> 15 (64-bit product < 2^47) [<= 60 2^26];
+ *   Z + 64 in Q24 = (G (-log2 d)) >> 17 + 2^30 - (gamma > 1 ? |M| >> 2 : 0)
+ *     [in [4, 84] 2^24: < 2^31]; zi its integer part, F = its fraction Q32;
+ *   numerator n_M d_L (Q57, < 2^63), denominator d_M n_L, their top words
+ *     tn, td (fxw_top); nn = hi(2^F Q30, tn) [>= 2^29], dd = hi(td, pi 2^30);
+ *   D 2^13 = nn / dd 2^(zi + ed - en - 51), one fxr_div (b = 146 - zi - ed
+ *     + en >= 32: no wrap).
+ * gamma = 2 gives GGX, gamma = 1 GTR1 (the series at m = 0), alpha = 1
+ * and gamma = 0 give 1/pi, with no special case. */
+FXF_INLINE fxv_u32 fxf_fast_gtr_d(fxv_i32 noh, fxv_i32 alpha, fxv_i32 gamma)
+{
+    fxv_u32 n = fxf_unit(noh), a = fxf_alpha(alpha), g = fxv_clamp(gamma, 0, 4 * FACET_FX_ONE);
+    fxv_u32 na = fxv_mul32(n, a), e, ka, nld, la, gm, ma, z, nM, dM, nL, dL, tn, td, en, ed, nn, dd;
+    fxv_u64 d60 = fxv_add64(fxv_mulw(fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), n), fxv_add32(fxv_k32(FXF_ONE), n)),
+                                     fxv_k32(1u << 30)),
+                            fxv_mulw(na, na));
+    fxv_u32 dt = fxw_norm_hl(fxv_hi(d60), fxv_lo(d60), &e);
+    nld = fxv_sub32(fxv_shl(fxv_sub32(e, fxv_k32(3)), 26), fxv_shr(fxw_log2m31(dt), 5));
+    ka = fxv_clz(a);
+    la = fxv_sub32(fxv_shl(fxv_sub32(ka, fxv_k32(16)), 27), fxv_shr(fxw_log2m31(fxv_shlv(a, ka)), 4));
+    gm = fxv_sub32(fxv_max(g, fxv_k32(FXF_ONE)), fxv_min(g, fxv_k32(FXF_ONE))); /* |gamma - 1| Q15 */
+    ma = fxv_narrow(fxv_shr64(fxv_mulw(gm, la), 15));
+    z = fxv_sub32(fxv_add32(fxv_narrow(fxv_shr64(fxv_mulw(g, nld), 17)), fxv_k32(1u << 30)),
+                  fxv_sel(fxv_lt(fxv_k32(FXF_ONE), g), fxv_shr(ma, 2), fxv_k32(0)));
+    fxw_gtr_g(ma, &nM, &dM);
+    fxw_gtr_g(la, &nL, &dL);
+    tn = fxw_top(fxv_mulw(nM, dL), &en);
+    td = fxw_top(fxv_mulw(dM, nL), &ed);
+    nn = fxw_mulhi(fxw_exp2f30(fxv_shl(z, 8)), tn);
+    dd = fxw_mulhi(td, fxv_k32(FXF_PI_30));
+    return fxr_divb(nn, dd, fxv_sub32(fxv_add32(fxv_k32(146), en), fxv_add32(fxv_shr(z, 24), ed)), FACET_FX_MAX_D);
+}
+
 /* ---- Smith, exact ------------------------------------------------------------
  * r(x) = sqrt(w), w = a^2 (1 - x)(1 + x) + x^2: w60 = A^2 (2^15 - X)(2^15 + X)
  * + X^2 2^30 Q60 exact [<= 2^60, >= a^2 2^60 >= 2^40]; its top 32 bits

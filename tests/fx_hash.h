@@ -93,6 +93,7 @@ static const struct { const char *name; uint64_t hash; } fxh_pinned_fast[] = {
     { "fresnel_schlick", 0x8d3297d639d8cc3eull },
     { "ggx_d", 0x20b277145c20eb43ull },
     { "ggx_aniso_d", 0x2f1382a7d7a98b0cull },
+    { "gtr_d", 0x188655fdf2466217ull },
     { "smith_g1", 0xa843900217b2a43dull },
     { "smith_g2", 0xf348f9bb73e67c90ull },
     { "smith_g2_uncorrelated", 0x99026cfae08adca8ull },

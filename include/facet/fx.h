@@ -439,7 +439,8 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
 #define FACET_FX_FAST_ERR_LOH_FROM_DOTS         0.490
 #define FACET_FX_FAST_ERR_FRESNEL_SCHLICK       0.501
 #define FACET_FX_FAST_ERR_GGX_D                 0.514
-#define FACET_FX_FAST_ERR_GGX_ANISO_D           1.0
+#define FACET_FX_FAST_ERR_GGX_ANISO_D           0.52
+#define FACET_FX_FAST_ERR_GTR_D                 0.52
 #define FACET_FX_FAST_ERR_SMITH_G1              0.536
 #define FACET_FX_FAST_ERR_SMITH_G2              0.536
 #define FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED 0.544
@@ -471,6 +472,32 @@ uint32_t facet_ggx_d_fx_fast(int32_t noh, int32_t alpha);
  * product; one 1/x.
  * Error: FACET_FX_FAST_ERR_GGX_ANISO_D.  Cost: TBD. */
 uint32_t facet_ggx_aniso_d_fx_fast(int32_t noh, int32_t toh, int32_t boh, int32_t alpha_x, int32_t alpha_y);
+/* GTR D = c / d^gamma (facet.h), the fast tier only (kernels.def fx_code
+ * fast); noh [0, 1], alpha [2^-10, 1], gamma [0, 4] (raw Q15 [0, 4 2^15],
+ * the GAMMA domain; outside clamps).  Evaluated as
+ *   D = 2^Z g(|M|) / (pi g(|L|)),  g(m) = m / (1 - 2^-m),  L = log2 alpha^2,
+ *   M = (1 - gamma) L,  Z = -gamma log2 d - max(M, 0) in [-60, 20],
+ * d = (1 - n)(1 + n) + (n alpha)^2 exact in 64 bits (as ggx_d), which is
+ * c = E(L) / (pi E(M)) of facet.h with its limits (gamma = 1: g(0) = 1/ln 2
+ * by a series; alpha = 1 and gamma = 0: 1/pi) and no special case.
+ * Integer log2 and 2^f (src/fx_fast_body.h): log2 = clz (the exponent) +
+ * a 16-entry reciprocal/log table and a degree-5 series on the mantissa
+ * (|error| <= 2^-25.5); 2^f = a degree-5 polynomial on f in [0, 1)
+ * (Chebyshev nodes, <= 2^-22.9 relative with its truncations); 2^Z's
+ * integer part is the final shift.  Formats: -log2 d, |L|, |M| Q26 [<= 60
+ * 2^26 < 2^32]; gamma (-log2 d) Q41 in 64 bits [< 2^47.3]; Z + 64 Q24 [4 ..
+ * 84: < 2^31]; g's n Q26, d Q31, their cross products Q57 [< 2^63].
+ * Output UQ19.13 as ggx_d.  Range: the peak D(1) = c / alpha^(2 gamma) ~
+ * (gamma - 1) / (pi alpha^2) for gamma > 1; it fits 2^19 for every alpha
+ * where gamma <= 2.57 (gamma = 2: 2^20/pi as GGX; gamma = 1: 24076.5;
+ * gamma < 1 smaller still: c <= 1/pi, d^-gamma <= alpha^-2gamma), and above
+ * gamma = 2.571 the peak saturates at FACET_FX_MAX_D for alpha below
+ * 2^-9.99 (gamma 2.6) .. 2^-9.53 (gamma = 4, peak 1.0e6), near N.H = 1
+ * only.  The tail falls below the LSB (2^-13) as ggx_d's: absolute error.
+ * Error: FACET_FX_FAST_ERR_GTR_D (measured max 0.514, relative 2^-15.1
+ * above 2^15 LSB: the reciprocal's 2^-16 and the exponent's 2^-24 times ln 2
+ * |Z|).  Cost: TBD. */
+uint32_t facet_gtr_d_fx_fast(int32_t noh, int32_t alpha, int32_t gamma);
 /* Smith G1 (exact GGX) = 2n / (n + sqrt(a^2 + (1 - a^2) n^2)), Q15.
  * w exact in 64 bits, one sqrt, one 1/x.
  * Error: FACET_FX_FAST_ERR_SMITH_G1.  Cost: 91 / 229 (198 / 1063). */
@@ -536,6 +563,8 @@ void facet_ggx_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t 
 void facet_ggx_aniso_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *toh,
                                      const int32_t *boh, const int32_t *alpha_x,
                                      const int32_t *alpha_y, size_t n);
+void facet_gtr_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha,
+                               const int32_t *gamma, size_t n);
 void facet_smith_g1_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
 void facet_smith_g2_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
                              const int32_t *alpha, size_t n);
