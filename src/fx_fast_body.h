@@ -421,6 +421,130 @@ FXF_INLINE fxv_u32 fxf_fast_gtr_d(fxv_i32 noh, fxv_i32 alpha, fxv_i32 gamma)
     return fxr_divb(nn, dd, fxv_sub32(fxv_add32(fxv_k32(146), en), fxv_add32(fxv_shr(z, 24), ed)), FACET_FX_MAX_D);
 }
 
+/* ---- Blinn-Phong and Beckmann D ---------------------------------------------
+ * Both are 2^-y times a prefactor whose peak is 1/(pi alpha^2) <= 2^20/pi,
+ * ggx_d's: UQ19.13 holds them.  The exponent y must be good to ~2^-20
+ * absolute (2^-y's relative error is ln 2 dy) wherever D is above the LSB,
+ * which is y < 64 (beyond, D 2^13 < 2^-29: 0): y is formed from exact
+ * products and reciprocals refined to 2^-30, with log2 keeping its
+ * relative precision near N.H = 1, then held in Q24 saturated at 128. */
+
+/* ~ 2^63 / m for m in [2^31, 2^32): the table reciprocal (2^-16) and one
+ * Newton step r (1 + (2^31 - t) / 2^31), t = hi(m, r) ~ 2^31 (one of the
+ * two corrections is 0): relative error <= 2^-29.5; result < 2^32 (at m =
+ * 2^31 the floor keeps it at 2^32 - 1). */
+FXF_INLINE fxv_u32 fxw_rcp32(fxv_u32 m)
+{
+    fxv_u32 r = fxv_shl(fxf_rcp20(m), 12), t = fxw_mulhi(m, r), h = fxv_k32(1u << 31);
+    fxv_u32 up = fxw_mulhi(r, fxv_shl(fxv_sub32(h, fxv_min(t, h)), 1));
+    fxv_u32 dn = fxw_mulhi(r, fxv_shl(fxv_sub32(fxv_max(t, h), h), 1));
+    return fxv_sub32(fxv_add32(r, up), dn);
+}
+
+/* round(v 2^(sb - 256)), ties up, for v < 2^31.5 and sb in [0, 2^10):
+ * a left shift (sb > 256; saturating at max) or a rounded right shift (0
+ * past 33) [every shift count in [0, 31]]. */
+FXF_INLINE fxv_u32 fxw_scale(fxv_u32 v, fxv_u32 sb, uint32_t max)
+{
+    fxv_u32 l = fxv_min(fxv_sub32(fxv_max(sb, fxv_k32(256)), fxv_k32(256)), fxv_k32(31));
+    fxv_u32 r = fxv_min(fxv_sub32(fxv_k32(256), fxv_min(sb, fxv_k32(256))), fxv_k32(33));
+    fxv_u32 rr = fxv_shr(fxv_add32(fxv_shrv(v, fxv_min(fxv_sub32(fxv_max(r, fxv_k32(1)), fxv_k32(1)), fxv_k32(31))),
+                                   fxv_k32(1)), 1);
+    fxv_u32 lv = fxv_sel(fxv_lt(fxv_shrv(fxv_k32(max), l), v), fxv_k32(max), fxv_shlv(v, l));
+    rr = fxv_sel(fxv_lt(r, fxv_k32(33)), rr, fxv_k32(0));
+    return fxv_sel(fxv_lt(sb, fxv_k32(256)), rr, lv);
+}
+
+/* 2^-y for y = y24 2^-24 in [0, 128]: 2^-(yi + 1) 2^(1 - f), 1 - f read as
+ * ~F (2^-32 low): returns 2^(1 - f) Q30 [2^30 .. 2^31], *yi the integer part */
+FXF_INLINE fxv_u32 fxw_exp2neg(fxv_u32 y24, fxv_u32 *yi)
+{
+    *yi = fxv_shr(y24, 24);
+    return fxw_exp2f30(fxv_not(fxv_shl(y24, 8)));
+}
+
+#define FXW_INV_PI_32 1367130551u /* round(2^32 / pi) */
+
+/* Blinn-Phong D = n^p / (pi alpha^2), p = 2 (1 - alpha^2) / alpha^2:
+ *   1/alpha^2 = rr 2^(ka - 33): A^2 Q30 exact, normalised (ka = clz), rr =
+ *     fxw_rcp32;
+ *   p = pq 2^(ka - 31 - kk): k2 = 2 (2^30 - A^2) Q30 exact [<= 2^31],
+ *     normalised by kk, pq = hi(k2 2^kk, rr) [>= 2^30, or 0 at alpha = 1];
+ *   lambda = -log2 n, relative precision everywhere: x = 1 - n = X 2^-15
+ *     exact; x < 1/32: (x + x^2/2 + ... + x^5/5) / ln 2 (Horner with
+ *     xq = X 2^17 Q32, the c_k of log2; relative error x^5/6 < 2^-27),
+ *     lambda = X ps 2^-46 (64-bit, exact product); else lambda = c - 16 -
+ *     log2 m (c = clz N, N 2^c = m 2^31), Q26 [<= 15 2^26] with absolute
+ *     error 2^-25.5, relative 2^-21 (lambda >= 0.046 there), as X ps
+ *     2^-46's scale (a product by 2^20); the two 64-bit values' halves
+ *     selected, normalised (fxw_norm_hl): lambda = lt 2^(-14 - el);
+ *   y = p lambda = yq 2^(ka - 13 - kk - el), yq = hi(pq, lt); Q24 by a
+ *     right shift, saturated at 128 where it would be a left one (y >= 64);
+ *   D 2^13 = 2^-y rr 2^(ka - 33) 2^13 / pi = v 2^(ka - yi - 19),
+ *     v = hi(hi(2^(1 - f) Q30, rr), 2^32/pi) [< 2^29.4]: fxw_scale.
+ * N.H = 0 gives 0 (n^p = 0) for alpha < 1; alpha = 1 is 1/pi everywhere. */
+FXF_INLINE fxv_u32 fxf_fast_blinn_phong_d(fxv_i32 noh, fxv_i32 alpha)
+{
+    fxv_u32 n = fxf_unit(noh), a = fxf_alpha(alpha), a2 = fxv_mul32(a, a);
+    fxv_u32 ka = fxv_clz(a2), rr = fxw_rcp32(fxv_shlv(a2, ka));
+    fxv_u32 k2 = fxv_shl(fxv_sub32(fxv_k32(1u << 30), a2), 1), kk = fxv_min(fxv_clz(k2), fxv_k32(31));
+    fxv_u32 pq = fxw_mulhi(fxv_shlv(k2, kk), rr);
+    fxv_u32 x = fxv_sub32(fxv_k32(FXF_ONE), n), xq = fxv_shl(fxv_min(x, fxv_k32(1023)), 17);
+    fxv_u32 ps = fxv_add32(fxv_k32(FXW_LOG2_C4), fxw_mulhi(xq, fxv_k32(FXW_LOG2_C5)));
+    fxv_u32 c = fxv_clz(fxv_max(n, fxv_k32(1))), l26, el, lt, sh, yq, y24, yi, e2, v;
+    fxv_u64 ls, ll;
+    fxv_u32 small = fxv_lt(x, fxv_k32(1024));
+    ps = fxv_add32(fxv_k32(FXW_LOG2_C3), fxw_mulhi(xq, ps));
+    ps = fxv_add32(fxv_k32(FXW_LOG2_C2), fxw_mulhi(xq, ps));
+    ps = fxv_add32(fxv_k32(FXW_LOG2_C1), fxw_mulhi(xq, ps));
+    ls = fxv_mulw(x, ps);
+    l26 = fxv_sub32(fxv_shl(fxv_sub32(c, fxv_k32(16)), 26), fxv_shr(fxw_log2m31(fxv_shlv(fxv_max(n, fxv_k32(1)), c)), 5));
+    ll = fxv_mulw(l26, fxv_k32(1u << 20));
+    lt = fxw_norm_hl(fxv_sel(small, fxv_hi(ls), fxv_hi(ll)), fxv_sel(small, fxv_lo(ls), fxv_lo(ll)), &el);
+    yq = fxw_mulhi(pq, lt);
+    sh = fxv_sub32(fxv_add32(fxv_add32(kk, el), fxv_k32(21)), ka); /* the right shift + 32 */
+    y24 = fxv_sel(fxv_lt(sh, fxv_k32(32)), fxv_k32(1u << 31),
+                  fxv_shrv(yq, fxv_min(fxv_sub32(fxv_max(sh, fxv_k32(32)), fxv_k32(32)), fxv_k32(31))));
+    y24 = fxv_min(y24, fxv_k32(1u << 31));
+    e2 = fxw_exp2neg(y24, &yi);
+    v = fxw_mulhi(fxw_mulhi(e2, rr), fxv_k32(FXW_INV_PI_32));
+    v = fxw_scale(fxv_shl(v, 2), fxv_sub32(fxv_add32(fxv_k32(256 - 21), ka), yi), FACET_FX_MAX_D);
+    return fxv_sel(fxv_and(fxv_lt(n, fxv_k32(1)), fxv_lt(a2, fxv_k32(1u << 30))), fxv_k32(0), v);
+}
+
+/* Beckmann D = 2^-z / (pi alpha^2 n^4), z = log2(e) (1 - n^2) / (n alpha)^2:
+ *   1/(n alpha) = rq 2^(kn - 33): N A Q30 exact [>= 32 for N >= 1],
+ *     normalised (kn = clz), rq = fxw_rcp32; r = 1/(n alpha)^2 = r2
+ *     2^(2 kn - 34), r2 = hi(rq, rq) [>= 2^30];
+ *   z = zq 2^(2 kn - kw - 31): W = (2^15 - N)(2^15 + N) Q30 exact,
+ *     normalised by kw, zq = hi(hi(W 2^kw, r2), log2(e) 2^31) [>= 2^28];
+ *     Q24 by a right shift, saturated at 128 where it would be a left one
+ *     (z >= 64: D 2^13 < 2^(13 + 21 - 64), the prefactor being <= 2^21
+ *     wherever z >= 64); W = 0 (N.H = 1) gives z = 0;
+ *   D 2^13 = 2^-z alpha^2 r^2 2^13 / pi: alpha^2 = am 2^(-ka - 30) (A^2
+ *     normalised), r^2 = r4 2^(4 kn - 36), r4 = hi(r2, r2) [>= 2^28];
+ *     v = hi(hi(hi(2^(1 - f) Q30, am), r4), 2^32/pi) [< 2^30.4]:
+ *     D 2^13 = v 2^(4 kn - zi - ka - 20) (<= 2^31.35: the shift is at most
+ *     8 left, where v is small), fxw_scale.
+ * N.H = 0 gives 0. */
+FXF_INLINE fxv_u32 fxf_fast_beckmann_d(fxv_i32 noh, fxv_i32 alpha)
+{
+    fxv_u32 n = fxf_unit(noh), a = fxf_alpha(alpha), a2 = fxv_mul32(a, a);
+    fxv_u32 na = fxv_mul32(fxv_max(n, fxv_k32(1)), a), kn = fxv_clz(na), rq = fxw_rcp32(fxv_shlv(na, kn));
+    fxv_u32 r2 = fxw_mulhi(rq, rq), r4 = fxw_mulhi(r2, r2);
+    fxv_u32 w = fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), n), fxv_add32(fxv_k32(FXF_ONE), n));
+    fxv_u32 kw = fxv_min(fxv_clz(w), fxv_k32(31)), ka = fxv_clz(a2), zq, sh, z24, zi, e2, v;
+    zq = fxw_mulhi(fxw_mulhi(fxv_shlv(w, kw), r2), fxv_k32(FXW_LOG2_C1));
+    sh = fxv_sub32(fxv_add32(kw, fxv_k32(7 + 64)), fxv_shl(kn, 1)); /* the right shift + 64 */
+    z24 = fxv_sel(fxv_lt(sh, fxv_k32(64)), fxv_k32(1u << 31),
+                  fxv_shrv(zq, fxv_min(fxv_sub32(fxv_max(sh, fxv_k32(64)), fxv_k32(64)), fxv_k32(31))));
+    z24 = fxv_sel(fxv_lt(w, fxv_k32(1)), fxv_k32(0), fxv_min(z24, fxv_k32(1u << 31)));
+    e2 = fxw_exp2neg(z24, &zi);
+    v = fxw_mulhi(fxw_mulhi(fxw_mulhi(e2, fxv_shlv(a2, ka)), r4), fxv_k32(FXW_INV_PI_32));
+    v = fxw_scale(v, fxv_sub32(fxv_add32(fxv_k32(256 - 20), fxv_shl(kn, 2)), fxv_add32(zi, ka)), FACET_FX_MAX_D);
+    return fxv_sel(fxv_lt(n, fxv_k32(1)), fxv_k32(0), v);
+}
+
 /* ---- Smith, exact ------------------------------------------------------------
  * r(x) = sqrt(w), w = a^2 (1 - x)(1 + x) + x^2: w60 = A^2 (2^15 - X)(2^15 + X)
  * + X^2 2^30 Q60 exact [<= 2^60, >= a^2 2^60 >= 2^40]; its top 32 bits

@@ -92,6 +92,8 @@ static const struct { const char *name; uint64_t hash; } fxh_pinned_fast[] = {
     { "loh_from_dots", 0x5af0098ffbb4d64aull },
     { "fresnel_schlick", 0x8d3297d639d8cc3eull },
     { "ggx_d", 0x20b277145c20eb43ull },
+    { "blinn_phong_d", 0xb29166f1c3ccac85ull },
+    { "beckmann_d", 0xa202c036d64a4faaull },
     { "ggx_aniso_d", 0x2f1382a7d7a98b0cull },
     { "gtr_d", 0x188655fdf2466217ull },
     { "smith_g1", 0xa843900217b2a43dull },

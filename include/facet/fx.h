@@ -439,6 +439,8 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
 #define FACET_FX_FAST_ERR_LOH_FROM_DOTS         0.490
 #define FACET_FX_FAST_ERR_FRESNEL_SCHLICK       0.501
 #define FACET_FX_FAST_ERR_GGX_D                 0.514
+#define FACET_FX_FAST_ERR_BLINN_PHONG_D         0.51
+#define FACET_FX_FAST_ERR_BECKMANN_D            0.51
 #define FACET_FX_FAST_ERR_GGX_ANISO_D           0.52
 #define FACET_FX_FAST_ERR_GTR_D                 0.52
 #define FACET_FX_FAST_ERR_SMITH_G1              0.536
@@ -466,6 +468,41 @@ int32_t facet_fresnel_schlick_fx_fast(int32_t f0, int32_t cos_theta);
  * 64 bits; UQ19.13, max 2^20/pi.  One 1/x.
  * Error: FACET_FX_FAST_ERR_GGX_D.  Cost: 73 / 217 (109 / 652). */
 uint32_t facet_ggx_d_fx_fast(int32_t noh, int32_t alpha);
+/* The exponential D terms, the fast tier only (kernels.def fx_code fast).
+ * Format argument: each is 2^-y times a prefactor whose maximum over N.H
+ * is 1/(pi alpha^2) <= 2^20/pi (Blinn-Phong at N.H = 1; Beckmann at N.H = 1
+ * for alpha <= 2^-0.5, else 4 alpha^2 e^(1/alpha^2 - 2)/pi <= 0.47), the
+ * peak of ggx_d: UQ19.13 holds it with 13 fraction bits, and the tail that
+ * falls below its LSB (2^-13) is an absolute error, as ggx_d's tail (D
+ * below 2^-14 rounds to 0; the oracle does too).  What it takes is an
+ * exponent good to ~2^-20 absolute wherever D is above the LSB (y < 64):
+ * exact products, reciprocals refined to 2^-29.5 (table + one Newton
+ * step), -log2 N.H by a series in 1 - N.H near 1 (relative precision kept:
+ * p reaches 2^21 there) and by the integer log2 elsewhere, y held in Q24
+ * (saturated at 128: D 2^13 < 2^-29 beyond 64), 2^-y by the degree-5 2^f
+ * and a final rounded shift (src/fx_fast_body.h has each bound).
+ * Blinn-Phong D = N.H^p / (pi alpha^2), p = 2 (1 - alpha^2) / alpha^2;
+ * noh [0, 1], alpha [2^-10, 1]; UQ19.13, max 2^20/pi.  N.H = 0 gives 0
+ * (alpha < 1); alpha = 1 gives 1/pi everywhere (facet.h).  Intermediates:
+ * A^2, 2 (2^15 - A)(2^15 + A) Q30 exact; 1/alpha^2 and p as normalised
+ * 32-bit mantissas with clz exponents; -log2 N.H: X = 2^15 - N exact,
+ * X (series) in 64 bits (< 2^42) or Q26 (<= 15 2^26) times 2^20, one
+ * 64-bit scale, normalised; y Q24 (<= 2^31).
+ * Error: FACET_FX_FAST_ERR_BLINN_PHONG_D (measured 0.5009 over every N.H
+ * at 560 alphas; 0.5000 in the test; relative 2^-16 above 2^15 LSB).
+ * Cost: TBD. */
+uint32_t facet_blinn_phong_d_fx_fast(int32_t noh, int32_t alpha);
+/* Beckmann D = exp(-tan^2 / alpha^2) / (pi alpha^2 N.H^4) (facet.h) as
+ * 2^-z alpha^2 r^2 / pi, r = 1/(N.H alpha)^2, z = log2(e) (1 - N.H)(1 + N.H) r;
+ * noh [0, 1], alpha [2^-10, 1]; UQ19.13, max 2^20/pi.  N.H = 0 gives 0.
+ * Intermediates: N A, (2^15 - N)(2^15 + N), A^2 Q30 exact; 1/(N.H alpha)
+ * refined to 2^-29.5, its square and fourth power as 32-bit mantissas with
+ * clz exponents; z Q24 (saturated at 128 where z >= 64: D 2^13 <
+ * 2^-29 there, the prefactor being <= 2^21 wherever z >= 64).
+ * Error: FACET_FX_FAST_ERR_BECKMANN_D (measured 0.5001 over every N.H at
+ * 560 alphas; 0.5000 in the test; relative 2^-16 above 2^15 LSB).
+ * Cost: TBD. */
+uint32_t facet_beckmann_d_fx_fast(int32_t noh, int32_t alpha);
 /* Anisotropic GGX D, UQ19.13 (as facet_ggx_aniso_d_fx): K in Q61 in 64 bits
  * (the (N.H ax ay)^2 term truncated, <= 2^-20 relative), its floor by an
  * exact 64-bit max, normalised by clz; (ax ay)^3 from the normalised
@@ -560,6 +597,8 @@ void facet_loh_from_dots_fx_fast_batch(int32_t *out, const int32_t *lov, size_t 
 void facet_fresnel_schlick_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *cos_theta,
                                     size_t n);
 void facet_ggx_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
+void facet_blinn_phong_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
+void facet_beckmann_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
 void facet_ggx_aniso_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *toh,
                                      const int32_t *boh, const int32_t *alpha_x,
                                      const int32_t *alpha_y, size_t n);
