@@ -606,6 +606,154 @@ FXF_INLINE fxv_u32 fxf_fast_smith_g2_uncorrelated(fxv_i32 nol, fxv_i32 nov, fxv_
     return fxr_divb(fxv_mul32(nl, nv), pt, fxv_sub32(fxv_k32(80), e), FXF_ONE);
 }
 
+/* ---- Smith G1 for GTR (Dimov) ------------------------------------------------
+ * Q15 output, so every stage is held to an absolute error (~2^-20 in Q30).
+ * The five closed forms of facet.h divided through by powers of W
+ * (smith_g1's root) are functions of nu = n / W in [0, 1] and alpha^2, O(1)
+ * at every alpha (the undivided forms go as alpha^4 at small n):
+ *   y0 = 2n / (1 + n)
+ *   y1 = nu D / (nu D + e s2 T), D = (W + 1)(n + W), T = 1 + nu (1 - R(u)),
+ *        u = (1 - alpha^2) s2 / D, e = (alpha^2 - 1) / ln alpha^2
+ *   y2 = 2 nu / (1 + nu)
+ *   y3 = 4 b nu / ((3 alpha^2 + 1)(1 - nu^2) + 2 b nu (1 + nu)), b = 1 + alpha^2
+ *   y4 = 2 nu / (nu (1 + nu^3) + 3 / (8 K) (1 - nu^2)(P5 (1 - nu^2) + 4 P2 nu^2)),
+ *        K = alpha^4 + alpha^2 + 1 (facet.h's K / 8), P5, P2 as facet.h
+ * (W^2 = n^2 + alpha^2 s2, so alpha^2 s2 / W^2 = 1 - nu^2).  The y are
+ * non-decreasing in gamma (checked against the oracle on a 401 x 4001 grid
+ * of (alpha, N.V): min difference -2e-16), so the monotone cubic works on
+ * differences d_j >= 0 (formed as max(y_j+1, y_j) - y_j) and no stage is
+ * signed. */
+
+/* num / den in Q30 for values with num / den < 2 (num, den < 2^32, den
+ * >= 1): both normalised, one refined reciprocal (fxw_rcp32): q = hi(num
+ * 2^kn, rcp) in [2^30, 2^32), the quotient q 2^(kd - kn - 1); relative
+ * error <= 2^-29, truncated.  num = 0 gives 0. */
+FXF_INLINE fxv_u32 fxw_div30(fxv_u32 num, fxv_u32 den)
+{
+    fxv_u32 kn = fxv_min(fxv_clz(num), fxv_k32(31)), kd = fxv_clz(den);
+    fxv_u32 q = fxw_mulhi(fxv_shlv(num, kn), fxw_rcp32(fxv_shlv(den, kd)));
+    fxv_u32 sb = fxv_sub32(fxv_add32(kn, fxv_k32(33)), kd); /* the right shift + 32 */
+    return fxv_sel(fxv_lt(sb, fxv_k32(32)), fxv_k32(1u << 31),
+                   fxv_shrv(q, fxv_min(fxv_sub32(fxv_max(sb, fxv_k32(32)), fxv_k32(32)), fxv_k32(31))));
+}
+
+/* x y for Q30 x, y <= 2^31: Q30 [x y < 2^32 there] */
+FXF_INLINE fxv_u32 fxw_mul30(fxv_u32 x, fxv_u32 y) { return fxw_mulhi(fxv_shl(x, 1), fxv_shl(y, 1)); }
+
+#define FXW_LN2_32   2977044472u /* round(ln 2 2^32) */
+#define FXW_THIRD_32 1431655765u /* round(2^32 / 3) */
+#define FXW_FIFTH_32 858993459u  /* round(2^32 / 5) */
+
+FXF_INLINE fxv_u32 fxf_fast_smith_g1_gtr(fxv_i32 nov, fxv_i32 alpha, fxv_i32 gamma)
+{
+    fxv_u32 n = fxf_unit(nov), a = fxf_alpha(alpha), gg = fxv_clamp(gamma, 0, 4 * FACET_FX_ONE);
+    fxv_u32 a2 = fxv_mul32(a, a), s2 = fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), n), fxv_add32(fxv_k32(FXF_ONE), n));
+    fxv_u32 n30 = fxv_shl(n, 15), ew, kw, w0, w1, nu, nu2, om, nu3, b, y0, y1, y2, y3, y4;
+    fxv_u32 wt, q, d28, kd, u20, uq, omr, xl, cl, l26, ku, r32, t30, ka, la, nL, dL, e30, es2t, nud;
+    fxv_u32 a4, k28, p5, p2, inner, k32, t1, t2, d0, d1, d2, d3, m0, m1, m2, m3, m4, f;
+    fxv_u32 j, t, omt, t2q, h01, h10, h11, yj, dj, mj, mk, pos, neg, s;
+    fxv_u64 w60 = fxv_add64(fxv_mulw(a2, s2), fxv_mulw(fxv_mul32(n, n), fxv_k32(1u << 30)));
+    /* W = sqrt(w): the table root, one Heron step (W + w / W) / 2 with w /
+     * W = hi(wt, rcp(W)) 2^(kw - ew + 1) Q30 (w normalised by fxw_norm_hl,
+     * w60 >= 2^40): error <= 2^-28 relative */
+    w0 = fxw_smith_r30(n, a2);
+    wt = fxw_norm_hl(fxv_hi(w60), fxv_lo(w60), &ew);
+    kw = fxv_clz(w0);
+    q = fxw_mulhi(wt, fxw_rcp32(fxv_shlv(w0, kw)));
+    q = fxv_shrv(q, fxv_min(fxv_sub32(fxv_max(fxv_add32(ew, fxv_k32(31)), fxv_add32(kw, fxv_k32(32))),
+                                      fxv_add32(kw, fxv_k32(32))), fxv_k32(31)));
+    w1 = fxv_min(fxv_shr(fxv_add32(fxv_add32(w0, q), fxv_k32(1)), 1), fxv_k32(1u << 30));
+    nu = fxv_min(fxw_div30(n30, w1), fxv_k32(1u << 30));
+    nu2 = fxw_mul30(nu, nu);
+    om = fxv_sub32(fxv_k32(1u << 30), nu2);                     /* 1 - nu^2 */
+    nu3 = fxw_mul30(nu2, nu);
+    b = fxv_add32(fxv_k32(1u << 30), a2);                       /* <= 2^31 */
+    /* y0, y2 */
+    y0 = fxw_div30(fxv_shl(n, 16), fxv_add32(fxv_k32(1u << 30), n30));
+    y2 = fxw_div30(fxv_shl(nu, 1), fxv_add32(fxv_k32(1u << 30), nu));
+    /* y3 in Q27 stages [num <= 8, den <= 12 ... both < 2^31] */
+    {
+        fxv_u32 bnu = fxw_mulhi(b, nu);                                   /* b nu Q28 */
+        fxv_u32 c28 = fxv_add32(fxv_mul32(fxv_shr(a2, 2), fxv_k32(3)), fxv_k32(1u << 28));
+        fxv_u32 den = fxv_add32(fxv_shl(fxw_mulhi(c28, om), 1),
+                                fxv_shl(fxw_mulhi(bnu, fxv_add32(fxv_k32(1u << 30), nu)), 2));
+        y3 = fxv_min(fxw_div30(fxv_shl(bnu, 1), den), fxv_k32(1u << 30));
+    }
+    /* y4 in Q28 stages: K, P5, P2 Q28 [<= 3, 8, 4]; inner = P5 (1 - nu^2) +
+     * 4 P2 nu^2 Q26 [<= 16]; k = 3 / (8 K) Q32 [<= 3/8]; den Q28 [<= 8] */
+    a4 = fxw_mul30(a2, a2);
+    k28 = fxv_add32(fxv_add32(fxv_shr(a4, 2), fxv_shr(a2, 2)), fxv_k32(1u << 28));
+    p5 = fxv_add32(fxv_add32(fxv_mul32(fxv_shr(a4, 2), fxv_k32(5)), fxv_shr(a2, 1)), fxv_k32(1u << 28));
+    p2 = fxv_add32(fxv_add32(fxv_shr(a4, 1), fxv_shr(a2, 2)), fxv_k32(1u << 28));
+    inner = fxv_add32(fxw_mulhi(p5, om), fxv_shl(fxw_mulhi(p2, nu2), 2));
+    k32 = fxv_shl(fxw_div30(fxv_k32(3u << 25), k28), 2);
+    t1 = fxv_shr(fxw_mulhi(fxv_shl(nu, 1), fxv_add32(fxv_k32(1u << 30), nu3)), 1);      /* nu (1 + nu^3) Q28 */
+    t2 = fxv_shl(fxw_mulhi(fxv_shl(fxw_mulhi(k32, om), 1), fxv_shl(inner, 1)), 2);     /* Q28 */
+    y4 = fxv_min(fxw_div30(fxv_shr(nu, 1), fxv_add32(t1, t2)), fxv_k32(1u << 30));
+    /* y1: D = (W + 1)(n + W) Q28 [<= 4, >= alpha]; u = (1 - a^2) s2 / D Q20
+     * [<= 2^10]; 1 - R(u) Q32 by the series u (1/2 - u (1/3 - u (1/4 - u/5)))
+     * below u = 1/16 (error u^5/6 < 2^-22), else 1 - ln 2 log2(1 + u) / u
+     * (log2 by clz + fxw_log2m31, 1/u refined); e = 1 / (ln 2 g(|L|)) from
+     * gtr_d's g. */
+    d28 = fxw_mulhi(fxv_add32(fxv_k32(1u << 30), w1), fxv_add32(n30, w1));
+    kd = fxv_clz(d28);
+    u20 = fxw_mulhi(fxw_mul30(fxv_sub32(fxv_k32(1u << 30), a2), s2), fxw_rcp32(fxv_shlv(d28, kd)));
+    u20 = fxv_shrv(u20, fxv_sub32(fxv_k32(13), fxv_min(kd, fxv_k32(13))));
+    uq = fxv_shl(fxv_min(u20, fxv_k32(0xFFFF)), 12);
+    omr = fxv_sub32(fxv_k32(1u << 30), fxw_mulhi(uq, fxv_k32(FXW_FIFTH_32)));
+    omr = fxv_sub32(fxv_k32(FXW_THIRD_32), fxw_mulhi(uq, omr));
+    omr = fxv_sub32(fxv_k32(1u << 31), fxw_mulhi(uq, omr));
+    omr = fxw_mulhi(uq, omr);
+    xl = fxv_add32(fxv_k32(1u << 20), u20);
+    cl = fxv_clz(xl);
+    l26 = fxv_add32(fxv_shl(fxv_sub32(fxv_k32(11), fxv_min(cl, fxv_k32(11))), 26), fxv_shr(fxw_log2m31(fxv_shlv(xl, cl)), 5));
+    ku = fxv_clz(fxv_max(u20, fxv_k32(1)));
+    r32 = fxw_mulhi(fxw_mulhi(l26, fxw_rcp32(fxv_shlv(fxv_max(u20, fxv_k32(1)), ku))), fxv_k32(FXW_LN2_32));
+    r32 = fxv_shlv(r32, fxv_sub32(fxv_max(ku, fxv_k32(5)), fxv_k32(5)));   /* u >= 1/16: ku <= 11 */
+    r32 = fxv_shrv(r32, fxv_sub32(fxv_k32(5), fxv_min(ku, fxv_k32(5))));
+    omr = fxv_sel(fxv_lt(u20, fxv_k32(1u << 16)), omr, fxv_not(r32));
+    t30 = fxv_add32(fxv_k32(1u << 30), fxw_mulhi(nu, omr));
+    ka = fxv_clz(a);
+    la = fxv_sub32(fxv_shl(fxv_sub32(ka, fxv_k32(16)), 27), fxv_shr(fxw_log2m31(fxv_shlv(a, ka)), 4));
+    fxw_gtr_g(la, &nL, &dL);
+    e30 = fxv_min(fxw_div30(fxv_shr(dL, 5), fxw_mulhi(nL, fxv_k32(FXW_LN2_32))), fxv_k32(1u << 30));
+    es2t = fxw_mulhi(fxw_mul30(e30, s2), t30);                    /* Q28 <= 2 */
+    nud = fxw_mulhi(fxv_shl(nu, 1), fxv_shl(d28, 1));               /* nu D Q28 <= 4 */
+    y1 = fxv_min(fxw_div30(nud, fxv_add32(nud, es2t)), fxv_k32(1u << 30));
+    /* the monotone cubic (Fritsch-Carlson) on d_j >= 0 */
+    d0 = fxv_sub32(fxv_max(y1, y0), y0);
+    d1 = fxv_sub32(fxv_max(y2, y1), y1);
+    d2 = fxv_sub32(fxv_max(y3, y2), y2);
+    d3 = fxv_sub32(fxv_max(y4, y3), y3);
+    m0 = fxv_shr(fxv_sub32(fxv_max(fxv_mul32(d0, fxv_k32(3)), d1), d1), 1);
+    m4 = fxv_shr(fxv_sub32(fxv_max(fxv_mul32(d3, fxv_k32(3)), d2), d2), 1);
+    /* 2 a b / (a + b) = 2 a f, f = b / (a + b) */
+    f = fxw_div30(d1, fxv_max(fxv_add32(d0, d1), fxv_k32(1)));
+    m1 = fxv_shl(fxw_mul30(d0, f), 1);
+    f = fxw_div30(d2, fxv_max(fxv_add32(d1, d2), fxv_k32(1)));
+    m2 = fxv_shl(fxw_mul30(d1, f), 1);
+    f = fxw_div30(d3, fxv_max(fxv_add32(d2, d3), fxv_k32(1)));
+    m3 = fxv_shl(fxw_mul30(d2, f), 1);
+    j = fxv_min(fxv_shr(gg, 15), fxv_k32(3));
+    t = fxv_sub32(gg, fxv_shl(j, 15));                              /* Q15 in [0, 2^15] */
+    omt = fxv_sub32(fxv_k32(FXF_ONE), t);
+    t2q = fxv_mul32(t, t);                                          /* Q30 */
+    h01 = fxv_shl(fxw_mulhi(fxv_shl(t2q, 1), fxv_shl(fxv_sub32(fxv_k32(3 * FXF_ONE), fxv_shl(t, 1)), 15)), 1);
+    h10 = fxw_mulhi(fxv_shl(fxv_mul32(omt, omt), 1), fxv_shl(t, 16));
+    h11 = fxw_mulhi(fxv_shl(t2q, 1), fxv_shl(omt, 16));
+    {
+        fxv_u32 i1 = fxv_lt(j, fxv_k32(1)), i2 = fxv_lt(j, fxv_k32(2)), i3 = fxv_lt(j, fxv_k32(3));
+        yj = fxv_sel(i1, y0, fxv_sel(i2, y1, fxv_sel(i3, y2, y3)));
+        dj = fxv_sel(i1, d0, fxv_sel(i2, d1, fxv_sel(i3, d2, d3)));
+        mj = fxv_sel(i1, m0, fxv_sel(i2, m1, fxv_sel(i3, m2, m3)));
+        mk = fxv_sel(i1, m1, fxv_sel(i2, m2, fxv_sel(i3, m3, m4)));
+    }
+    pos = fxv_add32(fxv_add32(yj, fxw_mul30(h01, dj)), fxw_mul30(h10, mj));
+    neg = fxw_mul30(h11, mk);
+    s = fxv_min(fxv_sub32(pos, fxv_min(pos, neg)), fxv_k32(1u << 30));
+    return fxv_shr(fxv_add32(s, fxv_k32(1u << 14)), 15);
+}
+
 /* ---- Smith, Hammon ------------------------------------------------------------
  * G1 ~ 2 n / (n (2 - a) + a): den30 = N (2^16 - A) + A 2^15 exact [2^20 ..
  * 2^31]; G1 2^15 = 2N 2^30 / den30, one fxr_div. */

@@ -101,6 +101,7 @@ static const struct { const char *name; uint64_t hash; } fxh_pinned_fast[] = {
     { "smith_g2_uncorrelated", 0x99026cfae08adca8ull },
     { "smith_vis", 0x92aac1660a9557b6ull },
     { "smith_g1_hammon", 0x1339c973d84394f9ull },
+    { "smith_g1_gtr", 0x93f77130947a1adeull },
     { "smith_g2_hammon", 0xad548dfeb4e22987ull },
     { "smith_vis_hammon", 0xe94f2258d41b5949ull },
     { "g_implicit", 0xc49c6a1111731783ull },

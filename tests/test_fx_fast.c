@@ -35,6 +35,7 @@ W2(g_implicit, uint32_t) W2(g_neumann, uint32_t) W4(g_cook_torrance, uint32_t) W
 W2(smith_g1_beckmann, uint32_t) W2(smith_g1_schlick_beckmann, uint32_t) W3(smith_vis_joint_approx, uint32_t)
 W3(smith_vis_fit, uint32_t)
 W3(gtr_d, uint32_t)
+W3(smith_g1_gtr, int32_t)
 W2(blinn_phong_d, uint32_t)
 W2(beckmann_d, uint32_t)
 static uint64_t f_ggx_aniso_d(const int32_t *x) { return facet_ggx_aniso_d_fx_fast(x[0], x[1], x[2], x[3], x[4]); }
@@ -55,6 +56,7 @@ static const struct { const char *name; fast_fn fn; double err; } fast[] = {
     { "smith_g2_uncorrelated", f_smith_g2_uncorrelated, FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED },
     { "smith_vis", f_smith_vis, FACET_FX_FAST_ERR_SMITH_VIS },
     { "smith_g1_hammon", f_smith_g1_hammon, FACET_FX_FAST_ERR_SMITH_G1_HAMMON },
+    { "smith_g1_gtr", f_smith_g1_gtr, FACET_FX_FAST_ERR_SMITH_G1_GTR },
     { "smith_g2_hammon", f_smith_g2_hammon, FACET_FX_FAST_ERR_SMITH_G2_HAMMON },
     { "smith_vis_hammon", f_smith_vis_hammon, FACET_FX_FAST_ERR_SMITH_VIS_HAMMON },
     { "g_implicit", f_g_implicit, FACET_FX_FAST_ERR_G_IMPLICIT },
