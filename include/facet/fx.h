@@ -577,7 +577,7 @@ uint32_t facet_smith_vis_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
  * Error: FACET_FX_FAST_ERR_SMITH_G1_GTR LSB (measured 0.5002 in the test,
  * 0.5021 over 3e6 tuples with gamma uniform in [0, 4] and 1 in 7 at an
  * integer order; each closed form alone <= 0.5016).  Cost: 949 / 3790
- * (no precise tier; 13 refined reciprocals, 2 log2, 1 2^f: the widest
+ * (no precise tier; 14 refined reciprocals, 2 log2, 1 2^f: the widest
  * kernel of the tier). */
 int32_t facet_smith_g1_gtr_fx_fast(int32_t nov, int32_t alpha, int32_t gamma);
 /* Hammon G1 = 2n / (n (2 - a) + a), the denominator exact; Q15.  One 1/x.
