@@ -33,4 +33,5 @@ void facet_brdf_hammon_rgb_fx_fast(uint64_t out[3], int32_t nol, int32_t nov, in
 /* ---- the scalar port's batches: src/fx_scalar_loops.h ----------------- */
 #define FX_TIER fx_fast
 #define FX_SCALAR_VAR facet_fx_fast_port_scalar
+#define FX_TIER_PRECISE 0
 #include "fx_scalar_loops.h"

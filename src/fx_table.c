@@ -2,12 +2,15 @@
  * the kernels of src/kernels.def that have a fixed-point version, in its
  * order, with each input's raw Q15 domain and the output format.
  * Names generated here from src/kernels.def: one table row and its four
- * array-argument wrappers (both tiers) per fixed-point kernel. */
+ * array-argument wrappers (both tiers) per fixed-point kernel; a kernel
+ * with the fast tier only (fx_code fast) has the two fx_fast wrappers, and
+ * its row's fx and fx_batch are NULL (err_lsb 0). */
 #include "facet/fx.h"
 #include "kernel_list.h"
 
 #define SAMPLE_(q) in[q]
-#define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type,                     \
+#define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...)     \
+    FACET_IF_PRECISE(fx_code,                                                              \
     static uint64_t fx_##name(const int32_t *in)                                           \
     {                                                                                      \
         return (uint64_t)(fx_type)facet_##name##_fx(FACET_EACH_INPUT(n, SAMPLE_)) & FX_MASK_##fx_type; \
@@ -15,7 +18,8 @@
     static void batch_##name(void *out, const int32_t *const *in, size_t count)            \
     {                                                                                      \
         facet_##name##_fx_batch((fx_type *)out, FACET_EACH_INPUT(n, SAMPLE_), count);      \
-    }                                                                                      \
+    })                                                                                     \
+    FACET_IF_FX(fx_type,                                                                   \
     static uint64_t fx_fast_##name(const int32_t *in)                                      \
     {                                                                                      \
         return (uint64_t)(fx_type)facet_##name##_fx_fast(FACET_EACH_INPUT(n, SAMPLE_)) & FX_MASK_##fx_type; \
@@ -36,7 +40,8 @@ static const facet_fx_kernel table[] = {
     { #name, n, { FACET_MAP_INPUTS(n, FACET_IN_NAME, __VA_ARGS__) },                              \
       { FACET_MAP_INPUTS(n, FACET_IN_LO, __VA_ARGS__) },                                          \
       { FACET_MAP_INPUTS(n, FACET_IN_HI, __VA_ARGS__) }, fx_frac, (int)(8 * sizeof(fx_type)),      \
-      fx_format, fx_max, fx_##name, batch_##name, FACET_FX_ERR_##NAME,                             \
+      fx_format, fx_max, FACET_PRECISE_OR(fx_code, fx_##name, NULL),                               \
+      FACET_PRECISE_OR(fx_code, batch_##name, NULL), FACET_PRECISE_OR(fx_code, FACET_FX_ERR_##NAME, 0), \
       fx_fast_##name, batch_fast_##name, FACET_FX_FAST_ERR_##NAME },)
 #include "kernels.def"
 #undef FACET_KERNEL

@@ -46,7 +46,8 @@
         }                                                                                  \
     }
 /* which kernels' fast tier runs on this port's lanes: those whose fx_code
- * is lanes, or every fixed-point kernel where the port says so */
+ * is lanes, or every fixed-point kernel where the port says so (those
+ * with the fast tier only included) */
 #if defined(FXV_FAST_EVERY_KERNEL) && FXV_FAST_EVERY_KERNEL
 #define FXVB_IF_FAST(fx_type, fx_code, ...) FACET_IF_FX(fx_type, __VA_ARGS__)
 #else

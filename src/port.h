@@ -39,7 +39,9 @@ typedef struct facet_f32_port {
 /* fx: bit-identical to the scalar specification (src/fx_kernels.c).  A
  * NULL member means the port has no code of its own for that kernel (none
  * measured faster than the scalar loop): the dispatcher runs the scalar
- * port's loop. */
+ * port's loop.  One member per fixed-point kernel in both tiers' tables; a
+ * kernel with the fast tier only (kernels.def fx_code fast) is NULL in
+ * every precise table (no facet_<name>_fx_batch calls it). */
 typedef struct facet_fx_port {
     const char *name;
     int lanes;

@@ -25,10 +25,21 @@ expect "lambert has no fixed-point version" "lambert f32 f32_fast" "$(grep '^lam
 while read -r name rest; do
     n=$(echo $rest | wc -w)
     if ! grep -qE "^$name .* fx( |$)" "$tmp/formats"; then
-        # no fixed-point version (lambert, the f32-only menu kernels): refused
+        # no precise fixed-point kernel (lambert, the f32-only menu kernels,
+        # the fast-tier-only ones): --format fx refused
         case "$rest" in *'->'*) continue ;; esac
         echo "$(yes 0.5 | head -n "$n" | tr '\n' ' ')" | $facet eval "$name" --format fx > /dev/null 2>&1
-        expect "eval $name --format fx refused (no fixed-point version)" 2 $?
+        expect "eval $name --format fx refused (no precise fixed-point version)" 2 $?
+        grep -qE "^$name .* fx_fast$" "$tmp/formats" || continue
+        # the fast tier only: vectors --format fx refused too, fx_fast works
+        $facet vectors "$name" --format fx --count 1 > /dev/null 2> "$tmp/err"
+        expect "vectors $name --format fx refused (fast tier only)" 2 $?
+        grep -q 'only the fast' "$tmp/err" && ok || bad "vectors $name --format fx: '$(cat "$tmp/err")'"
+        $facet vectors "$name" --format fx_fast --count 50 --seed 7 > "$tmp/vf" || bad "vectors $name --format fx_fast exit $?"
+        grep -v '^#' "$tmp/vf" | awk -v n="$n" '{ s = ""; for (i = 1; i <= n; i++) s = s sprintf("%.17g ", $i / 32768); print s }' > "$tmp/in"
+        grep -v '^#' "$tmp/vf" | awk '{ print $NF }' > "$tmp/wantf"
+        $facet eval "$name" --format fx_fast --raw < "$tmp/in" > "$tmp/gotf"
+        cmp -s "$tmp/wantf" "$tmp/gotf" && ok || bad "vectors $name --format fx_fast disagree with eval --format fx_fast --raw"
         continue
     fi
     case "$rest" in *'->'*) continue ;; esac # a sampler (f32 only)

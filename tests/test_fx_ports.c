@@ -254,6 +254,10 @@ int main(void)
     for (ki = 0; ki < facet_fx_kernel_count(); ki++) {
         const facet_fx_kernel *k = facet_fx_kernel_at(ki);
         double t_scalar = 0;
+        if (!fast_tier && !k->fx_batch) { /* the fast tier only (kernels.def fx_code fast) */
+            CHECK(!k->fx && k->fx_fast_batch, "%s: a precise batch without a kernel or neither tier", k->name);
+            continue;
+        }
         make_set(k, n, 0xF00D + ki); /* the reference: the tier's scalar kernel */
         for (pi = 0; pi < facet_port_count(); pi++) {
             int sup;

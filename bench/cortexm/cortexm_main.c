@@ -65,11 +65,14 @@ typedef int32_t T;
 /* Names generated here from src/kernels.def: one call per fixed-point kernel */
 #ifdef BENCH_FX_FAST
 #define BENCH_TIER_(name) facet_##name##_fx_fast
+#define BENCH_IF_TIER_(fx_type, fx_code, ...) FACET_IF_FX(fx_type, __VA_ARGS__)
 #else
 #define BENCH_TIER_(name) facet_##name##_fx
+/* the precise tier: not the kernels with the fast tier only */
+#define BENCH_IF_TIER_(fx_type, fx_code, ...) FACET_IF_PRECISE(fx_code, __VA_ARGS__)
 #endif
 #define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...) \
-    FACET_IF_FX(fx_type, bench_sink = (uint64_t)BENCH_TIER_(name)(FACET_MAP_INPUTS(n, INPUT_, __VA_ARGS__));)
+    BENCH_IF_TIER_(fx_type, fx_code, bench_sink = (uint64_t)BENCH_TIER_(name)(FACET_MAP_INPUTS(n, INPUT_, __VA_ARGS__));)
 #else
 #define FP(a, b, c, d, e, f, g, h) { a, b, c, d, e, f, g, h }
 #define FP_(p) FP(p)

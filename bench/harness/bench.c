@@ -783,7 +783,7 @@ int bench_run(const bench_opts *o, bench_sink sink, void *ctx)
         }
         for (tier = 0; tier < 2; tier++) {
             const bench_fx *fx = bench_fx_find(k->name);
-            if (fx && (!o->format || !strcmp(o->format, tier ? "fx_fast" : "fx")))
+            if (fx && (tier || fx->batch) && (!o->format || !strcmp(o->format, tier ? "fx_fast" : "fx")))
                 run_fx(fx, &d, o, sink, ctx, &count, tier);
         }
         kdata_free(&d);

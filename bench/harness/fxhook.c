@@ -11,7 +11,8 @@ static volatile int32_t opaque_zero; /* always 0; the compiler cannot know */
 #define CHAINED_(q) (q == 0 ? in[0][i] + (int32_t)(uint32_t)y * z : in[q][i])
 
 /* Names generated here from src/kernels.def: three loops per fixed-point
- * kernel and tier, and the table. */
+ * kernel and tier (the fast tier only where fx_code is fast: NULL in the
+ * table), and the table. */
 #define FX_LOOPS(name, T, tier, suffix, n)                                                         \
     static void batch_##name##suffix(void *out, const int32_t *const *in, size_t n_)               \
     {                                                                                              \
@@ -33,8 +34,8 @@ static volatile int32_t opaque_zero; /* always 0; the compiler cannot know */
             y = facet_##name##_##tier(FACET_EACH_INPUT(n, CHAINED_));                              \
         *(T *)out = y;                                                                             \
     }
-#define FACET_KERNEL(name, NAME, n, T, ...) \
-    FACET_IF_FX(T, FX_LOOPS(name, T, fx, , n) FX_LOOPS(name, T, fx_fast, _fast, n))
+#define FACET_KERNEL(name, NAME, n, T, fx_frac, fx_max, fx_format, fx_code, ...) \
+    FACET_IF_PRECISE(fx_code, FX_LOOPS(name, T, fx, , n)) FACET_IF_FX(T, FX_LOOPS(name, T, fx_fast, _fast, n))
 #include "src/kernels.def"
 #undef FACET_KERNEL
 
@@ -48,8 +49,10 @@ void bench_fx_identity_chain(void *out, const int32_t *const *in, size_t n_)
 }
 
 static bench_fx table[] = {
-#define FACET_KERNEL(name, NAME, n, T, ...) FACET_IF_FX(T, { #name, NULL, batch_##name, call_##name, chain_##name, \
-                                                           batch_##name##_fast, call_##name##_fast, chain_##name##_fast },)
+#define FACET_KERNEL(name, NAME, n, T, fx_frac, fx_max, fx_format, fx_code, ...)                            \
+    FACET_IF_FX(T, { #name, NULL, FACET_PRECISE_OR(fx_code, batch_##name, NULL),                            \
+                     FACET_PRECISE_OR(fx_code, call_##name, NULL), FACET_PRECISE_OR(fx_code, chain_##name, NULL), \
+                     batch_##name##_fast, call_##name##_fast, chain_##name##_fast },)
 #include "src/kernels.def"
 #undef FACET_KERNEL
 };

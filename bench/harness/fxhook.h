@@ -28,7 +28,7 @@ typedef void (*bench_fx_fn)(void *out, const int32_t *const *in, size_t n);
 typedef struct bench_fx {
     const char *kernel;
     const facet_fx_kernel *fk;   /* the fx table entry: domain, format, bound */
-    bench_fx_fn batch, call, chain;
+    bench_fx_fn batch, call, chain; /* NULL: the fast tier only (fk->fx NULL) */
     bench_fx_fn fast_batch, fast_call, fast_chain; /* the same, facet_<kernel>_fx_fast */
 } bench_fx;
 

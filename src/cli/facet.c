@@ -53,7 +53,8 @@ static void usage_list(FILE *f)
     fprintf(f, "usage: %s list [--formats]\n"
                "Prints one line per kernel: its name, then the names of its inputs in the\n"
                "order 'eval' reads them.  With --formats: its name, then the formats it\n"
-               "comes in (f32 f32_fast, and fx fx_fast where it has a fixed-point form).\n%s",
+               "comes in (f32 f32_fast, and fx fx_fast where it has a fixed-point form;\n"
+               "fx_fast alone where it has only the fast fixed-point tier).\n%s",
             prog, facet_cli_exit_help);
 }
 
@@ -126,8 +127,10 @@ static int cmd_list(int argc, char **argv)
     for (i = 0; i < facet_kernel_count(); i++) {
         const facet_kernel *k = facet_kernel_at(i);
         printf("%s", k->name);
-        if (argc == 2)
-            printf(" f32 f32_fast%s", facet_fx_kernel_find(k->name) ? " fx fx_fast" : "");
+        if (argc == 2) {
+            const facet_fx_kernel *fk = facet_fx_kernel_find(k->name);
+            printf(" f32 f32_fast%s%s", fk && fk->fx ? " fx" : "", fk ? " fx_fast" : "");
+        }
         else
             for (j = 0; j < k->n_inputs; j++)
                 printf(" %s", k->inputs[j]);

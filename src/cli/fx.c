@@ -65,6 +65,12 @@ static void unknown_fx_kernel(const char *verb, const char *name)
         facet_cli_unknown_kernel(verb, "fx kernel", name);
 }
 
+/* a kernel with the fast tier only (no facet_<name>_fx) asked for --format fx */
+static void only_fast(const char *verb, const char *name)
+{
+    fprintf(stderr, "facet %s: '%s' has only the fast fixed-point tier (--format fx_fast)\n", verb, name);
+}
+
 /* the exact decimal of raw / 2^frac */
 static void print_fixed(FILE *f, uint64_t raw, int frac)
 {
@@ -123,6 +129,10 @@ int facet_cli_fx_eval(int argc, char **argv)
     if (!k) {
         fprintf(stderr, "facet eval: missing KERNEL\n");
         usage_eval(stderr);
+        return FACET_EXIT_USAGE;
+    }
+    if (!fast && !k->fx) {
+        only_fast("eval", k->name);
         return FACET_EXIT_USAGE;
     }
     r.f = stdin;
@@ -262,6 +272,10 @@ int facet_cli_vectors(int argc, char **argv)
     vectors_fast = !strcmp(format, "fx_fast");
     if (strcmp(format, "fx") && !vectors_fast) {
         fprintf(stderr, "facet vectors: unknown format '%s' (known: fx, fx_fast)\n", format);
+        return FACET_EXIT_USAGE;
+    }
+    if (!vectors_fast && !k->fx) {
+        only_fast("vectors", k->name);
         return FACET_EXIT_USAGE;
     }
     seed = seed_arg;

@@ -9,19 +9,21 @@
  * scalar loops are src/fx_scalar_loops.h).  One of `make fx-sources`; not
  * part of libfacet, whose src/fx_batch.c dispatches.
  * Names generated here from src/kernels.def: two batch functions per
- * fixed-point kernel. */
+ * fixed-point kernel (the fast one only where fx_code is fast). */
 #include "facet/fx.h"
 #include "../kernel_list.h"
 
 #define PARAM_(q) const int32_t *x##q
 #define AT_(q) x##q[i]
-#define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type,                     \
+#define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...)     \
+    FACET_IF_PRECISE(fx_code,                                                              \
     void facet_##name##_fx_batch(fx_type *out, FACET_EACH_INPUT(n, PARAM_), size_t count)  \
     {                                                                                      \
         size_t i;                                                                          \
         for (i = 0; i < count; i++)                                                        \
             out[i] = facet_##name##_fx(FACET_EACH_INPUT(n, AT_));                          \
-    }                                                                                      \
+    })                                                                                     \
+    FACET_IF_FX(fx_type,                                                                   \
     void facet_##name##_fx_fast_batch(fx_type *out, FACET_EACH_INPUT(n, PARAM_), size_t count) \
     {                                                                                      \
         size_t i;                                                                          \

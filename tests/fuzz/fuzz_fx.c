@@ -3,9 +3,10 @@
  * then raw int32 input patterns (every 32-bit pattern is a valid input).
  *   - the public batch facet_<kernel>_fx_batch under every port this CPU
  *     runs (facet_set_port) equals the scalar facet_<kernel>_fx bit for
- *     bit, for every n, misalignment and the permitted aliasing (out the
+ *     bit (a kernel with the fast tier only: its _fx_fast ones), for every n, misalignment and the permitted aliasing (out the
  *     very same array as an input, 32-bit outputs);
- *   - saturation: a Q15 result is in [0, 32768];
+ *   - saturation: a Q15 result is in [0, 32768], none above the format's
+ *     maximum;
  *   - clamping: a result equals the result at the clamped inputs;
  *   - monotonicity where the function is monotone (the list of
  *     tests/test_fx_accuracy.c): consecutive samples that differ in one
@@ -16,57 +17,15 @@
 
 #define MAX_N 80
 
-/* The per-kernel batch calls, kept in this one block: name, output type,
- * number of inputs.  (A table-driven batch pointer can replace it.) */
-#define FX_BATCHES(X)                        \
-    X(noh_from_dots, int32_t, 3)             \
-    X(loh_from_dots, int32_t, 1)             \
-    X(fresnel_schlick, int32_t, 2)           \
-    X(ggx_d, uint32_t, 2)                    \
-    X(smith_g1, int32_t, 2)                  \
-    X(smith_g2, int32_t, 3)                  \
-    X(smith_g2_uncorrelated, int32_t, 3)     \
-    X(smith_vis, uint32_t, 3)                \
-    X(smith_g1_hammon, int32_t, 2)           \
-    X(smith_g2_hammon, int32_t, 3)           \
-    X(smith_vis_hammon, uint32_t, 3)         \
-    X(g_implicit, int32_t, 2)                \
-    X(g_neumann, int32_t, 2)                 \
-    X(g_cook_torrance, int32_t, 4)           \
-    X(g_kelemen, int32_t, 3)                 \
-    X(smith_g1_beckmann, int32_t, 2)         \
-    X(smith_g1_schlick_beckmann, int32_t, 2) \
-    X(smith_vis_joint_approx, uint32_t, 3)   \
-    X(smith_vis_fit, uint32_t, 3)            \
-    X(diffuse_hammon, uint32_t, 5)           \
-    X(brdf_hammon, uint64_t, 6)
-
-#define IN1 in[0]
-#define IN2 IN1, in[1]
-#define IN3 IN2, in[2]
-#define IN4 IN3, in[3]
-#define IN5 IN4, in[4]
-#define IN6 IN5, in[5]
-#define X(name, T, n)                                                                   \
-    static void batch_##name(void *out, const int32_t *const *in, size_t cnt)          \
-    {                                                                                   \
-        facet_##name##_fx_batch((T *)out, IN##n, cnt);                                  \
-    }
-FX_BATCHES(X)
-#undef X
-
+/* The kernel and tier under test: the fx table's row (byte 0 picks it, in
+ * kernels.def order), its precise kernel and batch, or for a kernel with
+ * the fast tier only (fx NULL) its fx_fast ones. */
 typedef struct {
     const char *name;
     void (*batch)(void *out, const int32_t *const *in, size_t n);
+    uint64_t (*fx)(const int32_t *in);
     size_t out_size;
 } fx_batch;
-
-static const fx_batch batches[] = {
-#define X(name, T, n) { #name, batch_##name, sizeof(T) },
-    FX_BATCHES(X)
-#undef X
-};
-#define N_BATCHES (sizeof batches / sizeof batches[0])
 
 static uint64_t widen(const void *out, size_t size, size_t j)
 {
@@ -89,7 +48,7 @@ static const struct { const char *k, *in; int dir; } mono[] = {
     { "diffuse_hammon", "albedo", 1 }, { "brdf_hammon", "f0", 1 }, { "brdf_hammon", "albedo", 1 },
 };
 
-static void check_scalar(const facet_fx_kernel *k, int32_t in[][MAX_N], size_t n)
+static void check_scalar(const facet_fx_kernel *k, const fx_batch *b, int32_t in[][MAX_N], size_t n)
 {
     size_t j, m;
     int i;
@@ -100,12 +59,14 @@ static void check_scalar(const facet_fx_kernel *k, int32_t in[][MAX_N], size_t n
             x[i] = in[i][j];
             c[i] = x[i] < k->lo[i] ? k->lo[i] : x[i] > k->hi[i] ? k->hi[i] : x[i];
         }
-        y = k->fx(x);
+        y = b->fx(x);
         if (k->out_frac == 15 && k->out_bits == 32 && y > FACET_FX_MAX_Q15)
             FUZZ_FAIL("%s: sample %zu: Q15 result %llu above 32768", k->name, j, (unsigned long long)y);
-        if (k->fx(c) != y)
+        if (y > k->out_max)
+            FUZZ_FAIL("%s: sample %zu: result %llu above the format maximum", k->name, j, (unsigned long long)y);
+        if (b->fx(c) != y)
             FUZZ_FAIL("%s: sample %zu: %llu, at the clamped inputs %llu", k->name, j, (unsigned long long)y,
-                      (unsigned long long)k->fx(c));
+                      (unsigned long long)b->fx(c));
         if (j == 0)
             continue;
         /* consecutive samples: monotone inputs move the result their way */
@@ -122,7 +83,7 @@ static void check_scalar(const facet_fx_kernel *k, int32_t in[][MAX_N], size_t n
                 FUZZ_FAIL("%s: no input %s", k->name, mono[m].in);
             memcpy(p, x, sizeof p);
             p[w] = in[w][j - 1]; /* the previous sample's value of that input alone */
-            yp = k->fx(p);
+            yp = b->fx(p);
             if ((p[w] < x[w] && (mono[m].dir > 0 ? yp > y : yp < y)) ||
                 (p[w] > x[w] && (mono[m].dir > 0 ? yp < y : yp > y)))
                 FUZZ_FAIL("%s: not monotone in %s: %s = %ld gives %llu, %ld gives %llu", k->name, mono[m].in,
@@ -151,7 +112,7 @@ static void check_port(const facet_fx_kernel *k, const fx_batch *b, const char *
         uint64_t want;
         for (i = 0; i < k->n_inputs; i++)
             x[i] = in[i][j];
-        want = k->fx(x);
+        want = b->fx(x);
         if (widen(out, b->out_size, j) != want)
             FUZZ_FAIL("%s/%s (fx %s): sample %zu of %zu: batch %llu, scalar %llu", port, k->name,
                       facet_fx_port_name(), j, n, (unsigned long long)widen(out, b->out_size, j),
@@ -175,23 +136,28 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     static int32_t in[FACET_FX_MAX_INPUTS][MAX_N];
+    fx_batch tier;
     const fx_batch *b;
     const facet_fx_kernel *k;
     size_t n, off, j, p;
     int i, alias;
     if (size < 3)
         return 0;
-    b = &batches[data[0] % N_BATCHES];
-    k = facet_fx_kernel_find(b->name);
-    if (!k)
-        FUZZ_FAIL("%s: not in the fx kernel table", b->name);
+    k = facet_fx_kernel_at(data[0] % facet_fx_kernel_count());
+    if (!k || !k->fx_fast || !k->fx_fast_batch || !k->fx != !k->fx_batch)
+        FUZZ_FAIL("fx table row %u: incomplete", (unsigned)(data[0] % facet_fx_kernel_count()));
+    tier.name = k->name;
+    tier.fx = k->fx ? k->fx : k->fx_fast;
+    tier.batch = k->fx ? k->fx_batch : k->fx_fast_batch;
+    tier.out_size = (size_t)k->out_bits / 8;
+    b = &tier;
     n = data[1] % (MAX_N + 1);
     off = data[2] & 7;
     alias = (data[2] >> 3) % (FACET_FX_MAX_INPUTS + 1);
     for (j = 0; j < n; j++)
         for (i = 0; i < k->n_inputs; i++)
             in[i][j] = (int32_t)fuzz_word(data + 3, size - 3, 4 * (j * (size_t)k->n_inputs + (size_t)i));
-    check_scalar(k, in, n);
+    check_scalar(k, b, in, n);
     for (p = 0; p < facet_port_count(); p++) {
         int sup;
         const char *port = facet_port_at(p, &sup, NULL);
