@@ -317,7 +317,7 @@ float facet_smith_g1_hammon_f32(float nov, float alpha);
  * facet_oracle_smith_g1_gtr): <= FACET_ERR_SMITH_G1_GTR_F32 (2^-20); measured
  * max 2^-20.89 (sse2, 300 k samples) at (0.00778461341, 0.126742497, 3.8678031);
  * f32_fast 2^-14.27 (avx512; 2^-14.01 with estimates at the bound).
- * Cost: 277 ops (1 rsqrt, 15 rcp). */
+ * Cost: 275 ops (1 rsqrt, 15 rcp). */
 float facet_smith_g1_gtr_f32(float nov, float alpha, float gamma);
 
 /* Hammon's G2 approximation:

@@ -1,6 +1,7 @@
 /* cpu.c - the one place CPU features are read: CPUID and XCR0 on x86 (the
  * CPU has the instructions and the OS saves their registers), HWCAP on
- * armv7; aarch64 always has NEON; MVFR1 on Armv8.1-M (Helium).  src/dispatch.c asks it which ports this
+ * armv7; aarch64 always has NEON; MVFR1 on Armv8.1-M (Helium); HWCAP on
+ * riscv64 Linux (RVV).  src/dispatch.c asks it which ports this
  * CPU runs; the bench and the rasterizer ask through facet_port_supported(). */
 #if defined(__linux__) && !defined(_GNU_SOURCE)
 #define _GNU_SOURCE /* getauxval */
@@ -17,6 +18,9 @@
 #endif
 #elif defined(__ARM_FEATURE_MVE) && (__ARM_FEATURE_MVE & 2)
 #define FACET_HELIUM 1
+#elif defined(__riscv) && __riscv_xlen == 64 && defined(__linux__)
+#define FACET_RISCV 1
+#include <sys/auxv.h>
 #endif
 
 #if FACET_X86
@@ -79,6 +83,17 @@ int facet_cpu_helium(void)
 {
     unsigned long mvfr1 = *(volatile const unsigned long *)0xE000EF44ul;
     return ((mvfr1 >> 8) & 0xFu) == 2u;
+}
+#endif
+
+#if FACET_RISCV
+/* Linux sets AT_HWCAP bit ('V' - 'A') where the harts have the V extension
+ * and the kernel saves its state (qemu-user 7.2 sets it for -cpu
+ * rv64,v=true and clears it without); the port is RVV 1.0, the only
+ * version Linux enables */
+int facet_cpu_rvv(void)
+{
+    return (getauxval(AT_HWCAP) >> ('V' - 'A')) & 1ul;
 }
 #endif
 

@@ -15,6 +15,8 @@ int facet_cpu_avx512f(void);  /* AVX-512F, and the OS saves ZMM and opmask state
 int facet_cpu_neon(void);     /* aarch64: always; armv7: NEON and VFPv4 in HWCAP */
 #elif defined(__ARM_FEATURE_MVE) && (__ARM_FEATURE_MVE & 2)
 int facet_cpu_helium(void);   /* MVE integer and floating point in MVFR1 */
+#elif defined(__riscv) && __riscv_xlen == 64 && defined(__linux__)
+int facet_cpu_rvv(void);      /* the V extension in AT_HWCAP */
 #endif
 
 #endif

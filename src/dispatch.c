@@ -6,10 +6,12 @@
  *
  * Ports compiled in follow the target, best first: x86-64 -> avx512, avx2,
  * sse2 (i386: avx2, sse2); aarch64 / armv7 Linux -> neon; Armv8.1-M with
- * MVE floating point (Cortex-M55 firmware) -> helium; everywhere -> scalar.  A port is "supported" when src/cpu.c says this CPU and OS run it.
+ * MVE floating point (Cortex-M55 firmware) -> helium; riscv64 Linux -> rvv
+ * (where ports/rvv/port.mk's compiler builds it); everywhere -> scalar.  A port is "supported" when src/cpu.c says this CPU and OS run it.
  * Each port brings its f32 batches and, where it has any, fixed-point code
  * (src/port.h): avx512 and avx2 run the AVX2 fx code, aarch64 neon the NEON
- * fx code, helium its own (ports/helium), the others the scalar fx loops.
+ * fx code, helium its own (ports/helium), rvv its fx_fast code (ports/rvv),
+ * the others the scalar fx loops.
  *
  * The choice is one pointer.  The first batch call computes the automatic
  * choice (FACET_PORT, else the best supported port) and installs it with a
@@ -29,6 +31,8 @@
 #define FACET_ARM 1
 #elif defined(__ARM_FEATURE_MVE) && (__ARM_FEATURE_MVE & 2)
 #define FACET_HELIUM 1 /* Armv8.1-M with MVE floating point (Cortex-M55, M85) */
+#elif defined(__riscv) && __riscv_xlen == 64 && defined(__linux__) && defined(FACET_PORT_RVV)
+#define FACET_RVV 1 /* ports/rvv, compiled in where RVV_CC builds it (ports/rvv/port.mk) */
 #endif
 
 typedef struct port_entry {
@@ -65,6 +69,10 @@ static const port_entry ports[] = {
 #if FACET_HELIUM
     { &facet_port_helium_f32, &facet_port_helium_f32_fast, &facet_fx_port_helium, &facet_fx_fast_port_helium,
       facet_cpu_helium },
+#endif
+#if FACET_RVV
+    /* lanes 0 (vector-length agnostic): facet_port_at asks facet_rvv_lanes() */
+    { &facet_port_rvv_f32, &facet_port_rvv_f32_fast, NULL, &facet_fx_fast_port_rvv, facet_cpu_rvv },
 #endif
     { &facet_port_scalar_f32, &facet_port_scalar_f32_fast, NULL, NULL, always },
 };
@@ -137,6 +145,11 @@ const char *facet_port_at(size_t i, int *supported, int *lanes)
         *supported = ports[i].supported();
     if (lanes)
         *lanes = ports[i].f32->lanes;
+#if FACET_RVV
+    /* VLMAX, asked only where the CPU has V (vsetvli traps elsewhere) */
+    if (lanes && !*lanes)
+        *lanes = ports[i].supported() ? facet_rvv_lanes() : 0;
+#endif
     return ports[i].f32->name;
 }
 

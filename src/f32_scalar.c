@@ -23,13 +23,15 @@
 void facet_brdf_hammon_rgb_f32(float out[3], float nol, float nov, float lov,
                                float alpha, const float f0[3], const float albedo[3])
 {
-    facet_brdf_hammon_rgb_f32_scalar(out, nol, nov, lov, alpha, f0, albedo);
+    facet_brdf_hammon_rgb_f32_scalar(&out[0], &out[1], &out[2], nol, nov, lov, alpha, f0[0], f0[1],
+                                     f0[2], albedo[0], albedo[1], albedo[2]);
 }
 
 void facet_brdf_hammon_rgb_f32_fast(float out[3], float nol, float nov, float lov,
                                     float alpha, const float f0[3], const float albedo[3])
 {
-    facet_brdf_hammon_rgb_f32_fast_scalar(out, nol, nov, lov, alpha, f0, albedo);
+    facet_brdf_hammon_rgb_f32_fast_scalar(&out[0], &out[1], &out[2], nol, nov, lov, alpha, f0[0],
+                                          f0[1], f0[2], albedo[0], albedo[1], albedo[2]);
 }
 
 /* the vector entry: the dots, the kernel, the below-horizon rule, the N.L factor */
@@ -44,7 +46,8 @@ static float dot3_(const facet_vec3_f32 *a, const facet_vec3_f32 *b)
         float nol = dot3_(&d->n, &d->l), nov = dot3_(&d->n, &d->v);                     \
         float lov = dot3_(&d->l, &d->v), brdf[3], k;                                    \
         int c;                                                                          \
-        rgb(brdf, nol, nov, lov, m->alpha, m->f0, m->albedo);                           \
+        rgb(&brdf[0], &brdf[1], &brdf[2], nol, nov, lov, m->alpha, m->f0[0], m->f0[1],   \
+            m->f0[2], m->albedo[0], m->albedo[1], m->albedo[2]);                        \
         /* 0 below the horizon and for NaN (the compare is false) */                    \
         k = nol > 0.0f ? (nol < 1.0f ? nol : 1.0f) : 0.0f;                              \
         for (c = 0; c < 3; c++)                                                         \

@@ -23,10 +23,11 @@
 void facet_brdf_hammon_rgb_fx_fast(uint64_t out[3], int32_t nol, int32_t nov, int32_t lov,
                                    int32_t alpha, const int32_t f0[3], const int32_t albedo[3])
 {
-    fxf_brdf_geom G = fxf_fast_brdf_geometry(nol, nov, lov, alpha);
+    fxv_u32 FXF_BRDF_GEOM_ARGS_(G_);
     int c;
+    fxf_fast_brdf_geometry(nol, nov, lov, alpha, FXF_BRDF_GEOM_ARGS_(&G_));
     for (c = 0; c < 3; c++)
-        out[c] = fxf_fast_brdf_channel(&G, f0[c], albedo[c]);
+        out[c] = fxf_fast_brdf_channel(FXF_BRDF_GEOM_ARGS_(G_), f0[c], albedo[c]);
 }
 
 /* ---- the scalar port's batches: src/fx_scalar_loops.h ----------------- */

@@ -110,33 +110,30 @@ FXF_INLINE fxv_u32 fxf_alpha(fxv_i32 x) { return fxv_clamp(x, FACET_FX_ALPHA_MIN
  *                               cancellation without rounding)
  *   c = ~u = 2^32 - 1 - u     = (t_r / 2) 2^32 - 1 = L.H^2 2^32 - 1
  *                               [c >= 2^16 - 1: t_r >= s^2/2 >= 2^-15] */
-typedef struct { fxv_u32 s, u, w, c; } fxf_dots;
-
-FXF_INLINE fxf_dots fxf_dots_of(fxv_u32 nl, fxv_u32 nv, fxv_i32 lov)
+/* Results through out-parameters, here and below, not structs: RVV's
+ * vector types are sizeless (no struct members), and one body serves
+ * every port. */
+FXF_INLINE void fxf_dots_of(fxv_u32 nl, fxv_u32 nv, fxv_i32 lov, fxv_u32 *s, fxv_u32 *u, fxv_u32 *w,
+                            fxv_u32 *c)
 {
-    fxf_dots g;
     fxv_u32 t = fxv_clamp_off(lov, -FACET_FX_ONE + 1, FACET_FX_ONE); /* LOV + 32767 */
     fxv_u32 p, q;
-    g.s = fxv_add32(nl, nv);
-    p = fxv_mul32(fxv_sub32(fxv_k32(65536), g.s), fxv_add32(fxv_k32(65536), g.s));
+    *s = fxv_add32(nl, nv);
+    p = fxv_mul32(fxv_sub32(fxv_k32(65536), *s), fxv_add32(fxv_k32(65536), *s));
     q = fxv_shl(fxv_sub32(fxv_k32(65535), t), 16); /* 2^15 - LOV in [0, 65535] */
-    g.u = fxv_min(p, q);
-    g.w = fxv_sub32(p, g.u);
-    g.c = fxv_not(g.u);
-    return g;
+    *u = fxv_min(p, q);
+    *w = fxv_sub32(p, *u);
+    *c = fxv_not(*u);
 }
 
 /* sqrt(c 2^-32) for c in [2^16 - 1, 2^32): an even normalising shift 2h
- * [h <= 8], the table: sqrt = s 2^-(20 + h), s in [2^19, 2^20) */
-typedef struct { fxv_u32 s, h; } fxf_root;
-
-FXF_INLINE fxf_root fxf_sqrt32(fxv_u32 c)
+ * [h <= 8], the table: sqrt = s 2^-(20 + h), s in [2^19, 2^20); returns s,
+ * *h = h */
+FXF_INLINE fxv_u32 fxf_sqrt32(fxv_u32 c, fxv_u32 *h)
 {
-    fxf_root r;
     fxv_u32 k = fxv_and(fxv_clz(c), fxv_k32(30));
-    r.s = fxf_sqrt20(fxv_shlv(c, k));
-    r.h = fxv_shr(k, 1);
-    return r;
+    *h = fxv_shr(k, 1);
+    return fxf_sqrt20(fxv_shlv(c, k));
 }
 
 /* ---- loh_from_dots ------------------------------------------------------------
@@ -146,8 +143,8 @@ FXF_INLINE fxv_u32 fxf_fast_loh_from_dots(fxv_i32 lov)
 {
     fxv_u32 t = fxv_clamp_off(lov, -FACET_FX_ONE, FACET_FX_ONE);
     fxv_u32 c = fxv_add32(fxv_shl(fxv_sub32(fxv_max(t, fxv_k32(1)), fxv_k32(1)), 16), fxv_k32(0xFFFF));
-    fxf_root r = fxf_sqrt32(c);
-    fxv_u32 v = fxv_shr(fxv_add32(fxv_shrv(r.s, fxv_add32(r.h, fxv_k32(4))), fxv_k32(1)), 1);
+    fxv_u32 rh, rs = fxf_sqrt32(c, &rh);
+    fxv_u32 v = fxv_shr(fxv_add32(fxv_shrv(rs, fxv_add32(rh, fxv_k32(4))), fxv_k32(1)), 1);
     return fxv_sel(fxv_lt(t, fxv_k32(1)), fxv_k32(0), v);
 }
 
@@ -158,12 +155,13 @@ FXF_INLINE fxv_u32 fxf_fast_loh_from_dots(fxv_i32 lov)
  * N.H = 1) gives 2^15. */
 FXF_INLINE fxv_u32 fxf_fast_noh_from_dots(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov)
 {
-    fxf_dots g = fxf_dots_of(fxf_cos(nol), fxf_cos(nov), lov);
-    fxf_root r = fxf_sqrt32(g.c);
-    fxv_u32 x = fxw_mulhi(fxv_shl(g.s, 15), fxv_shl(fxf_rcp20(fxv_shl(r.s, 12)), 12));
-    fxv_u32 v = fxv_shr(fxv_add32(fxv_shrv(x, fxv_sub32(fxv_k32(14), r.h)), fxv_k32(1)), 1);
+    fxv_u32 gs, gu, gw, gc, rh, rs, x, v;
+    fxf_dots_of(fxf_cos(nol), fxf_cos(nov), lov, &gs, &gu, &gw, &gc);
+    rs = fxf_sqrt32(gc, &rh);
+    x = fxw_mulhi(fxv_shl(gs, 15), fxv_shl(fxf_rcp20(fxv_shl(rs, 12)), 12));
+    v = fxv_shr(fxv_add32(fxv_shrv(x, fxv_sub32(fxv_k32(14), rh)), fxv_k32(1)), 1);
     v = fxv_min(v, fxv_k32(FXF_ONE));
-    return fxv_sel(fxv_lt(g.w, fxv_k32(1)), fxv_k32(FXF_ONE), v);
+    return fxv_sel(fxv_lt(gw, fxv_k32(1)), fxv_k32(FXF_ONE), v);
 }
 
 /* ---- 32-bit fixed helpers ---------------------------------------------------
@@ -240,6 +238,311 @@ FXF_INLINE fxv_u32 fxf_fast_ggx_d(fxv_i32 noh, fxv_i32 alpha)
     return fxr_divb(fxv_mul32(a, a), pd, fxv_sub32(fxv_k32(90), fxv_shl(e, 1)), FACET_FX_MAX_D);
 }
 
+/* ---- anisotropic GGX D ------------------------------------------------------
+ * The top 32 bits of x = hi 2^32 + lo (x != 0), normalised: top in [2^31,
+ * 2^32), x ~ top 2^(32 - e), e = the leading zeros of x in [0, 63]
+ * (truncated <= 2^-31); both cases computed, one selected [every shift
+ * count in [0, 31]]. */
+FXF_INLINE fxv_u32 fxw_norm_hl(fxv_u32 hi, fxv_u32 lo, fxv_u32 *e)
+{
+    fxv_u32 ch = fxv_min(fxv_clz(hi), fxv_k32(31)), cl = fxv_min(fxv_clz(lo), fxv_k32(31));
+    fxv_u32 th = fxv_or(fxv_shlv(hi, ch), fxv_shrv(fxv_shr(lo, 1), fxv_sub32(fxv_k32(31), ch)));
+    fxv_u32 zero = fxv_lt(hi, fxv_k32(1));
+    *e = fxv_sel(zero, fxv_add32(cl, fxv_k32(32)), ch);
+    return fxv_sel(zero, fxv_shlv(lo, cl), th);
+}
+
+/* D = (ax ay)^3 / (pi K^2), K = (t ay)^2 + (b ax)^2 + (n ax ay)^2:
+ *   P = AX AY Q30 exact [2^10 .. 2^30]; u = |T| AY, v = |B| AX Q30 exact [<= 2^30];
+ *   K61 = 2 u^2 + 2 v^2 + floor(N^2 P^2 / 2^29) in 64 bits [each term
+ *         <= 2^61: < 2^63]: with P^2 = H 2^32 + L (mulw, exact),
+ *         N^2 P^2 / 2^29 = N^2 (H 2^3) + N^2 L / 2^29 [H 2^3 < 2^31];
+ *         truncated by < 1 against K61 >= P^2 >= 2^20 (2^-20 relative);
+ *   the floor K >= P^2 / 2 (P^2 in Q61) as an exact 64-bit max from the
+ *         32-bit halves, normalised (fxw_norm_hl): K = kt 2^(-29 - eK)
+ *         [eK <= 2 kp + 1: K61 >= P^2 >= 2^(62 - 2 kp)];
+ *   pi K^2 = pd 2^(-24 - 2 eK), pd = hi(hi(kt, kt), pi 2^30) [>= 2^29.6];
+ *   P^3: kp = clz(P), Pn = P 2^kp, p3 = hi(hi(Pn, Pn), Pn) [>= 2^29],
+ *         (ax ay)^3 = p3 2^(-26 - 3 kp);
+ *   D 2^13 = p3 / pd 2^(11 - 3 kp + 2 eK), one fxr_div (b = 84 + 3 kp -
+ *         2 eK >= 60: no wrap). */
+FXF_INLINE fxv_u32 fxf_fast_ggx_aniso_d(fxv_i32 noh, fxv_i32 toh, fxv_i32 boh, fxv_i32 alpha_x,
+                                       fxv_i32 alpha_y)
+{
+    fxv_u32 n = fxf_unit(noh), ax = fxf_alpha(alpha_x), ay = fxf_alpha(alpha_y);
+    fxv_u32 t = fxv_clamp_off(toh, -FACET_FX_ONE, FACET_FX_ONE), b = fxv_clamp_off(boh, -FACET_FX_ONE, FACET_FX_ONE);
+    fxv_u32 p = fxv_mul32(ax, ay), n2 = fxv_mul32(n, n), u, v, kh, kl, fh, fl, m, kt, ek, kp, pn, pd, p3;
+    fxv_u64 p2 = fxv_mulw(p, p), k61;
+    /* |T| = |t - 2^15| from t in [0, 2^16] */
+    t = fxv_sub32(fxv_max(t, fxv_k32(FXF_ONE)), fxv_min(t, fxv_k32(FXF_ONE)));
+    b = fxv_sub32(fxv_max(b, fxv_k32(FXF_ONE)), fxv_min(b, fxv_k32(FXF_ONE)));
+    u = fxv_mul32(t, ay);
+    v = fxv_mul32(b, ax);
+    k61 = fxv_add64(fxv_add64(fxv_mulw(u, fxv_shl(u, 1)), fxv_mulw(v, fxv_shl(v, 1))),
+                    fxv_add64(fxv_mulw(n2, fxv_shl(fxv_hi(p2), 3)), fxv_shr64(fxv_mulw(n2, fxv_lo(p2)), 29)));
+    kh = fxv_hi(k61);
+    kl = fxv_lo(k61);
+    fh = fxv_hi(p2);
+    fl = fxv_lo(p2);
+    /* K < floor: hi below, or hi equal and lo below */
+    m = fxv_or(fxv_lt(kh, fh), fxv_and(fxv_not(fxv_lt(fh, kh)), fxv_lt(kl, fl)));
+    kt = fxw_norm_hl(fxv_sel(m, fh, kh), fxv_sel(m, fl, kl), &ek);
+    pd = fxw_mulhi(fxw_mulhi(kt, kt), fxv_k32(FXF_PI_30));
+    kp = fxv_clz(p);
+    pn = fxv_shlv(p, kp);
+    p3 = fxw_mulhi(fxw_mulhi(pn, pn), pn);
+    return fxr_divb(p3, pd, fxv_sub32(fxv_add32(fxv_k32(84), fxv_mul32(kp, fxv_k32(3))), fxv_shl(ek, 1)),
+                    FACET_FX_MAX_D);
+}
+
+/* ---- log2 and 2^f on integers (the GTR terms) -------------------------------
+ * log2 m for a normalised mantissa x = m 2^31, m in [1, 2): Q31 in [0, 2^31].
+ *   i = the 4 bits below the leading one; r_i = ceil(2^35 / (16 + i)) ~
+ *   2^31 / (1 + i/16) [2^30 .. 2^31]; (1 + u) 2^30 = hi(x, r_i), u in [0,
+ *   1/16 + 2^-30] (r_i rounded up: never below 1, exact product >= 2^62);
+ *   log2 m = L_i + log2(1 + u), L_i = round(-log2(r_i / 2^31) 2^31) the
+ *   table of the rounded r_i (so r_i's rounding cancels);
+ *   log2(1 + u) = u (c1 - u (c2 - u (c3 - u (c4 - u c5)))), c_k = 1/(k ln 2)
+ *   Q31 [c1 < 2^31.53]: the alternating Taylor series, every bracket
+ *   positive (u <= 1/16), truncated after u^5: error <= u^6 / (6 ln 2) <=
+ *   2^-26; with U = u 2^35 [< 2^31 + 2^6], hi(U, p) >> 3 = u p Q31, the
+ *   truncations 5 x 2^-31.  Total |error| <= 2^-25.5 (+ L_i's 2^-32);
+ *   measured 2^-26.13 (tests/test_fx_prims.c, which enforces 2^-25.5). */
+static const uint32_t fxf_log2_rcp_tab[16] = {
+    2147483648u, 2021161081u, 1908874354u, 1808407283u, 1717986919u, 1636178018u, 1561806290u, 1493901669u,
+    1431655766u, 1374389535u, 1321528399u, 1272582903u, 1227133514u, 1184818565u, 1145324613u, 1108378658u,
+};
+static const uint32_t fxf_log2_tab[16] = {
+    0u, 187825021u, 364911162u, 532420280u, 691335319u, 842495249u, 986621887u, 1124340738u,
+    1256197404u, 1382670639u, 1504182841u, 1621108566u, 1733781491u, 1842500156u, 1947532723u, 2049120971u,
+};
+#define FXW_LOG2_C1 3098164009u /* round(2^31 / (k ln 2)), k = 1..5 */
+#define FXW_LOG2_C2 1549082005u
+#define FXW_LOG2_C3 1032721336u
+#define FXW_LOG2_C4 774541002u
+#define FXW_LOG2_C5 619632802u
+FXF_INLINE fxv_u32 fxw_log2m31(fxv_u32 x)
+{
+    fxv_u32 i = fxv_and(fxv_shr(x, 27), fxv_k32(15));
+    fxv_u32 uu = fxv_shl(fxv_sub32(fxw_mulhi(x, fxv_lut(fxf_log2_rcp_tab, i)), fxv_k32(1u << 30)), 5);
+    fxv_u32 p = fxv_sub32(fxv_k32(FXW_LOG2_C4), fxv_shr(fxw_mulhi(uu, fxv_k32(FXW_LOG2_C5)), 3));
+    p = fxv_sub32(fxv_k32(FXW_LOG2_C3), fxv_shr(fxw_mulhi(uu, p), 3));
+    p = fxv_sub32(fxv_k32(FXW_LOG2_C2), fxv_shr(fxw_mulhi(uu, p), 3));
+    p = fxv_sub32(fxv_k32(FXW_LOG2_C1), fxv_shr(fxw_mulhi(uu, p), 3));
+    return fxv_add32(fxv_lut(fxf_log2_tab, i), fxv_shr(fxw_mulhi(uu, p), 3));
+}
+
+/* 2^f for f = F 2^-32 in [0, 1): Q30 in [2^30 - 2^7, 2^31].  Degree 5,
+ * interpolated at the Chebyshev nodes of [0, 1] (relative error 2^-23.2;
+ * every coefficient positive: Horner on unsigned words), p = c_k + hi(F,
+ * p) Q30 [p <= 2^31], truncations 5 x 2^-30: total <= 2^-22.9 relative;
+ * measured 2^-23.22 (tests/test_fx_prims.c enforces 2^-22.9). */
+#define FXW_EXP2_C0 1073741715u
+#define FXW_EXP2_C1 744268966u
+#define FXW_EXP2_C2 257850314u
+#define FXW_EXP2_C3 59979580u
+#define FXW_EXP2_C4 9609550u
+#define FXW_EXP2_C5 2033403u
+FXF_INLINE fxv_u32 fxw_exp2f30(fxv_u32 f)
+{
+    fxv_u32 p = fxv_add32(fxv_k32(FXW_EXP2_C4), fxw_mulhi(f, fxv_k32(FXW_EXP2_C5)));
+    p = fxv_add32(fxv_k32(FXW_EXP2_C3), fxw_mulhi(f, p));
+    p = fxv_add32(fxv_k32(FXW_EXP2_C2), fxw_mulhi(f, p));
+    p = fxv_add32(fxv_k32(FXW_EXP2_C1), fxw_mulhi(f, p));
+    return fxv_add32(fxv_k32(FXW_EXP2_C0), fxw_mulhi(f, p));
+}
+
+/* g(m) = m / (1 - 2^-m) (g(0) = 1/ln 2) as a fraction *n / *d, n Q26, d
+ * Q31, for m = M 2^-26 in [0, 60]:
+ *   m >= 1/2: n = M [<= 60 2^26 < 2^32], d = (1 - 2^-m) 2^31 [>= 0.29
+ *     2^31]: m = k + f, 2^-m 2^31 = 2^(1 - f) 2^30 >> k with 1 - f read
+ *     as ~F (2^-32 low: no 2^32), k clamped to 31 (2^-m 2^31 <= 1 there);
+ *   m < 1/2: n = (1/ln 2)(1 + x/2 + x^2/12 - x^4/720) Q26, x = m ln 2
+ *     (the series of x / (1 - e^-x), next term x^6/30240 < 2^-24), d = 2^31:
+ *     no cancellation in 1 - 2^-m near 0.  Terms: mq = m Q32 [< 2^31],
+ *     m^2, m^4 Q32 by hi. */
+#define FXW_INV_LN2_26 96817625u /* round(2^26 / ln 2) */
+#define FXW_LN2_12     248087039u /* round(ln 2 / 12 2^32) */
+#define FXW_LN2C_720   1986569u   /* round((ln 2)^3 / 720 2^32) */
+FXF_INLINE void fxw_gtr_g(fxv_u32 m, fxv_u32 *n, fxv_u32 *d)
+{
+    fxv_u32 mq = fxv_shl(fxv_min(m, fxv_k32((1u << 25) - 1)), 6);
+    fxv_u32 m2 = fxw_mulhi(mq, mq), m4 = fxw_mulhi(m2, m2);
+    fxv_u32 ns = fxv_sub32(fxv_add32(fxv_add32(fxv_k32(FXW_INV_LN2_26), fxv_shr(m, 1)),
+                                     fxv_shr(fxw_mulhi(m2, fxv_k32(FXW_LN2_12)), 6)),
+                           fxv_shr(fxw_mulhi(m4, fxv_k32(FXW_LN2C_720)), 6));
+    fxv_u32 k = fxv_min(fxv_shr(m, 26), fxv_k32(31));
+    fxv_u32 e = fxv_shrv(fxw_exp2f30(fxv_not(fxv_shl(m, 6))), k); /* 2^-m 2^31 */
+    fxv_u32 small = fxv_lt(m, fxv_k32(1u << 25));
+    *n = fxv_sel(small, ns, m);
+    *d = fxv_sel(small, fxv_k32(1u << 31), fxv_sub32(fxv_k32(1u << 31), fxv_min(e, fxv_k32(1u << 31))));
+}
+
+/* ---- GTR D -------------------------------------------------------------------
+ * D = c / d^gamma (facet.h), with L = log2 alpha^2 <= 0, M = (1 - gamma) L
+ * and g above: c = 2^-max(M, 0) g(|M|) / (pi g(|L|)), so
+ *   D = 2^Z g(|M|) / (pi g(|L|)),  Z = -gamma log2 d - max(M, 0) in [-60, 20]
+ * (-log2 d <= |L|: d >= alpha^2).  Stages:
+ *   d60 exact as ggx_d's [2^40 .. 2^60], normalised (fxw_norm_hl: e in
+ *     [3, 23]); -log2 d Q26 = (e - 3) 2^26 - log2m >> 5 [<= 20 2^26];
+ *   |L| Q26 = 2 (clz(A) - 16) 2^26 - log2m(A normalised) >> 4 [<= 20 2^26];
+ *   |M| Q26 = |G - 2^15| |L| >> 15 (64-bit product < 2^47) [<= 60 2^26];
+ *   Z + 64 in Q24 = (G (-log2 d)) >> 17 + 2^30 - (gamma > 1 ? |M| >> 2 : 0)
+ *     [in [4, 84] 2^24: < 2^31]; zi its integer part, F = its fraction Q32;
+ *   numerator n_M d_L (Q57, < 2^63), denominator d_M n_L, their top words
+ *     tn, td (fxw_top); nn = hi(2^F Q30, tn) [>= 2^29], dd = hi(td, pi 2^30);
+ *   D 2^13 = nn / dd 2^(zi + ed - en - 51), one fxr_div (b = 146 - zi - ed
+ *     + en >= 32: no wrap).
+ * gamma = 2 gives GGX, gamma = 1 GTR1 (the series at m = 0), alpha = 1
+ * and gamma = 0 give 1/pi, with no special case. */
+FXF_INLINE fxv_u32 fxf_fast_gtr_d(fxv_i32 noh, fxv_i32 alpha, fxv_i32 gamma)
+{
+    fxv_u32 n = fxf_unit(noh), a = fxf_alpha(alpha), g = fxv_clamp(gamma, 0, 4 * FACET_FX_ONE);
+    fxv_u32 na = fxv_mul32(n, a), e, ka, nld, la, gm, ma, z, nM, dM, nL, dL, tn, td, en, ed, nn, dd;
+    fxv_u64 d60 = fxv_add64(fxv_mulw(fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), n), fxv_add32(fxv_k32(FXF_ONE), n)),
+                                     fxv_k32(1u << 30)),
+                            fxv_mulw(na, na));
+    fxv_u32 dt = fxw_norm_hl(fxv_hi(d60), fxv_lo(d60), &e);
+    nld = fxv_sub32(fxv_shl(fxv_sub32(e, fxv_k32(3)), 26), fxv_shr(fxw_log2m31(dt), 5));
+    ka = fxv_clz(a);
+    la = fxv_sub32(fxv_shl(fxv_sub32(ka, fxv_k32(16)), 27), fxv_shr(fxw_log2m31(fxv_shlv(a, ka)), 4));
+    gm = fxv_sub32(fxv_max(g, fxv_k32(FXF_ONE)), fxv_min(g, fxv_k32(FXF_ONE))); /* |gamma - 1| Q15 */
+    ma = fxv_narrow(fxv_shr64(fxv_mulw(gm, la), 15));
+    z = fxv_sub32(fxv_add32(fxv_narrow(fxv_shr64(fxv_mulw(g, nld), 17)), fxv_k32(1u << 30)),
+                  fxv_sel(fxv_lt(fxv_k32(FXF_ONE), g), fxv_shr(ma, 2), fxv_k32(0)));
+    fxw_gtr_g(ma, &nM, &dM);
+    fxw_gtr_g(la, &nL, &dL);
+    tn = fxw_top(fxv_mulw(nM, dL), &en);
+    td = fxw_top(fxv_mulw(dM, nL), &ed);
+    nn = fxw_mulhi(fxw_exp2f30(fxv_shl(z, 8)), tn);
+    dd = fxw_mulhi(td, fxv_k32(FXF_PI_30));
+    return fxr_divb(nn, dd, fxv_sub32(fxv_add32(fxv_k32(146), en), fxv_add32(fxv_shr(z, 24), ed)), FACET_FX_MAX_D);
+}
+
+/* ---- Blinn-Phong and Beckmann D ---------------------------------------------
+ * Both are 2^-y times a prefactor whose peak is 1/(pi alpha^2) <= 2^20/pi,
+ * ggx_d's: UQ19.13 holds them.  The exponent y must be good to ~2^-20
+ * absolute (2^-y's relative error is ln 2 dy) wherever D is above the LSB,
+ * which is y < 64 (beyond, D 2^13 < 2^-29: 0): y is formed from exact
+ * products and reciprocals refined to 2^-30, with log2 keeping its
+ * relative precision near N.H = 1, then held in Q24 saturated at 128. */
+
+/* ~ 2^63 / m for m in [2^31, 2^32): the table reciprocal (2^-16) and one
+ * Newton step r (1 + (2^31 - t) / 2^31), t = hi(m, r) ~ 2^31 (one of the
+ * two corrections is 0): relative error <= 2^-29.5; result < 2^32 (at m =
+ * 2^31 the floor keeps it at 2^32 - 1). */
+FXF_INLINE fxv_u32 fxw_rcp32(fxv_u32 m)
+{
+    fxv_u32 r = fxv_shl(fxf_rcp20(m), 12), t = fxw_mulhi(m, r), h = fxv_k32(1u << 31);
+    fxv_u32 up = fxw_mulhi(r, fxv_shl(fxv_sub32(h, fxv_min(t, h)), 1));
+    fxv_u32 dn = fxw_mulhi(r, fxv_shl(fxv_sub32(fxv_max(t, h), h), 1));
+    return fxv_sub32(fxv_add32(r, up), dn);
+}
+
+/* round(v 2^(sb - 256)), ties up, for v < 2^31.5 and sb in [0, 2^10):
+ * a left shift (sb > 256; saturating at max) or a rounded right shift (0
+ * past 33) [every shift count in [0, 31]]. */
+FXF_INLINE fxv_u32 fxw_scale(fxv_u32 v, fxv_u32 sb, uint32_t max)
+{
+    fxv_u32 l = fxv_min(fxv_sub32(fxv_max(sb, fxv_k32(256)), fxv_k32(256)), fxv_k32(31));
+    fxv_u32 r = fxv_min(fxv_sub32(fxv_k32(256), fxv_min(sb, fxv_k32(256))), fxv_k32(33));
+    fxv_u32 rr = fxv_shr(fxv_add32(fxv_shrv(v, fxv_min(fxv_sub32(fxv_max(r, fxv_k32(1)), fxv_k32(1)), fxv_k32(31))),
+                                   fxv_k32(1)), 1);
+    fxv_u32 lv = fxv_sel(fxv_lt(fxv_shrv(fxv_k32(max), l), v), fxv_k32(max), fxv_shlv(v, l));
+    rr = fxv_sel(fxv_lt(r, fxv_k32(33)), rr, fxv_k32(0));
+    return fxv_sel(fxv_lt(sb, fxv_k32(256)), rr, lv);
+}
+
+/* 2^-y for y = y24 2^-24 in [0, 128]: 2^-(yi + 1) 2^(1 - f), 1 - f read as
+ * ~F (2^-32 low): returns 2^(1 - f) Q30 [2^30 .. 2^31], *yi the integer part */
+FXF_INLINE fxv_u32 fxw_exp2neg(fxv_u32 y24, fxv_u32 *yi)
+{
+    *yi = fxv_shr(y24, 24);
+    return fxw_exp2f30(fxv_not(fxv_shl(y24, 8)));
+}
+
+#define FXW_INV_PI_32 1367130551u /* round(2^32 / pi) */
+
+/* Blinn-Phong D = n^p / (pi alpha^2), p = 2 (1 - alpha^2) / alpha^2:
+ *   1/alpha^2 = rr 2^(ka - 33): A^2 Q30 exact, normalised (ka = clz), rr =
+ *     fxw_rcp32;
+ *   p = pq 2^(ka - 31 - kk): k2 = 2 (2^30 - A^2) Q30 exact [<= 2^31],
+ *     normalised by kk, pq = hi(k2 2^kk, rr) [>= 2^30, or 0 at alpha = 1];
+ *   lambda = -log2 n, relative precision everywhere: x = 1 - n = X 2^-15
+ *     exact; x < 1/32: (x + x^2/2 + ... + x^5/5) / ln 2 (Horner with
+ *     xq = X 2^17 Q32, the c_k of log2; relative error x^5/6 < 2^-27),
+ *     lambda = X ps 2^-46 (64-bit, exact product); else lambda = c - 16 -
+ *     log2 m (c = clz N, N 2^c = m 2^31), Q26 [<= 15 2^26] with absolute
+ *     error 2^-25.5, relative 2^-21 (lambda >= 0.046 there), as X ps
+ *     2^-46's scale (a product by 2^20); the two 64-bit values' halves
+ *     selected, normalised (fxw_norm_hl): lambda = lt 2^(-14 - el);
+ *   y = p lambda = yq 2^(ka - 13 - kk - el), yq = hi(pq, lt); Q24 by a
+ *     right shift, saturated at 128 where it would be a left one (y >= 64);
+ *   D 2^13 = 2^-y rr 2^(ka - 33) 2^13 / pi = v 2^(ka - yi - 19),
+ *     v = hi(hi(2^(1 - f) Q30, rr), 2^32/pi) [< 2^29.4]: fxw_scale.
+ * N.H = 0 gives 0 (n^p = 0) for alpha < 1; alpha = 1 is 1/pi everywhere. */
+FXF_INLINE fxv_u32 fxf_fast_blinn_phong_d(fxv_i32 noh, fxv_i32 alpha)
+{
+    fxv_u32 n = fxf_unit(noh), a = fxf_alpha(alpha), a2 = fxv_mul32(a, a);
+    fxv_u32 ka = fxv_clz(a2), rr = fxw_rcp32(fxv_shlv(a2, ka));
+    fxv_u32 k2 = fxv_shl(fxv_sub32(fxv_k32(1u << 30), a2), 1), kk = fxv_min(fxv_clz(k2), fxv_k32(31));
+    fxv_u32 pq = fxw_mulhi(fxv_shlv(k2, kk), rr);
+    fxv_u32 x = fxv_sub32(fxv_k32(FXF_ONE), n), xq = fxv_shl(fxv_min(x, fxv_k32(1023)), 17);
+    fxv_u32 ps = fxv_add32(fxv_k32(FXW_LOG2_C4), fxw_mulhi(xq, fxv_k32(FXW_LOG2_C5)));
+    fxv_u32 c = fxv_clz(fxv_max(n, fxv_k32(1))), l26, el, lt, sh, yq, y24, yi, e2, v;
+    fxv_u64 ls, ll;
+    fxv_u32 small = fxv_lt(x, fxv_k32(1024));
+    ps = fxv_add32(fxv_k32(FXW_LOG2_C3), fxw_mulhi(xq, ps));
+    ps = fxv_add32(fxv_k32(FXW_LOG2_C2), fxw_mulhi(xq, ps));
+    ps = fxv_add32(fxv_k32(FXW_LOG2_C1), fxw_mulhi(xq, ps));
+    ls = fxv_mulw(x, ps);
+    l26 = fxv_sub32(fxv_shl(fxv_sub32(c, fxv_k32(16)), 26), fxv_shr(fxw_log2m31(fxv_shlv(fxv_max(n, fxv_k32(1)), c)), 5));
+    ll = fxv_mulw(l26, fxv_k32(1u << 20));
+    lt = fxw_norm_hl(fxv_sel(small, fxv_hi(ls), fxv_hi(ll)), fxv_sel(small, fxv_lo(ls), fxv_lo(ll)), &el);
+    yq = fxw_mulhi(pq, lt);
+    sh = fxv_sub32(fxv_add32(fxv_add32(kk, el), fxv_k32(21)), ka); /* the right shift + 32 */
+    y24 = fxv_sel(fxv_lt(sh, fxv_k32(32)), fxv_k32(1u << 31),
+                  fxv_shrv(yq, fxv_min(fxv_sub32(fxv_max(sh, fxv_k32(32)), fxv_k32(32)), fxv_k32(31))));
+    y24 = fxv_min(y24, fxv_k32(1u << 31));
+    e2 = fxw_exp2neg(y24, &yi);
+    v = fxw_mulhi(fxw_mulhi(e2, rr), fxv_k32(FXW_INV_PI_32));
+    v = fxw_scale(fxv_shl(v, 2), fxv_sub32(fxv_add32(fxv_k32(256 - 21), ka), yi), FACET_FX_MAX_D);
+    return fxv_sel(fxv_and(fxv_lt(n, fxv_k32(1)), fxv_lt(a2, fxv_k32(1u << 30))), fxv_k32(0), v);
+}
+
+/* Beckmann D = 2^-z / (pi alpha^2 n^4), z = log2(e) (1 - n^2) / (n alpha)^2:
+ *   1/(n alpha) = rq 2^(kn - 33): N A Q30 exact [>= 32 for N >= 1],
+ *     normalised (kn = clz), rq = fxw_rcp32; r = 1/(n alpha)^2 = r2
+ *     2^(2 kn - 34), r2 = hi(rq, rq) [>= 2^30];
+ *   z = zq 2^(2 kn - kw - 31): W = (2^15 - N)(2^15 + N) Q30 exact,
+ *     normalised by kw, zq = hi(hi(W 2^kw, r2), log2(e) 2^31) [>= 2^28];
+ *     Q24 by a right shift, saturated at 128 where it would be a left one
+ *     (z >= 64: D 2^13 < 2^(13 + 21 - 64), the prefactor being <= 2^21
+ *     wherever z >= 64); W = 0 (N.H = 1) gives z = 0;
+ *   D 2^13 = 2^-z alpha^2 r^2 2^13 / pi: alpha^2 = am 2^(-ka - 30) (A^2
+ *     normalised), r^2 = r4 2^(4 kn - 36), r4 = hi(r2, r2) [>= 2^28];
+ *     v = hi(hi(hi(2^(1 - f) Q30, am), r4), 2^32/pi) [< 2^30.4]:
+ *     D 2^13 = v 2^(4 kn - zi - ka - 20) (<= 2^31.35: the shift is at most
+ *     8 left, where v is small), fxw_scale.
+ * N.H = 0 gives 0. */
+FXF_INLINE fxv_u32 fxf_fast_beckmann_d(fxv_i32 noh, fxv_i32 alpha)
+{
+    fxv_u32 n = fxf_unit(noh), a = fxf_alpha(alpha), a2 = fxv_mul32(a, a);
+    fxv_u32 na = fxv_mul32(fxv_max(n, fxv_k32(1)), a), kn = fxv_clz(na), rq = fxw_rcp32(fxv_shlv(na, kn));
+    fxv_u32 r2 = fxw_mulhi(rq, rq), r4 = fxw_mulhi(r2, r2);
+    fxv_u32 w = fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), n), fxv_add32(fxv_k32(FXF_ONE), n));
+    fxv_u32 kw = fxv_min(fxv_clz(w), fxv_k32(31)), ka = fxv_clz(a2), zq, sh, z24, zi, e2, v;
+    zq = fxw_mulhi(fxw_mulhi(fxv_shlv(w, kw), r2), fxv_k32(FXW_LOG2_C1));
+    sh = fxv_sub32(fxv_add32(kw, fxv_k32(7 + 64)), fxv_shl(kn, 1)); /* the right shift + 64 */
+    z24 = fxv_sel(fxv_lt(sh, fxv_k32(64)), fxv_k32(1u << 31),
+                  fxv_shrv(zq, fxv_min(fxv_sub32(fxv_max(sh, fxv_k32(64)), fxv_k32(64)), fxv_k32(31))));
+    z24 = fxv_sel(fxv_lt(w, fxv_k32(1)), fxv_k32(0), fxv_min(z24, fxv_k32(1u << 31)));
+    e2 = fxw_exp2neg(z24, &zi);
+    v = fxw_mulhi(fxw_mulhi(fxw_mulhi(e2, fxv_shlv(a2, ka)), r4), fxv_k32(FXW_INV_PI_32));
+    v = fxw_scale(v, fxv_sub32(fxv_add32(fxv_k32(256 - 20), fxv_shl(kn, 2)), fxv_add32(zi, ka)), FACET_FX_MAX_D);
+    return fxv_sel(fxv_lt(n, fxv_k32(1)), fxv_k32(0), v);
+}
+
 /* ---- Smith, exact ------------------------------------------------------------
  * r(x) = sqrt(w), w = a^2 (1 - x)(1 + x) + x^2: w60 = A^2 (2^15 - X)(2^15 + X)
  * + X^2 2^30 Q60 exact [<= 2^60, >= a^2 2^60 >= 2^40]; its top 32 bits
@@ -299,6 +602,154 @@ FXF_INLINE fxv_u32 fxf_fast_smith_g2_uncorrelated(fxv_i32 nol, fxv_i32 nov, fxv_
     fxv_u32 dv = fxv_add32(fxv_shl(nv, 15), fxw_smith_r30(nv, a2));
     fxv_u32 pt = fxw_top(fxv_mulw(dl, dv), &e);
     return fxr_divb(fxv_mul32(nl, nv), pt, fxv_sub32(fxv_k32(80), e), FXF_ONE);
+}
+
+/* ---- Smith G1 for GTR (Dimov) ------------------------------------------------
+ * Q15 output, so every stage is held to an absolute error (~2^-20 in Q30).
+ * The five closed forms of facet.h divided through by powers of W
+ * (smith_g1's root) are functions of nu = n / W in [0, 1] and alpha^2, O(1)
+ * at every alpha (the undivided forms go as alpha^4 at small n):
+ *   y0 = 2n / (1 + n)
+ *   y1 = nu D / (nu D + e s2 T), D = (W + 1)(n + W), T = 1 + nu (1 - R(u)),
+ *        u = (1 - alpha^2) s2 / D, e = (alpha^2 - 1) / ln alpha^2
+ *   y2 = 2 nu / (1 + nu)
+ *   y3 = 4 b nu / ((3 alpha^2 + 1)(1 - nu^2) + 2 b nu (1 + nu)), b = 1 + alpha^2
+ *   y4 = 2 nu / (nu (1 + nu^3) + 3 / (8 K) (1 - nu^2)(P5 (1 - nu^2) + 4 P2 nu^2)),
+ *        K = alpha^4 + alpha^2 + 1 (facet.h's K / 8), P5, P2 as facet.h
+ * (W^2 = n^2 + alpha^2 s2, so alpha^2 s2 / W^2 = 1 - nu^2).  The y are
+ * non-decreasing in gamma (checked against the oracle on a 401 x 4001 grid
+ * of (alpha, N.V): min difference -2e-16), so the monotone cubic works on
+ * differences d_j >= 0 (formed as max(y_j+1, y_j) - y_j) and no stage is
+ * signed. */
+
+/* num / den in Q30 for values with num / den < 2 (num, den < 2^32, den
+ * >= 1): both normalised, one refined reciprocal (fxw_rcp32): q = hi(num
+ * 2^kn, rcp) in [2^30, 2^32), the quotient q 2^(kd - kn - 1); relative
+ * error <= 2^-29, truncated.  num = 0 gives 0. */
+FXF_INLINE fxv_u32 fxw_div30(fxv_u32 num, fxv_u32 den)
+{
+    fxv_u32 kn = fxv_min(fxv_clz(num), fxv_k32(31)), kd = fxv_clz(den);
+    fxv_u32 q = fxw_mulhi(fxv_shlv(num, kn), fxw_rcp32(fxv_shlv(den, kd)));
+    fxv_u32 sb = fxv_sub32(fxv_add32(kn, fxv_k32(33)), kd); /* the right shift + 32 */
+    return fxv_sel(fxv_lt(sb, fxv_k32(32)), fxv_k32(1u << 31),
+                   fxv_shrv(q, fxv_min(fxv_sub32(fxv_max(sb, fxv_k32(32)), fxv_k32(32)), fxv_k32(31))));
+}
+
+/* x y for Q30 x, y <= 2^31: Q30 [x y < 2^32 there] */
+FXF_INLINE fxv_u32 fxw_mul30(fxv_u32 x, fxv_u32 y) { return fxw_mulhi(fxv_shl(x, 1), fxv_shl(y, 1)); }
+
+#define FXW_LN2_32   2977044472u /* round(ln 2 2^32) */
+#define FXW_THIRD_32 1431655765u /* round(2^32 / 3) */
+#define FXW_FIFTH_32 858993459u  /* round(2^32 / 5) */
+
+FXF_INLINE fxv_u32 fxf_fast_smith_g1_gtr(fxv_i32 nov, fxv_i32 alpha, fxv_i32 gamma)
+{
+    fxv_u32 n = fxf_unit(nov), a = fxf_alpha(alpha), gg = fxv_clamp(gamma, 0, 4 * FACET_FX_ONE);
+    fxv_u32 a2 = fxv_mul32(a, a), s2 = fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), n), fxv_add32(fxv_k32(FXF_ONE), n));
+    fxv_u32 n30 = fxv_shl(n, 15), ew, kw, w0, w1, nu, nu2, om, nu3, b, y0, y1, y2, y3, y4;
+    fxv_u32 wt, q, d28, kd, u20, uq, omr, xl, cl, l26, ku, r32, t30, ka, la, nL, dL, e30, es2t, nud;
+    fxv_u32 a4, k28, p5, p2, inner, k32, t1, t2, d0, d1, d2, d3, m0, m1, m2, m3, m4, f;
+    fxv_u32 j, t, omt, t2q, h01, h10, h11, yj, dj, mj, mk, pos, neg, s;
+    fxv_u64 w60 = fxv_add64(fxv_mulw(a2, s2), fxv_mulw(fxv_mul32(n, n), fxv_k32(1u << 30)));
+    /* W = sqrt(w): the table root, one Heron step (W + w / W) / 2 with w /
+     * W = hi(wt, rcp(W)) 2^(kw - ew + 1) Q30 (w normalised by fxw_norm_hl,
+     * w60 >= 2^40): error <= 2^-28 relative */
+    w0 = fxw_smith_r30(n, a2);
+    wt = fxw_norm_hl(fxv_hi(w60), fxv_lo(w60), &ew);
+    kw = fxv_clz(w0);
+    q = fxw_mulhi(wt, fxw_rcp32(fxv_shlv(w0, kw)));
+    q = fxv_shrv(q, fxv_min(fxv_sub32(fxv_max(fxv_add32(ew, fxv_k32(31)), fxv_add32(kw, fxv_k32(32))),
+                                      fxv_add32(kw, fxv_k32(32))), fxv_k32(31)));
+    w1 = fxv_min(fxv_shr(fxv_add32(fxv_add32(w0, q), fxv_k32(1)), 1), fxv_k32(1u << 30));
+    nu = fxv_min(fxw_div30(n30, w1), fxv_k32(1u << 30));
+    nu2 = fxw_mul30(nu, nu);
+    om = fxv_sub32(fxv_k32(1u << 30), nu2);                     /* 1 - nu^2 */
+    nu3 = fxw_mul30(nu2, nu);
+    b = fxv_add32(fxv_k32(1u << 30), a2);                       /* <= 2^31 */
+    /* y0, y2 */
+    y0 = fxw_div30(fxv_shl(n, 16), fxv_add32(fxv_k32(1u << 30), n30));
+    y2 = fxw_div30(fxv_shl(nu, 1), fxv_add32(fxv_k32(1u << 30), nu));
+    /* y3 in Q27 stages [num <= 8, den <= 12 ... both < 2^31] */
+    {
+        fxv_u32 bnu = fxw_mulhi(b, nu);                                   /* b nu Q28 */
+        fxv_u32 c28 = fxv_add32(fxv_mul32(fxv_shr(a2, 2), fxv_k32(3)), fxv_k32(1u << 28));
+        fxv_u32 den = fxv_add32(fxv_shl(fxw_mulhi(c28, om), 1),
+                                fxv_shl(fxw_mulhi(bnu, fxv_add32(fxv_k32(1u << 30), nu)), 2));
+        y3 = fxv_min(fxw_div30(fxv_shl(bnu, 1), den), fxv_k32(1u << 30));
+    }
+    /* y4 in Q28 stages: K, P5, P2 Q28 [<= 3, 8, 4]; inner = P5 (1 - nu^2) +
+     * 4 P2 nu^2 Q26 [<= 16]; k = 3 / (8 K) Q32 [<= 3/8]; den Q28 [<= 8] */
+    a4 = fxw_mul30(a2, a2);
+    k28 = fxv_add32(fxv_add32(fxv_shr(a4, 2), fxv_shr(a2, 2)), fxv_k32(1u << 28));
+    p5 = fxv_add32(fxv_add32(fxv_mul32(fxv_shr(a4, 2), fxv_k32(5)), fxv_shr(a2, 1)), fxv_k32(1u << 28));
+    p2 = fxv_add32(fxv_add32(fxv_shr(a4, 1), fxv_shr(a2, 2)), fxv_k32(1u << 28));
+    inner = fxv_add32(fxw_mulhi(p5, om), fxv_shl(fxw_mulhi(p2, nu2), 2));
+    k32 = fxv_shl(fxw_div30(fxv_k32(3u << 25), k28), 2);
+    t1 = fxv_shr(fxw_mulhi(fxv_shl(nu, 1), fxv_add32(fxv_k32(1u << 30), nu3)), 1);      /* nu (1 + nu^3) Q28 */
+    t2 = fxv_shl(fxw_mulhi(fxv_shl(fxw_mulhi(k32, om), 1), fxv_shl(inner, 1)), 2);     /* Q28 */
+    y4 = fxv_min(fxw_div30(fxv_shr(nu, 1), fxv_add32(t1, t2)), fxv_k32(1u << 30));
+    /* y1: D = (W + 1)(n + W) Q28 [<= 4, >= alpha]; u = (1 - a^2) s2 / D Q20
+     * [<= 2^10]; 1 - R(u) Q32 by the series u (1/2 - u (1/3 - u (1/4 - u/5)))
+     * below u = 1/16 (error u^5/6 < 2^-22), else 1 - ln 2 log2(1 + u) / u
+     * (log2 by clz + fxw_log2m31, 1/u refined); e = 1 / (ln 2 g(|L|)) from
+     * gtr_d's g. */
+    d28 = fxw_mulhi(fxv_add32(fxv_k32(1u << 30), w1), fxv_add32(n30, w1));
+    kd = fxv_clz(d28);
+    u20 = fxw_mulhi(fxw_mul30(fxv_sub32(fxv_k32(1u << 30), a2), s2), fxw_rcp32(fxv_shlv(d28, kd)));
+    u20 = fxv_shrv(u20, fxv_sub32(fxv_k32(13), fxv_min(kd, fxv_k32(13))));
+    uq = fxv_shl(fxv_min(u20, fxv_k32(0xFFFF)), 12);
+    omr = fxv_sub32(fxv_k32(1u << 30), fxw_mulhi(uq, fxv_k32(FXW_FIFTH_32)));
+    omr = fxv_sub32(fxv_k32(FXW_THIRD_32), fxw_mulhi(uq, omr));
+    omr = fxv_sub32(fxv_k32(1u << 31), fxw_mulhi(uq, omr));
+    omr = fxw_mulhi(uq, omr);
+    xl = fxv_add32(fxv_k32(1u << 20), u20);
+    cl = fxv_clz(xl);
+    l26 = fxv_add32(fxv_shl(fxv_sub32(fxv_k32(11), fxv_min(cl, fxv_k32(11))), 26), fxv_shr(fxw_log2m31(fxv_shlv(xl, cl)), 5));
+    ku = fxv_clz(fxv_max(u20, fxv_k32(1)));
+    r32 = fxw_mulhi(fxw_mulhi(l26, fxw_rcp32(fxv_shlv(fxv_max(u20, fxv_k32(1)), ku))), fxv_k32(FXW_LN2_32));
+    r32 = fxv_shlv(r32, fxv_sub32(fxv_max(ku, fxv_k32(5)), fxv_k32(5)));   /* u >= 1/16: ku <= 11 */
+    r32 = fxv_shrv(r32, fxv_sub32(fxv_k32(5), fxv_min(ku, fxv_k32(5))));
+    omr = fxv_sel(fxv_lt(u20, fxv_k32(1u << 16)), omr, fxv_not(r32));
+    t30 = fxv_add32(fxv_k32(1u << 30), fxw_mulhi(nu, omr));
+    ka = fxv_clz(a);
+    la = fxv_sub32(fxv_shl(fxv_sub32(ka, fxv_k32(16)), 27), fxv_shr(fxw_log2m31(fxv_shlv(a, ka)), 4));
+    fxw_gtr_g(la, &nL, &dL);
+    e30 = fxv_min(fxw_div30(fxv_shr(dL, 5), fxw_mulhi(nL, fxv_k32(FXW_LN2_32))), fxv_k32(1u << 30));
+    es2t = fxw_mulhi(fxw_mul30(e30, s2), t30);                    /* Q28 <= 2 */
+    nud = fxw_mulhi(fxv_shl(nu, 1), fxv_shl(d28, 1));               /* nu D Q28 <= 4 */
+    y1 = fxv_min(fxw_div30(nud, fxv_add32(nud, es2t)), fxv_k32(1u << 30));
+    /* the monotone cubic (Fritsch-Carlson) on d_j >= 0 */
+    d0 = fxv_sub32(fxv_max(y1, y0), y0);
+    d1 = fxv_sub32(fxv_max(y2, y1), y1);
+    d2 = fxv_sub32(fxv_max(y3, y2), y2);
+    d3 = fxv_sub32(fxv_max(y4, y3), y3);
+    m0 = fxv_shr(fxv_sub32(fxv_max(fxv_mul32(d0, fxv_k32(3)), d1), d1), 1);
+    m4 = fxv_shr(fxv_sub32(fxv_max(fxv_mul32(d3, fxv_k32(3)), d2), d2), 1);
+    /* 2 a b / (a + b) = 2 a f, f = b / (a + b) */
+    f = fxw_div30(d1, fxv_max(fxv_add32(d0, d1), fxv_k32(1)));
+    m1 = fxv_shl(fxw_mul30(d0, f), 1);
+    f = fxw_div30(d2, fxv_max(fxv_add32(d1, d2), fxv_k32(1)));
+    m2 = fxv_shl(fxw_mul30(d1, f), 1);
+    f = fxw_div30(d3, fxv_max(fxv_add32(d2, d3), fxv_k32(1)));
+    m3 = fxv_shl(fxw_mul30(d2, f), 1);
+    j = fxv_min(fxv_shr(gg, 15), fxv_k32(3));
+    t = fxv_sub32(gg, fxv_shl(j, 15));                              /* Q15 in [0, 2^15] */
+    omt = fxv_sub32(fxv_k32(FXF_ONE), t);
+    t2q = fxv_mul32(t, t);                                          /* Q30 */
+    h01 = fxv_shl(fxw_mulhi(fxv_shl(t2q, 1), fxv_shl(fxv_sub32(fxv_k32(3 * FXF_ONE), fxv_shl(t, 1)), 15)), 1);
+    h10 = fxw_mulhi(fxv_shl(fxv_mul32(omt, omt), 1), fxv_shl(t, 16));
+    h11 = fxw_mulhi(fxv_shl(t2q, 1), fxv_shl(omt, 16));
+    {
+        fxv_u32 i1 = fxv_lt(j, fxv_k32(1)), i2 = fxv_lt(j, fxv_k32(2)), i3 = fxv_lt(j, fxv_k32(3));
+        yj = fxv_sel(i1, y0, fxv_sel(i2, y1, fxv_sel(i3, y2, y3)));
+        dj = fxv_sel(i1, d0, fxv_sel(i2, d1, fxv_sel(i3, d2, d3)));
+        mj = fxv_sel(i1, m0, fxv_sel(i2, m1, fxv_sel(i3, m2, m3)));
+        mk = fxv_sel(i1, m1, fxv_sel(i2, m2, fxv_sel(i3, m3, m4)));
+    }
+    pos = fxv_add32(fxv_add32(yj, fxw_mul30(h01, dj)), fxw_mul30(h10, mj));
+    neg = fxw_mul30(h11, mk);
+    s = fxv_min(fxv_sub32(pos, fxv_min(pos, neg)), fxv_k32(1u << 30));
+    return fxv_shr(fxv_add32(s, fxv_k32(1u << 14)), 15);
 }
 
 /* ---- Smith, Hammon ------------------------------------------------------------
@@ -392,9 +843,9 @@ FXF_INLINE fxv_u32 fxf_fast_smith_g1_beckmann(fxv_i32 nov, fxv_i32 alpha)
     fxv_u32 w = fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), n), fxv_add32(fxv_k32(FXF_ONE), n));
     fxv_u32 p2 = fxw_mulhi(fxv_shl(fxv_mul32(a, a), 1), fxv_shl(w, 1));
     fxv_u32 branch = fxv_lt(fxv_mul32(fxv_shr(fxv_mul32(n, n), 6), fxv_k32(25)), p2);
-    fxf_root r = fxf_sqrt32(fxv_max(fxv_shl(w, 2), fxv_k32(1u << 16)));
-    fxv_u32 pm = fxw_mulhi(fxv_shl(a, 16), fxv_shl(r.s, 12));
-    fxv_u32 c = fxr_divb(n, pm, fxv_sub32(fxv_k32(50), r.h), 858993459u); /* 1.6 2^29 */
+    fxv_u32 rh, rs = fxf_sqrt32(fxv_max(fxv_shl(w, 2), fxv_k32(1u << 16)), &rh);
+    fxv_u32 pm = fxw_mulhi(fxv_shl(a, 16), fxv_shl(rs, 12));
+    fxv_u32 c = fxr_divb(n, pm, fxv_sub32(fxv_k32(50), rh), 858993459u); /* 1.6 2^29 */
     fxv_u32 cc = fxw_mulhi(fxv_shl(c, 2), fxv_shl(c, 1));
     fxv_u32 en, ed, nt, dt, g;
     nt = fxw_top(fxv_add64(fxv_mulw(c, fxv_k32(FXW_WALTER_A)), fxv_mulw(cc, fxv_k32(FXW_WALTER_B))), &en);
@@ -534,7 +985,7 @@ FXF_INLINE fxv_u32 fxf_p5(fxv_u32 x)
 /* split in two for the RGB form (the shape before albedo enters, then the
  * albedo part); integer sums, so the same bits as one expression */
 FXF_INLINE fxv_u32 fxw_diffuse26_shape(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 s,
-                                       fxv_u32 c, fxv_u32 x, fxv_u32 k, fxf_root lh)
+                                       fxv_u32 c, fxv_u32 x, fxv_u32 k, fxv_u32 lh_s, fxv_u32 lh_h)
 {
     fxv_u32 pp = fxw_mulhi(fxf_p5(nl), fxf_p5(nv));                                   /* Q30 */
     fxv_u32 k1 = fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), a), fxv_k32(FXW_C105));       /* Q30 <= 2^30.07 */
@@ -542,8 +993,8 @@ FXF_INLINE fxv_u32 fxw_diffuse26_shape(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u3
     fxv_u32 t45 = fxv_sub32(fxv_k32(9u << 28), fxv_shr(c, 2));                       /* Q29 */
     fxv_u32 mh = fxw_mulhi(x, t45);
     fxv_u32 ks = fxv_clz(s), rs = fxf_rcp20(fxv_shlv(s, ks));
-    fxv_u32 q = fxv_add32(fxv_k32(1u << 24), fxv_shrv(fxw_mulhi(fxv_shl(lh.s, 12), fxv_shl(rs, 12)),
-                                                      fxv_sub32(fxv_add32(lh.h, fxv_k32(24)), ks)));
+    fxv_u32 q = fxv_add32(fxv_k32(1u << 24), fxv_shrv(fxw_mulhi(fxv_shl(lh_s, 12), fxv_shl(rs, 12)),
+                                                      fxv_sub32(fxv_add32(lh_h, fxv_k32(24)), ks)));
     /* a t (4.5 - t) / 10 = x1 2^-(31 + k) [mh < 4.5 2^29: t < 2^(1 - k);
      * A floor(2^20 / 10) < 2^31.68: x1 < 2^30.85]; a rough = x2 2^-(24 + k),
      * x2 = hi(2 x1, q); Q25: 2 x2 >> k [a rough 2^(25 + k) < 2^31.9: rough
@@ -561,19 +1012,20 @@ FXF_INLINE fxv_u32 fxw_diffuse26_albedo(fxv_u32 shape, fxv_u32 a, fxv_u32 alb)
 }
 
 FXF_INLINE fxv_u32 fxw_diffuse26(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 alb, fxv_u32 s,
-                                    fxv_u32 c, fxv_u32 x, fxv_u32 k, fxf_root lh)
+                                    fxv_u32 c, fxv_u32 x, fxv_u32 k, fxv_u32 lh_s, fxv_u32 lh_h)
 {
-    return fxw_diffuse26_albedo(fxw_diffuse26_shape(nl, nv, a, s, c, x, k, lh), a, alb);
+    return fxw_diffuse26_albedo(fxw_diffuse26_shape(nl, nv, a, s, c, x, k, lh_s, lh_h), a, alb);
 }
 
 FXF_INLINE fxv_u32 fxf_fast_diffuse_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
                                               fxv_i32 albedo)
 {
     fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov);
-    fxf_dots g = fxf_dots_of(nl, nv, lov);
-    fxf_root lh = fxf_sqrt32(g.c);
-    fxv_u32 k = fxv_shl(lh.h, 1);
-    fxv_u32 d = fxw_diffuse26(nl, nv, fxf_alpha(alpha), fxf_unit(albedo), g.s, g.c, fxv_shlv(g.c, k), k, lh);
+    fxv_u32 gs, gu, gw, gc, lh_h, lh_s, k, d;
+    fxf_dots_of(nl, nv, lov, &gs, &gu, &gw, &gc);
+    lh_s = fxf_sqrt32(gc, &lh_h);
+    k = fxv_shl(lh_h, 1);
+    d = fxw_diffuse26(nl, nv, fxf_alpha(alpha), fxf_unit(albedo), gs, gc, fxv_shlv(gc, k), k, lh_s, lh_h);
     return fxv_shr(fxv_add32(fxv_shl(d, 1), fxv_k32(5)), 3); /* (d + 2.5) / 4: + half the mean floor */
 }
 
@@ -598,81 +1050,84 @@ FXF_INLINE fxv_u32 fxf_fast_diffuse_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov
 /* What brdf_hammon computes before f0 and albedo enter; the RGB form
  * (facet_brdf_hammon_rgb_fx_fast) shares it across channels, and per
  * channel runs the same operations, so each channel is brdf_hammon's bits. */
-typedef struct fxf_brdf_geom {
-    fxv_u32 a, y5, k5, ka, k, g2, ee, em, kd, rd, shape;
-} fxf_brdf_geom;
+/* the geometry's 11 lanes, passed as out-parameters
+ * and then as values (sizeless vector types: no struct) */
+#define FXF_BRDF_GEOM_PARAMS_(T, P) \
+    T P##a, T P##y5, T P##k5, T P##ka, T P##k, T P##g2, T P##ee, T P##em, T P##kd, T P##rd, T P##shape
+#define FXF_BRDF_GEOM_ARGS_(P) P##a, P##y5, P##k5, P##ka, P##k, P##g2, P##ee, P##em, P##kd, P##rd, P##shape
 
-FXF_INLINE fxf_brdf_geom fxf_fast_brdf_geometry(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha)
+FXF_INLINE void fxf_fast_brdf_geometry(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
+                                       FXF_BRDF_GEOM_PARAMS_(fxv_u32 *, G_))
 {
-    fxf_brdf_geom G;
     fxv_u32 nl = fxf_cos(nol), nv = fxf_cos(nov), a = fxf_alpha(alpha);
-    fxf_dots g = fxf_dots_of(nl, nv, lov);
-    fxf_root lh = fxf_sqrt32(g.c);
-    fxv_u32 k = fxv_shl(lh.h, 1), x = fxv_shlv(g.c, k);             /* 2t = x 2^-(30 + k) */
+    fxv_u32 gs, gu, gw, gc, lh_s, lh_h, k, x;
     fxv_u32 r1, uu, ku, ym, y2, y4, a2t;
     fxv_u32 as, ee, em, etop, mtop, e2, dm;
+    fxf_dots_of(nl, nv, lov, &gs, &gu, &gw, &gc);
+    lh_s = fxf_sqrt32(gc, &lh_h);
+    k = fxv_shl(lh_h, 1);
+    x = fxv_shlv(gc, k); /* 2t = x 2^-(30 + k) */
     /* Fresnel's y^5 */
-    r1 = fxf_rcp20(fxv_add32(fxv_k32(1u << 31), fxv_shlv(lh.s, fxv_sub32(fxv_k32(11), lh.h)))); /* (1 + L.H) Q31 */
-    uu = fxv_max(g.u, fxv_k32(1));
+    r1 = fxf_rcp20(fxv_add32(fxv_k32(1u << 31), fxv_shlv(lh_s, fxv_sub32(fxv_k32(11), lh_h)))); /* (1 + L.H) Q31 */
+    uu = fxv_max(gu, fxv_k32(1));
     ku = fxv_clz(uu);
     ym = fxw_mulhi(fxv_shlv(uu, ku), fxv_shl(r1, 12));
     y2 = fxw_mulhi(ym, ym);
     y4 = fxw_mulhi(y2, y2);
-    G.y5 = fxw_mulhi(y4, ym);
-    G.k5 = fxv_add32(fxv_shl(ku, 2), ku);
+    *G_y5 = fxw_mulhi(y4, ym);
+    *G_k5 = fxv_add32(fxv_shl(ku, 2), ku);
     /* (a 2t)^2 */
-    G.ka = fxv_clz(a);
-    a2t = fxw_mulhi(fxv_shlv(a, G.ka), x);
-    G.g2 = fxw_mulhi(a2t, a2t);
+    *G_ka = fxv_clz(a);
+    a2t = fxw_mulhi(fxv_shlv(a, *G_ka), x);
+    *G_g2 = fxw_mulhi(a2t, a2t);
     /* e^2 m */
-    as = fxv_mul32(a, g.s);
-    etop = fxw_top(fxv_add64(fxv_mulw(as, as), fxv_mulw(g.w, fxv_k32(1u << 30))), &ee);
+    as = fxv_mul32(a, gs);
+    etop = fxw_top(fxv_add64(fxv_mulw(as, as), fxv_mulw(gw, fxv_k32(1u << 30))), &ee);
     /* m30 = (1 - a) 2 nl nv 2^30 + A S = hi(2 NL NV, (2^15 - A) 2^17) + A S
      * [(2^15 - 32) 2^17 < 2^32; m <= 2: m30 <= 2^31; m >= 2^-15: m30 >= 2^15,
      * truncation <= 2^-15 relative], normalised: m = mtop 2^-(30 + km) */
     mtop = fxv_add32(fxw_mulhi(fxv_shl(fxv_mul32(nl, nv), 1), fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), a), 17)), as);
     em = fxv_clz(mtop);
     mtop = fxv_shlv(mtop, em);
-    G.em = fxv_add32(em, fxv_k32(17));
-    G.ee = ee;
+    *G_em = fxv_add32(em, fxv_k32(17));
+    *G_ee = ee;
     /* e = etop 2^-(28 + ee), m = mtop 2^-(13 + em) */
     e2 = fxw_mulhi(etop, etop);                        /* 2^-(24 + 2 ee) */
     dm = fxw_mulhi(e2, mtop);                          /* 2^-(5 + 2 ee + em) [>= 2^29] */
-    G.kd = fxv_clz(dm);
-    G.rd = fxf_rcp20(fxv_shlv(dm, G.kd));   /* 1/(e^2 m) = rd 2^(2ee + em + kd - 46) */
-    G.a = a;
-    G.k = k;
-    G.shape = fxw_diffuse26_shape(nl, nv, a, g.s, g.c, x, k, lh);
-    return G;
+    *G_kd = fxv_clz(dm);
+    *G_rd = fxf_rcp20(fxv_shlv(dm, *G_kd));   /* 1/(e^2 m) = rd 2^(2ee + em + kd - 46) */
+    *G_a = a;
+    *G_k = k;
+    *G_shape = fxw_diffuse26_shape(nl, nv, a, gs, gc, x, k, lh_s, lh_h);
 }
 
-FXF_INLINE fxv_u64 fxf_fast_brdf_channel(const fxf_brdf_geom *G, fxv_i32 f0_in, fxv_i32 albedo)
+FXF_INLINE fxv_u64 fxf_fast_brdf_channel(FXF_BRDF_GEOM_PARAMS_(fxv_u32, G_), fxv_i32 f0_in, fxv_i32 albedo)
 {
     fxv_u32 f0 = fxf_unit(f0_in);
     fxv_u32 kf, jj, ft, fs, kF, num, sp, ks, es, sl, sr;
     fxv_u64 spec, d64;
     /* F = f0 + (1 - f0) y^5 */
     kf = fxv_sub32(fxv_clz(f0), fxv_k32(16));            /* f0 = 0: 16 */
-    jj = fxv_min(G->k5, kf);
-    ft = fxw_mulhi(G->y5, fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), f0), 16));
+    jj = fxv_min(G_k5, kf);
+    ft = fxw_mulhi(G_y5, fxv_shl(fxv_sub32(fxv_k32(FXF_ONE), f0), 16));
     fs = fxv_add32(fxv_shlv(f0, fxv_add32(jj, fxv_k32(15))),
-                   fxv_shrv(ft, fxv_min(fxv_sub32(fxv_add32(G->k5, fxv_k32(1)), jj), fxv_k32(31))));
+                   fxv_shrv(ft, fxv_min(fxv_sub32(fxv_add32(G_k5, fxv_k32(1)), jj), fxv_k32(31))));
     kF = fxv_min(fxv_clz(fs), fxv_k32(31)); /* fs = 0 (F < 2^-46): spec 0 */
-    num = fxw_mulhi(G->g2, fxv_shlv(fs, kF));              /* 2^-(2ka + 2k + jj + kF - 8) */
-    sp = fxw_mulhi(fxw_mulhi(num, fxv_shl(G->rd, 12)), fxv_k32(FXW_INV_2PI));
+    num = fxw_mulhi(G_g2, fxv_shlv(fs, kF));              /* 2^-(2ka + 2k + jj + kF - 8) */
+    sp = fxw_mulhi(fxw_mulhi(num, fxv_shl(G_rd, 12)), fxv_k32(FXW_INV_2PI));
     /* spec = sp 2^-Es, Es = 2ka + 2k + jj + kF + 18 - 2ee - em - kd [sp >=
      * 2^21], normalised: + ks, held biased by 256 [Es >= -2: spec < 2^33];
      * Q29: sp 2^(29 - Es) < 2^62, a left shift sl <= 30 or a right one */
     ks = fxv_min(fxv_clz(sp), fxv_k32(31));
     sp = fxv_shlv(sp, ks);
-    es = fxv_sub32(fxv_add32(fxv_add32(fxv_add32(fxv_shl(fxv_add32(G->ka, G->k), 1), jj), fxv_add32(kF, ks)),
+    es = fxv_sub32(fxv_add32(fxv_add32(fxv_add32(fxv_shl(fxv_add32(G_ka, G_k), 1), jj), fxv_add32(kF, ks)),
                              fxv_k32(274)),
-                   fxv_add32(fxv_add32(fxv_shl(G->ee, 1), G->em), G->kd));
+                   fxv_add32(fxv_add32(fxv_shl(G_ee, 1), G_em), G_kd));
     sl = fxv_sub32(fxv_k32(285), fxv_min(es, fxv_k32(285)));
     sr = fxv_min(fxv_sub32(fxv_max(es, fxv_k32(285)), fxv_k32(285)), fxv_k32(31));
     spec = fxv_mulw(fxv_shrv(sp, sr), fxv_shlv(fxv_k32(1), sl));
     /* diffuse Q26 to Q29 plus half a Q26 unit: the mean of its last floor */
-    d64 = fxv_mulw(fxv_add32(fxv_shl(fxw_diffuse26_albedo(G->shape, G->a, fxf_unit(albedo)), 1), fxv_k32(1)),
+    d64 = fxv_mulw(fxv_add32(fxv_shl(fxw_diffuse26_albedo(G_shape, G_a, fxf_unit(albedo)), 1), fxv_k32(1)),
                    fxv_k32(4));
     return fxb_rshr64(fxv_add64(spec, d64), 5);
 }
@@ -680,8 +1135,9 @@ FXF_INLINE fxv_u64 fxf_fast_brdf_channel(const fxf_brdf_geom *G, fxv_i32 f0_in, 
 FXF_INLINE fxv_u64 fxf_fast_brdf_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv_i32 alpha,
                                            fxv_i32 f0_in, fxv_i32 albedo)
 {
-    fxf_brdf_geom G = fxf_fast_brdf_geometry(nol, nov, lov, alpha);
-    return fxf_fast_brdf_channel(&G, f0_in, albedo);
+    fxv_u32 FXF_BRDF_GEOM_ARGS_(G_);
+    fxf_fast_brdf_geometry(nol, nov, lov, alpha, FXF_BRDF_GEOM_ARGS_(&G_));
+    return fxf_fast_brdf_channel(FXF_BRDF_GEOM_ARGS_(G_), f0_in, albedo);
 }
 
 /* ---- Fresnel and diffuse: the rest of the menu (the fast tier only) -------------

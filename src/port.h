@@ -58,12 +58,16 @@ extern const facet_f32_port facet_port_avx2_f32, facet_port_avx2_f32_fast;
 extern const facet_f32_port facet_port_avx512_f32, facet_port_avx512_f32_fast;
 extern const facet_f32_port facet_port_neon_f32, facet_port_neon_f32_fast;
 extern const facet_f32_port facet_port_helium_f32, facet_port_helium_f32_fast;
+extern const facet_f32_port facet_port_rvv_f32, facet_port_rvv_f32_fast;
+/* the rvv port's lanes, VLMAX (run time: the port is vector-length agnostic) */
+int facet_rvv_lanes(void);
 /* fx ports, one table per tier: src/fx_kernels.c and src/fx_fast.c (every
  * kernel, the scalar loops), ports/<isa>/fx_<isa>.c */
 extern const facet_fx_port facet_fx_port_scalar, facet_fx_fast_port_scalar;
 extern const facet_fx_port facet_fx_port_avx2, facet_fx_fast_port_avx2;
 extern const facet_fx_port facet_fx_port_neon, facet_fx_fast_port_neon;
 extern const facet_fx_port facet_fx_port_helium, facet_fx_fast_port_helium;
+extern const facet_fx_port facet_fx_fast_port_rvv; /* fx_fast only */
 
 
 /* the fx port of the active port for a tier (0: fx, 1: fx_fast), never

@@ -64,7 +64,8 @@ static void BATCH_FN(brdf_hammon_rgb)(const facet_rgb_io *io, const float *nol, 
             f0[c] = io->material_stride ? rgb_load_(io->f0[c], io->material_stride, i, r) : u_f0[c];
             alb[c] = io->material_stride ? rgb_load_(io->albedo[c], io->material_stride, i, r) : u_alb[c];
         }
-        BATCH_KERNEL(brdf_hammon_rgb)(o, nl, nv, lv, a, f0, alb);
+        BATCH_KERNEL(brdf_hammon_rgb)(&o[0], &o[1], &o[2], nl, nv, lv, a, f0[0], f0[1], f0[2], alb[0],
+                                      alb[1], alb[2]);
         for (c = 0; c < 3; c++)
             rgb_store_(io->out[c], io->out_stride, i, r, o[c]);
     }

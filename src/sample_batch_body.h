@@ -23,7 +23,7 @@
         for (; i + BATCH_W <= count; i += BATCH_W) {                                 \
             for (q = 0; q < n_in; q++)                                               \
                 a_[q] = BATCH_LOAD(in[q] + i);                                       \
-            FACET_SAMPLE_CALL(kind, SBATCH_KERNEL(name), o_, a_, n_in);              \
+            FACET_SAMPLE_CALL(kind, SBATCH_KERNEL(name), o_, n_out, a_, n_in);              \
             for (q = 0; q < n_out; q++)                                              \
                 BATCH_STORE(out[q] + i, o_[q]);                                      \
         }                                                                            \
@@ -35,7 +35,7 @@
                     pad_[j] = j < r ? in[q][i + j] : 0.5f;                           \
                 a_[q] = BATCH_LOAD(pad_);                                            \
             }                                                                        \
-            FACET_SAMPLE_CALL(kind, SBATCH_KERNEL(name), o_, a_, n_in);              \
+            FACET_SAMPLE_CALL(kind, SBATCH_KERNEL(name), o_, n_out, a_, n_in);              \
             for (q = 0; q < n_out; q++) {                                            \
                 BATCH_STORE(res_, o_[q]);                                            \
                 for (j = 0; j < r; j++)                                              \

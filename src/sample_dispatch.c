@@ -17,6 +17,8 @@
 #define SAMPLE_ARM 1
 #elif defined(__ARM_FEATURE_MVE) && (__ARM_FEATURE_MVE & 2)
 #define SAMPLE_HELIUM 1
+#elif defined(__riscv) && __riscv_xlen == 64 && defined(__linux__) && defined(FACET_PORT_RVV)
+#define SAMPLE_RVV 1
 #endif
 
 typedef struct { const facet_sample_port *f32, *f32_fast; } sample_entry;
@@ -35,6 +37,9 @@ static const sample_entry sample_ports[] = {
 #endif
 #if SAMPLE_HELIUM
     { &facet_sample_port_helium_f32, &facet_sample_port_helium_f32_fast },
+#endif
+#if SAMPLE_RVV
+    { &facet_sample_port_rvv_f32, &facet_sample_port_rvv_f32_fast },
 #endif
     { &facet_sample_port_scalar_f32, &facet_sample_port_scalar_f32_fast },
 };
@@ -106,7 +111,7 @@ static const sample_entry *sample_port(void)
 #define SCALAR_DEF_vec(name, tier, n_in, n_out)                               \
     void facet_##name##_##tier(float out[n_out], CAT(SC_P_, n_in))           \
     {                                                                         \
-        facet_##name##_##tier##_scalar(out, CAT(IN_A_, n_in));                \
+        facet_##name##_##tier##_scalar(FACET_SAMPLE_OUTS(n_out, out), CAT(IN_A_, n_in));                \
     }
 #define SCALAR_DEF_ret(name, tier, n_in, n_out)                               \
     float facet_##name##_##tier(CAT(SC_P_, n_in))                             \
@@ -124,15 +129,15 @@ static const sample_entry *sample_port(void)
 #define FACET_SAMPLER(name, NAME, kind, err, n_out, n_in, ...)                          \
     static void t_f32_##name(float *out, const float *in)                              \
     {                                                                                  \
-        FACET_SAMPLE_CALL(kind, facet_##name##_f32_scalar, out, in, n_in);             \
+        FACET_SAMPLE_CALL(kind, facet_##name##_f32_scalar, out, n_out, in, n_in);             \
     }                                                                                  \
     static void t_fast_##name(float *out, const float *in)                             \
     {                                                                                  \
-        FACET_SAMPLE_CALL(kind, facet_##name##_f32_fast_scalar, out, in, n_in);        \
+        FACET_SAMPLE_CALL(kind, facet_##name##_f32_fast_scalar, out, n_out, in, n_in);        \
     }                                                                                  \
     static void t_oracle_##name(double *out, const double *in)                         \
     {                                                                                  \
-        FACET_SAMPLE_CALL(kind, facet_oracle_##name, out, in, n_in);                   \
+        FACET_SAMPLE_CALL_ARRAY(kind, facet_oracle_##name, out, in, n_in);                   \
     }                                                                                  \
     static void t_batch_##name(float *const *out, const float *const *in, size_t n)    \
     {                                                                                  \

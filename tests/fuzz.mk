@@ -14,7 +14,7 @@ FUZZ_CC      ?= clang
 FUZZ_SECONDS ?= 300
 FUZZ_DIR     := $(BUILD)/fuzz
 FUZZ_SAN      = -fsanitize=address,undefined -fno-sanitize-recover=all
-FUZZ_CFLAGS   = $(WARN) -ffp-contract=off -fno-fast-math -Iinclude -Isrc/cli -O1 -g
+FUZZ_CFLAGS   = $(WARN) -D_DEFAULT_SOURCE -ffp-contract=off -fno-fast-math -Iinclude -Isrc/cli -O1 -g
 FUZZ_NAMES   := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 FUZZ_BINS    := $(FUZZ_NAMES:%=$(FUZZ_DIR)/%)
 
@@ -29,7 +29,7 @@ $(FUZZ_DIR)/lib/libfacet.a: fuzz-force
 	@$(MAKE) --no-print-directory BUILD=$(FUZZ_DIR)/lib CC=$(FUZZ_CC) \
 	    CFLAGS="-O1 -g -fsanitize=fuzzer-no-link $(FUZZ_SAN)" $(FUZZ_DIR)/lib/libfacet.a
 
-$(FUZZ_DIR)/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_common.h src/cli/parse.c src/cli/cli.h \
+$(FUZZ_DIR)/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_common.h tests/sample.h src/cli/parse.c src/cli/cli.h \
                     $(FUZZ_DIR)/lib/libfacet.a $(HEADERS)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer $(FUZZ_SAN) -o $@ $< src/cli/parse.c $(FUZZ_DIR)/lib/libfacet.a -lm

@@ -12,7 +12,7 @@
 
 typedef struct { uint64_t s; } smp_rng;
 
-static uint64_t smp_next(smp_rng *r) /* splitmix64 */
+static inline uint64_t smp_next(smp_rng *r) /* splitmix64 */
 {
     uint64_t z = (r->s += 0x9e3779b97f4a7c15ull);
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
@@ -20,13 +20,13 @@ static uint64_t smp_next(smp_rng *r) /* splitmix64 */
     return z ^ (z >> 31);
 }
 
-static double smp_u01(smp_rng *r) { return (smp_next(r) >> 11) * (1.0 / 9007199254740992.0); }
+static inline double smp_u01(smp_rng *r) { return (smp_next(r) >> 11) * (1.0 / 9007199254740992.0); }
 
 /* log-uniform in [2^lo, 2^hi] */
-static double smp_log2u(smp_rng *r, double lo, double hi) { return exp2(lo + (hi - lo) * smp_u01(r)); }
+static inline double smp_log2u(smp_rng *r, double lo, double hi) { return exp2(lo + (hi - lo) * smp_u01(r)); }
 
 /* A pair (L, V) over N = z: writes N.L, N.V, L.V rounded to float. */
-static void smp_geometry(smp_rng *r, float *nl, float *nv, float *lv)
+static inline void smp_geometry(smp_rng *r, float *nl, float *nv, float *lv)
 {
     double cl, cv, phi, sl, sv;
     unsigned mode = (unsigned)(smp_next(r) % 8);
@@ -62,13 +62,13 @@ static void smp_geometry(smp_rng *r, float *nl, float *nv, float *lv)
     *lv = (float)fmin(fmax(cl * cv + sl * sv * cos(phi), -1.0), 1.0);
 }
 
-static float smp_alpha(smp_rng *r)
+static inline float smp_alpha(smp_rng *r)
 {
     return (float)smp_log2u(r, -10, 0);
 }
 
 /* a [0, 1] value: often 0, 1, tiny, or near 1 */
-static float smp_unit(smp_rng *r)
+static inline float smp_unit(smp_rng *r)
 {
     switch (smp_next(r) % 8) {
     case 0: return 0.0f;
@@ -127,7 +127,7 @@ static inline float smp_domain_hi(const facet_kernel *k, int i)
 
 /* GTR's gamma in [0, 4]: the closed-form orders 0 .. 4 exactly, next to 1
  * (the limit), or uniform */
-static float smp_gamma(smp_rng *r)
+static inline float smp_gamma(smp_rng *r)
 {
     switch (smp_next(r) % 4) {
     case 0: return (float)(smp_next(r) % 9) * 0.5f;
@@ -150,7 +150,7 @@ static inline const char *smp_best_port(void)
 }
 
 /* One in-domain sample for a kernel, by its input names. */
-static void smp_inputs(smp_rng *r, const facet_kernel *k, float *in)
+static inline void smp_inputs(smp_rng *r, const facet_kernel *k, float *in)
 {
     float nl, nv, lv;
     int i;

@@ -9,6 +9,10 @@
 #include "fx_test.h"
 #include "facet/fx.h"
 #include "../src/fx_core.h"
+#include "../src/fx_ops_scalar.h"
+#include "../src/fx_body.h"
+#include "../src/fx_fast_body.h" /* the fast tier's integer log2 and 2^f */
+#include <math.h>
 
 int main(void)
 {
@@ -142,6 +146,26 @@ int main(void)
         }
         printf("rsqrt32 max relative error 2^%.2f\n", log2(worst));
         CHECK(worst <= ldexp(1.0, -29), "rsqrt32 error 2^%.2f exceeds 2^-29", log2(worst));
+    }
+    /* the GTR terms' integer log2 (fxw_log2m31: Q31 of log2 m, x = m 2^31)
+     * and 2^f (fxw_exp2f30: Q30 of 2^f, f = F 2^-32) against libm, every
+     * table bin's ends and random mantissas: the bounds src/fx_fast_body.h
+     * states (2^-25.5 absolute, 2^-22.9 relative) */
+    {
+        double el = 0, ee = 0;
+        for (i = 0; i < n; i++) {
+            /* i < 32: the ends of the 16 bins (the leading one and 4 index bits) */
+            uint32_t x = i < 32 ? 0x80000000u + ((uint32_t)(i >> 1) << 27) + (i & 1 ? (1u << 27) - 1u : 0u)
+                                : (uint32_t)fx_next(&r) | 0x80000000u;
+            uint32_t f = i < 4 ? (uint32_t)(0u - (uint32_t)i) : (uint32_t)fx_next(&r);
+            double dl = fabs(fxw_log2m31(x) * 0x1p-31 - log2(x * 0x1p-31));
+            double de = fabs(fxw_exp2f30(f) * 0x1p-30 / exp2(f * 0x1p-32) - 1.0);
+            el = dl > el ? dl : el;
+            ee = de > ee ? de : ee;
+        }
+        printf("fx_fast log2: max |error| 2^%.2f; 2^f: max relative error 2^%.2f\n", log2(el), log2(ee));
+        CHECK(el <= exp2(-25.5) && ee <= exp2(-22.9), "fast log2 error 2^%.2f (bound 2^-25.5), 2^f 2^%.2f (bound 2^-22.9)",
+              log2(el), log2(ee));
     }
     return th_done();
 }

@@ -88,19 +88,19 @@ static int stated_cost(const char *name, long *ops, long *rsq, long *rcp)
 static void op_counts(void)
 {
     float h[3];
-    COUNT(count_ggx_sample_d(h, 0.3f, 0.6f, 0.2f), "ggx_sample_d");
+    COUNT(count_ggx_sample_d(&h[0], &h[1], &h[2], 0.3f, 0.6f, 0.2f), "ggx_sample_d");
     COUNT((void)count_ggx_pdf_d(0.9f, 0.2f), "ggx_pdf_d");
-    COUNT(count_ggx_sample_vndf(h, 0.3f, 0.2f, 0.9f, 0.3f, 0.6f, 0.2f), "ggx_sample_vndf");
+    COUNT(count_ggx_sample_vndf(&h[0], &h[1], &h[2], 0.3f, 0.2f, 0.9f, 0.3f, 0.6f, 0.2f), "ggx_sample_vndf");
     COUNT((void)count_ggx_pdf_vndf(0.9f, 0.95f, 0.8f, 0.2f), "ggx_pdf_vndf");
     COUNT((void)count_ggx_pdf_vndf_reflect(0.9f, 0.95f, 0.8f, 0.2f), "ggx_pdf_vndf_reflect");
-    COUNT(count_reflect(h, 0.3f, 0.2f, 0.9f, 0.1f, 0.1f, 0.99f), "reflect");
-    COUNT(count_ggx_sample_d_aniso(h, 0.3f, 0.6f, 0.2f, 0.4f), "ggx_sample_d_aniso");
+    COUNT(count_reflect(&h[0], &h[1], &h[2], 0.3f, 0.2f, 0.9f, 0.1f, 0.1f, 0.99f), "reflect");
+    COUNT(count_ggx_sample_d_aniso(&h[0], &h[1], &h[2], 0.3f, 0.6f, 0.2f, 0.4f), "ggx_sample_d_aniso");
     COUNT((void)count_ggx_pdf_d_aniso(0.1f, 0.1f, 0.99f, 0.2f, 0.4f), "ggx_pdf_d_aniso");
-    COUNT(count_ggx_sample_vndf_aniso(h, 0.3f, 0.2f, 0.9f, 0.3f, 0.6f, 0.2f, 0.4f), "ggx_sample_vndf_aniso");
+    COUNT(count_ggx_sample_vndf_aniso(&h[0], &h[1], &h[2], 0.3f, 0.2f, 0.9f, 0.3f, 0.6f, 0.2f, 0.4f), "ggx_sample_vndf_aniso");
     COUNT((void)count_ggx_pdf_vndf_aniso(0.3f, 0.2f, 0.9f, 0.1f, 0.1f, 0.99f, 0.2f, 0.4f), "ggx_pdf_vndf_aniso");
-    COUNT(count_gtr_sample_d(h, 0.3f, 0.6f, 0.2f, 1.0f), "gtr_sample_d");
+    COUNT(count_gtr_sample_d(&h[0], &h[1], &h[2], 0.3f, 0.6f, 0.2f, 1.0f), "gtr_sample_d");
     COUNT((void)count_gtr_pdf_d(0.9f, 0.2f, 1.0f), "gtr_pdf_d");
-    COUNT(count_sincos_2pi(h, 0.3f), "sincos_2pi");
+    COUNT(count_sincos_2pi(&h[0], &h[1], 0.3f), "sincos_2pi");
 }
 
 int main(void)

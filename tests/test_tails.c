@@ -6,7 +6,8 @@
  * guard after the output, and the sanitizer builds), with out == an input.
  * Built once per port: TAILS_AVX2 / TAILS_AVX512 with their ISA flags
  * (tests/tails.mk), otherwise the baseline vector port of the target
- * (sse2 on x86-64, neon where __ARM_NEON with FMA). */
+ * (sse2 on x86-64, neon where __ARM_NEON with FMA); for rvv: its
+ * strip-mined loop (facet_rvv_vl / load / store), built by tests/rvv.mk. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -57,6 +58,16 @@
 #define STORE_N facet_helium_store_n
 #define BRDF facet_brdf_hammon_f32_helium
 #define GGX facet_ggx_d_f32_fast_helium
+#elif defined(__riscv_vector)
+/* vector-length agnostic: W is VLMAX, read at run time (after the CPU
+ * check); the caller's loop is strip-mined, each strip loaded and stored
+ * with its own vl, so there is no separate tail (tests/rvv.mk, clang) */
+#include "facet/rvv.h"
+#define PORT "rvv"
+#define W ((size_t)facet_rvv_vlmax())
+#define STRIP_MINED 1
+#define BRDF facet_brdf_hammon_f32_rvv
+#define GGX facet_ggx_d_f32_fast_rvv
 #elif defined(__ARM_NEON) && (defined(__aarch64__) || defined(__ARM_FEATURE_FMA))
 #include "facet/neon.h"
 #define PORT "neon"
@@ -79,6 +90,26 @@ static float frand_(unsigned *s, float lo, float hi)
     return lo + (hi - lo) * (float)(*s >> 8) / 16777216.0f;
 }
 
+#if defined(STRIP_MINED)
+#define LD_(q) facet_rvv_load(x[q] + i, vl)
+static void loop6(float *out, float *const x[6], size_t n)
+{
+    size_t i, vl;
+    for (i = 0; i < n; i += vl) {
+        vl = facet_rvv_vl(n - i);
+        facet_rvv_store(out + i, BRDF(LD_(0), LD_(1), LD_(2), LD_(3), LD_(4), LD_(5)), vl);
+    }
+}
+
+static void loop2(float *out, float *const x[2], size_t n)
+{
+    size_t i, vl;
+    for (i = 0; i < n; i += vl) {
+        vl = facet_rvv_vl(n - i);
+        facet_rvv_store(out + i, GGX(LD_(0), LD_(1)), vl);
+    }
+}
+#else
 /* the caller's loop: brdf_hammon over n samples */
 static void loop6(float *out, float *const x[6], size_t n)
 {
@@ -101,6 +132,7 @@ static void loop2(float *out, float *const x[2], size_t n)
     if (i < n)
         STORE_N(out + i, GGX(LOAD_N(x[0] + i, n - i), LOAD_N(x[1] + i, n - i)), n - i);
 }
+#endif
 
 int main(void)
 {

@@ -15,4 +15,6 @@ static int always(void) { return 1; }
 #define LP_PATH "call"
 #define LP_PORT "scalar"
 #define LP_AVAIL always
+/* facet_<sampler>_f32 takes its outputs as one array */
+#define LP_SAMPLE_CALL(kind, k, o, n_out, a, n) FACET_SAMPLE_CALL_ARRAY(kind, k, o, a, n)
 #include "loops_body.h"

@@ -61,6 +61,12 @@ static const bench_loop LP_CAT(lp_k_, LP_TNAME)[] = {
     { LP_CAT(LP_TNAME, _thr_identity), LP_CAT(LP_TNAME, _chain_identity) },
 };
 
+/* the sampler's call: inline port samplers take a pointer per output; a
+ * file over functions taking one output array (loops_call.c) defines it */
+#ifndef LP_SAMPLE_CALL
+#define LP_SAMPLE_CALL(kind, k, o, n_out, a, n) FACET_SAMPLE_CALL(kind, k, o, n_out, a, n)
+#endif
+
 /* Names generated here from src/sample_kernels.def: one throughput loop
  * per sampler (inputs loaded, the sampler called, its outputs stored). */
 #define FACET_SAMPLER(name, NAME, kind, err, n_out, n_in, outs, ins)           \
@@ -72,7 +78,7 @@ static const bench_loop LP_CAT(lp_k_, LP_TNAME)[] = {
             LP_V a_[n_in], o_[n_out];                                           \
             for (j = 0; j < n_in; j++)                                          \
                 a_[j] = LP_LOAD(in[j] + i);                                     \
-            FACET_SAMPLE_CALL(kind, LP_KT(name), o_, a_, n_in);                 \
+            LP_SAMPLE_CALL(kind, LP_KT(name), o_, n_out, a_, n_in);             \
             for (j = 0; j < n_out; j++)                                         \
                 LP_STORE(out[j] + i, o_[j]);                                    \
         }                                                                       \

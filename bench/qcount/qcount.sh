@@ -9,6 +9,12 @@
 #                           LIBDIR/libfacet.a (default build/m55; build/m55-clang
 #                           has the helium objects from clang; both made by
 #                           tests/suites/52-helium.sh)
+#   qcount.sh rv64 [LIBDIR] [VLEN...]  RV64GC + V under qemu-riscv64 (-cpu
+#                           rv64,v=true,vlen=N; VLEN default 128 256 512):
+#                           scalar code (riscv64-linux-gnu-gcc -O2) vs rvv
+#                           (clang 14), from LIBDIR/libfacet.a (default
+#                           build/rv64, made by tests/suites/54-rvv.sh);
+#                           linked static, so the trace's pcs are nm's
 # Prints "<core> <code> <tier> <instructions per sample>" lines.
 set -u
 what=${1:-m55}
@@ -45,5 +51,21 @@ m55)
         -kernel "$dir/m55.elf" -singlestep -d exec,nochain -D "$dir/m55.trace" > /dev/null || exit 1
     count "$dir/m55.elf" "$dir/m55.trace" cortex-m55 | sed 's/ vector / helium /'
     rm -f "$dir/m55.trace"
+    ;;
+rv64)
+    NM=riscv64-linux-gnu-nm
+    lib=${libdir:-build/rv64}/libfacet.a
+    [ -f "$lib" ] || { echo "qcount: $lib missing (run the 54-rvv suite first)"; exit 1; }
+    shift $(($# < 2 ? $# : 2))
+    riscv64-linux-gnu-gcc -O2 -std=c99 -Iinclude -static \
+        -DQCOUNT_F32=facet_port_rvv_f32 -DQCOUNT_F32_FAST=facet_port_rvv_f32_fast \
+        -DQCOUNT_FX_FAST=facet_fx_fast_port_rvv bench/qcount/qcount_main.c "$lib" -lm \
+        -o "$dir/rv64.elf" || exit 1
+    for v in ${*:-128 256 512}; do
+        timeout 300 qemu-riscv64 -cpu rv64,v=true,vext_spec=v1.0,vlen=$v -singlestep -d exec,nochain \
+            -D "$dir/rv64.trace" "$dir/rv64.elf" > /dev/null || exit 1
+        count "$dir/rv64.elf" "$dir/rv64.trace" rv64-vlen$v | sed 's/ vector / rvv /'
+        rm -f "$dir/rv64.trace"
+    done
     ;;
 esac

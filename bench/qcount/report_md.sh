@@ -1,12 +1,44 @@
 #!/bin/sh
-# bench/qcount/report_md.sh - the Helium section of `make report` (Markdown
-# on stdout): builds the Cortex-M55 library twice (build/m55: gcc 12;
-# build/m55-clang: the helium objects from clang, ports/helium/port.mk) if
-# needed and counts brdf_hammon's executed instructions per sample with
-# bench/qcount/qcount.sh.  Skipped, with the reason, without the tools.
+# bench/qcount/report_md.sh - the Helium and RISC-V Vector sections of
+# `make report` (Markdown on stdout): builds the Cortex-M55 library twice
+# (build/m55: gcc 12; build/m55-clang: the helium objects from clang,
+# ports/helium/port.mk) and the riscv64 one (build/rv64: gcc 12, the rvv
+# objects from clang, ports/rvv/port.mk) if needed and counts brdf_hammon's
+# executed instructions per sample with bench/qcount/qcount.sh.  Each
+# section skipped, with the reason, without its tools.
 set -u
 MAKE=${MAKE:-make}
 have() { command -v "$1" > /dev/null 2>&1; }
+rvv_section() {
+    echo "## RISC-V Vector (RV64GCV, qemu-riscv64): brdf_hammon, executed instructions per sample"
+    echo
+    if ! have riscv64-linux-gnu-gcc || ! have qemu-riscv64 || ! have clang; then
+        echo "Skipped: needs riscv64-linux-gnu-gcc (with libc6-dev-riscv64-cross), qemu-riscv64 and clang."
+        echo
+        return
+    fi
+    mkdir -p build/qcount
+    if ! $MAKE -s BUILD=build/rv64 CC=riscv64-linux-gnu-gcc CFLAGS="-O2 -g" build/rv64/libfacet.a > /dev/null 2>&1 ||
+        ! sh bench/qcount/qcount.sh rv64 build/rv64 128 256 512 2>/dev/null > build/qcount/rv64.txt; then
+        echo "Skipped: the riscv64 build or the count failed."
+        echo
+        return
+    fi
+    echo "qemu-riscv64 -cpu rv64,v=true,vlen=N, -singlestep -d exec,nochain, 64-sample batch calls (MEASURED instruction counts, not cycles); scalar code from riscv64-linux-gnu-gcc -O2 (rv64gc), rvv from clang -O2 (LMUL 1)."
+    echo
+    echo "| tier | scalar RV64 | rvv VLEN 128 | ratio | rvv VLEN 256 | ratio | rvv VLEN 512 | ratio | target >= 3x at 128 |"
+    echo "|---|---|---|---|---|---|---|---|---|"
+    for t in f32 f32_fast fx_fast; do
+        awk -v t=$t '$3 == t { v[$1 " " $2] = $4 }
+            END {
+                s = v["rv64-vlen128 scalar"]; a = v["rv64-vlen128 rvv"]; b = v["rv64-vlen256 rvv"]; c = v["rv64-vlen512 rvv"]
+                if (a <= 0 || b <= 0 || c <= 0) { printf "| %s | %s | - | | - | | - | | count missing |\n", t, s; exit }
+                printf "| %s | %s | %s | %.2fx | %s | %.2fx | %s | %.2fx | %s |\n", t, s, a, s / a, b, s / b, c, s / c,
+                       (s / a >= 3) ? "met" : "missed" }' build/qcount/rv64.txt
+    done
+    echo
+}
+rvv_section
 echo "## Helium (Cortex-M55): brdf_hammon, executed instructions per sample"
 echo
 if ! have arm-none-eabi-gcc || ! have qemu-system-arm || ! have clang; then

@@ -369,7 +369,8 @@ void rs_shade_scalar(rs_gbuf *g)
                 f0[c] = g->f0[c][i];
                 alb[c] = g->alb[c][i];
             }
-            facet_brdf_hammon_rgb_f32_scalar(b, nol, nov, lov, g->alpha[i], f0, alb);
+            facet_brdf_hammon_rgb_f32_scalar(&b[0], &b[1], &b[2], nol, nov, lov, g->alpha[i], f0[0],
+                                             f0[1], f0[2], alb[0], alb[1], alb[2]);
             for (c = 0; c < 3; c++)
                 acc[c] += b[c] * sc * g->light[l].e[c];
         }

@@ -44,7 +44,8 @@ SHADE_FN(rs_gbuf *g)
                     f0v[c] = LD(g->f0[c] + i);
                     albv[c] = LD(g->alb[c] + i);
                 }
-                BRDF_RGB(b, nol, nov, lov, a, f0v, albv);
+                BRDF_RGB(&b[0], &b[1], &b[2], nol, nov, lov, a, f0v[0], f0v[1], f0v[2], albv[0], albv[1],
+                         albv[2]);
                 for (c = 0; c < 3; c++)
                     acc[c] = ADD(acc[c], MUL(MUL(b[c], sc), SET1(L->e[c])));
             }

@@ -29,4 +29,27 @@ int img_error_run(img_err *out, int max, pic *ref, pic *diff);
  * rasterizer's shaded pixels): fills e's code and delta E fields. */
 void img_compare_rgb8(img_err *e, const unsigned char *got, const unsigned char *want, const int *idx, long n);
 
+/* The menu's variants in image space (image_error.c: each sphere BRDF
+ * assembled as D * Vis * F + diffuse from double oracles except the
+ * variant's part): per variant the implementation error of its kernel
+ * forms against the render from its own oracle, and, where the variant
+ * approximates a reference term, the model error of its oracle render
+ * against the reference's. */
+typedef struct img_variant {
+    char name[48];        /* "gtr_d (gamma 1.5)" */
+    char term[8];         /* "D", "Vis", "G2", "G1", "F", "diffuse" */
+    char reference[48];   /* "" (none: a model of its own) or the reference */
+    int have[4];          /* f32, f32_fast (active port), fx, fx_fast (Q15 dots) */
+    img_err impl[4];
+    int has_model, is_reference; /* is_reference: the variant is the reference itself */
+    img_err model;
+} img_variant;
+
+/* the number of variants img_variants_run can fill */
+int img_variant_count(void);
+/* Fills out[] (at most max; returns the count), port with the f32 rows'
+ * port (the best this CPU runs) and *diff with the model rows' difference
+ * grid (rows: the variants that are not the reference itself, labelled). */
+int img_variants_run(img_variant *out, int max, pic *diff, char *port, size_t port_cap);
+
 #endif

@@ -11,7 +11,7 @@
  * range in log10 units.  cols == 0: no labels. */
 typedef struct pic_axes {
     int cols, rows, x0, y0, pw, ph, gap;
-    char col_title[12][40], row_title[16][48];
+    char col_title[12][40], row_title[24][48];
     char xlabel[48], ylabel[48];
     double xmin, xmax, ymin, ymax; /* value at the panel's left / right, bottom / top edge */
     int xlog, ylog;                /* 1: the scale is log10 (ticks at powers of 2 or 10) */

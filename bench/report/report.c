@@ -337,8 +337,8 @@ static const bench_row *find_bench_row(const char *kernel, const char *format, c
 /* a row of a .tsv: three names and a value (and a source), or with a
  * leading format column (mca.tsv) four names */
 typedef struct tsv { char f[32], a[32], b[32], c[32]; double v; char src[64]; } tsv;
-static tsv *mca, *sizes, *arm;
-static int n_mca, n_sizes, n_arm;
+static tsv *mca, *sizes, *arm, *armvec;
+static int n_mca, n_sizes, n_arm, n_armvec;
 
 static tsv *read_tsv(const char *name, int *n, int with_format)
 {
@@ -399,6 +399,42 @@ static const tsv *arm_of(const char *what, const char *kernel, const char *cpu)
         if (!strcmp(arm[i].a, what) && !strcmp(arm[i].b, kernel) && !strcmp(arm[i].c, cpu))
             return &arm[i];
     return NULL;
+}
+
+/* arm_vec.tsv (bench/report/arm_targets.sh): format port kernel measure
+ * value, the NEON and Helium ports' costs per sample; -1 if absent */
+static double armvec_of(const char *format, const char *port, const char *kernel, const char *measure)
+{
+    int i;
+    for (i = 0; i < n_armvec; i++)
+        if (!strcmp(armvec[i].f, format) && !strcmp(armvec[i].a, port) && !strcmp(armvec[i].b, kernel) &&
+            !strcmp(armvec[i].c, measure))
+            return armvec[i].v;
+    return -1;
+}
+
+/* arm_vec.status: "PORT ok HOW" or "PORT skipped WHY"; the line for port
+ * (without the port's name) into b, or why there is none */
+static int armvec_status(const char *port, char *b, size_t n)
+{
+    char path[1024], line[512];
+    size_t k = strlen(port);
+    FILE *f;
+    snprintf(path, sizeof path, "%s/arm_vec.status", outdir);
+    f = fopen(path, "r");
+    snprintf(b, n, "skipped: no arm_vec.status (a facet-bench report run without bench/report/report.sh, "
+                   "which runs bench/report/arm_targets.sh)");
+    if (!f)
+        return 0;
+    while (fgets(line, sizeof line, f))
+        if (!strncmp(line, port, k) && line[k] == ' ') {
+            line[strcspn(line, "\n")] = 0;
+            snprintf(b, n, "%s", line + k + 1);
+            fclose(f);
+            return !strncmp(line + k + 1, "ok", 2);
+        }
+    fclose(f);
+    return 0;
 }
 
 /* ---- model error of the approximations -------------------------------------
@@ -976,14 +1012,19 @@ static void section_choose(void)
     static const char *const fmts[] = { "f32", "f32_fast", "fx", "fx_fast" };
     /* targets: a port of this machine (measured est. cycles), or a Cortex-M
      * core (arm.tsv: TRM-modelled M0 cycles, llvm-mca M4 cycles) */
-    static const struct { const char *name, *port, *cpu, *unit; int f32soft, f32fpu; } tg[] = {
-        { "AVX-512 (this machine)", "avx512", NULL, "cyc", 0, 0 },
-        { "AVX2 (this machine)", "avx2", NULL, "cyc", 0, 0 },
-        { "SSE2 (this machine)", "sse2", NULL, "cyc", 0, 0 },
-        { "Cortex-M0", NULL, "cortex-m0", "cyc (TRM model)", 1, 0 },
-        { "Cortex-M4", NULL, "cortex-m4", "cyc (llvm-mca)", 1, 0 },
-        { "Cortex-M4 with FPU", NULL, "cortex-m4", "cyc (llvm-mca)", 0, 1 },
+    static const struct { const char *name, *port, *cpu, *unit; int f32soft, f32fpu; const char *vec, *measure; } tg[] = {
+        { "AVX-512 (this machine)", "avx512", NULL, "cyc", 0, 0, NULL, NULL },
+        { "AVX2 (this machine)", "avx2", NULL, "cyc", 0, 0, NULL, NULL },
+        { "SSE2 (this machine)", "sse2", NULL, "cyc", 0, 0, NULL, NULL },
+        { "NEON (aarch64, Cortex-A57 model)", NULL, NULL, "cyc (llvm-mca A57 model)", 0, 0, "neon", "mca-cortex-a57" },
+        { "Helium (Cortex-M55)", NULL, NULL, "instr (qemu count)", 0, 0, "helium", "qemu-insn" },
+        { "Cortex-M0", NULL, "cortex-m0", "cyc (TRM model)", 1, 0, NULL, NULL },
+        { "Cortex-M4", NULL, "cortex-m4", "cyc (llvm-mca)", 1, 0, NULL, NULL },
+        { "Cortex-M4 with FPU", NULL, "cortex-m4", "cyc (llvm-mca)", 0, 1, NULL, NULL },
     };
+    char why_neon[300], why_helium[300];
+    int ok_neon = armvec_status("neon", why_neon, sizeof why_neon);
+    int ok_helium = armvec_status("helium", why_helium, sizeof why_helium);
     int g, t;
     h2("Which one to use");
     para("For each term and target: the Pareto frontier of kernel variant x format x tier by cost and by error "
@@ -991,12 +1032,20 @@ static void section_choose(void)
          "error (the formula against the exact term, from the tradeoff sweep; 0 for exact kernels, left out for "
          "terms whose variants are different models) + implementation error (max relative against the formula's "
          "own oracle, where the value is >= 2^-8, measured on that port; Cortex-M: the scalar code's). Costs: "
-         "this machine's ports in est. core cycles per sample (batch, %s run); Cortex-M in cycles per call, "
-         "MODELLED from executed-instruction traces (M0: TRM timings, M4: llvm-mca; section Cortex-M). NEON, "
-         "Helium and RISC-V are not measured on this machine. Details: the Pareto figures below, then the long "
+         "this machine's ports in est. core cycles per sample (batch, %s run); NEON (aarch64): cycles per "
+         "sample MODELLED by llvm-mca 14 with its Cortex-A57 scheduling model (the model LLVM 14 also uses for "
+         "A72, A76 and Neoverse N1) on the executed instruction trace of a 64-sample batch call under "
+         "qemu-aarch64 (callees and tails included, branches free); Helium (Cortex-M55, helium objects from "
+         "clang 14): instructions executed per sample of a 64-sample batch call, MEASURED under qemu-system-arm "
+         "(instructions, not cycles: a 128-bit MVE instruction takes two beats); both from "
+         "bench/report/arm_targets.sh, the ports' own tables in every tier they run; implementation error there: "
+         "the scalar code's measured here (fixed point is bit-exact on every port; the ports' f32 is held to the "
+         "same bounds by the 40-arm and 52-helium suites). Cortex-M in cycles per call, "
+         "MODELLED from executed-instruction traces (M0: TRM timings, M4: llvm-mca; section Cortex-M). RISC-V "
+         "is not costed here. NEON: %s. Helium: %s. Details: the Pareto figures below, then the long "
          "tables. D and diffuse have no exact reference (each variant is a model of its own, a look rather "
          "than an approximation): there each variant's cheapest format is listed with its cost.",
-         quick ? "a quick" : "a full");
+         quick ? "a quick" : "a full", why_neon, why_helium);
     for (g = 0; g < N_PARETO_GROUPS; g++) {
         int any = 0;
         for (t = 0; t < (int)(sizeof tg / sizeof tg[0]); t++) {
@@ -1014,6 +1063,9 @@ static void section_choose(void)
                         if (x)
                             cost = est(x->r.thr.median);
                         impl = impl_of(kn, fmts[f], tg[t].port);
+                    } else if (tg[t].vec) {
+                        cost = armvec_of(fmts[f], tg[t].vec, kn, tg[t].measure);
+                        impl = impl_of(kn, fmts[f], "scalar");
                     } else {
                         const char *what = f == 0 ? (tg[t].f32fpu ? "f32fpu" : tg[t].f32soft ? "f32soft" : NULL)
                                                   : f == 1 ? NULL : f == 2 ? "fx" : "fxfast";
@@ -1033,6 +1085,21 @@ static void section_choose(void)
                     c[n].model = model;
                     n++;
                 }
+            }
+            if (!n && tg[t].vec && !(!strcmp(tg[t].vec, "neon") ? ok_neon : ok_helium)) {
+                /* the target could not be costed here: the table says why */
+                if (!any) {
+                    fprintf(md, "\n### %s\n\n", pareto_groups[g][0]);
+                    fprintf(html, "<h3>%s</h3>\n", pareto_groups[g][0]);
+                    thead(3, "target", "candidates", "within this cost, the most accurate choice");
+                    any = 1;
+                }
+                cells[0] = tg[t].name;
+                cells[1] = "0";
+                snprintf(cell, sizeof cell, "not costed: %s", !strcmp(tg[t].vec, "neon") ? why_neon : why_helium);
+                cells[2] = cell;
+                trow(cells);
+                continue;
             }
             if (!n)
                 continue;
@@ -1084,6 +1151,57 @@ static void section_choose(void)
     }
 }
 
+/* an image-space error as one cell: max / p99 / mean code difference (max dE76) */
+static const char *img_cell(char *b, size_t n, const img_err *e)
+{
+    return fmt(b, n, "%.0f / %.0f / %.3f (%.2f)", e->max_code, e->p99_code, e->mean_code, e->max_de);
+}
+
+/* every variant of the menu in image space: implementation and model error */
+static void section_image_variants(void)
+{
+    int nmax = img_variant_count(), n, i, j;
+    img_variant *v = calloc((size_t)nmax, sizeof *v);
+    pic diff;
+    char port[32];
+    clock_t ts = clock();
+    say("image-space error: the menu's variants ...");
+    n = img_variants_run(v, nmax, &diff, port, sizeof port);
+    say("image-space error: %d variants in %.1f s CPU", n, (double)(clock() - ts) / CLOCKS_PER_SEC);
+    fprintf(md, "\n### The menu's variants in image space\n\n");
+    fprintf(html, "<h3>The menu's variants in image space</h3>\n");
+    para("The same spheres with a BRDF assembled as D * Vis * F + diffuse from double oracles (GGX D, exact "
+         "height-correlated Smith Vis, Schlick F with V.H, Hammon's diffuse), except the part the variant "
+         "computes (a G1 gives Vis = G1(N.L) G1(N.V) / (4 N.L N.V), with Beckmann's D for the Beckmann G1s "
+         "and GTR's at the same gamma for smith_g1_gtr; a G2 gives Vis = G2 / (4 N.L N.V)). Implementation "
+         "error: the kernel's render against the render from its own double oracle at the same float inputs "
+         "(f32 and f32_fast: batch on %s, the best port of this CPU; fx and fx_fast where the kernel has them: "
+         "the inputs rounded to Q15, so input rounding is included). Model error: the variant's oracle render "
+         "against the reference's (G and Vis: the exact height-correlated Smith Vis; Beckmann G1: the exact "
+         "Beckmann G1; smith_g1_gtr: the exact GTR G1 by quadrature; Fresnel: the exact dielectric Fresnel from "
+         "f0; gtr_d at gamma 2: GGX); '-': no reference (a model of its own) or no such format. Each cell: max "
+         "/ p99 / mean code difference (8-bit sRGB, largest channel per pixel, lit pixels) and, in brackets, "
+         "the max CIE76 delta E.", port);
+    thead(8, "variant", "term", "f32", "f32_fast", "fx (Q15 dots)", "fx_fast (Q15 dots)", "model: against",
+          "model error");
+    for (i = 0; i < n; i++) {
+        char b[6][64];
+        const char *cells[8];
+        cells[0] = v[i].name;
+        cells[1] = v[i].term;
+        for (j = 0; j < 4; j++)
+            cells[2 + j] = v[i].have[j] ? img_cell(b[j], sizeof b[j], &v[i].impl[j]) : "-";
+        cells[6] = v[i].reference[0] ? v[i].reference : "-";
+        cells[7] = !v[i].has_model ? "-" : v[i].is_reference ? "0 (the reference)" : img_cell(b[4], sizeof b[4], &v[i].model);
+        trow(cells);
+    }
+    tend();
+    if (diff.ax.rows)
+        picture(&diff, "image_variants_model.png");
+    pic_free(&diff);
+    free(v);
+}
+
 /* what a viewer sees: brdf_hammon's formats, tiers and ports in 8-bit sRGB */
 static void section_image_error(void)
 {
@@ -1122,6 +1240,7 @@ static void section_image_error(void)
     picture(&diff, "image_difference.png");
     pic_free(&ref);
     pic_free(&diff);
+    section_image_variants();
 }
 
 /* ---- white furnace: the directional albedo of every diffuse model -------- */
@@ -1857,6 +1976,7 @@ int facet_bench_report(int argc, char **argv)
     mca = read_tsv("mca.tsv", &n_mca, 1);
     sizes = read_tsv("size.tsv", &n_sizes, 0);
     arm = read_tsv("arm.tsv", &n_arm, 0);
+    armvec = read_tsv("arm_vec.tsv", &n_armvec, 1);
     snprintf(path, sizeof path, "%s/bench.md", outdir);
     md = fopen(path, "w");
     snprintf(path, sizeof path, "%s/bench.html", outdir);

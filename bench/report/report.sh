@@ -3,7 +3,8 @@
 # from the marked block at the end of tests/report.sh).  Writes, under
 # BUILD_DIR/report/ (or FACET_REPORT_OUT): mca.tsv (llvm-mca cycles per sample of each port's
 # batch loop), size.tsv (bytes of each batch function), arm.tsv (Cortex-M
-# figures from bench/cortexm/cortexm.sh, when its tools exist), then
+# figures from bench/cortexm/cortexm.sh, when its tools exist), arm_vec.tsv
+# and arm_vec.status (the NEON and Helium ports' costs, arm_targets.sh), then
 # runs `build/facet-bench report`, which measures everything else and
 # writes bench.md, then report.md and index.html: accuracy.md (the accuracy
 # part tests/report.sh left, if any) followed by this run's bench part.
@@ -56,6 +57,12 @@ done < "$out/batch-symbols.txt"
 # trace, Cortex-M0 TRM timings; every figure labelled measured or modelled)
 echo "report: Cortex-M traces (qemu-system-arm) + llvm-mca ..."
 sh bench/cortexm/cortexm.sh "$build" "$out/arm.tsv"
+
+# ---- NEON and Helium: the chooser's costs on the Arm vector ports ----------
+# (bench/report/arm_targets.sh: llvm-mca on qemu-aarch64 traces, qemu-system-arm
+# instruction counts; a missing tool skips a target with the reason)
+echo "report: NEON and Helium costs (qemu traces, llvm-mca) ..."
+MAKE=$MAKE sh bench/report/arm_targets.sh "$out"
 
 # the samplers' chi-square table (read by `facet-bench report`)
 sh bench/report/sample_chi2.sh "$build" "$out" || exit 1

@@ -11,7 +11,9 @@
  *     output feeds straight back in (noh_from_dots -> ggx_d).
  *   Outputs:
  *     [0, 1] kernels (noh, loh, F, G1, G2, ...)  int32_t  Q15 (UQ1.15), 0..32768
- *     ggx_d                                      uint32_t UQ19.13  (D <= 2^20/pi = 333772.1)
+ *     ggx_d, ggx_aniso_d, and in the fast tier
+ *     blinn_phong_d, beckmann_d, gtr_d           uint32_t UQ19.13  (D <= 2^20/pi = 333772.1,
+ *                                                 gtr_d: saturates for gamma > 2.571 near its peak)
  *     smith_vis, smith_vis_hammon                uint32_t UQ16.16  (Vis <= 15894.3)
  *     diffuse_hammon                             uint32_t UQ8.24   (<= 20.65)
  *     brdf_hammon                                uint64_t UQ40.24  (<= 4.38e9)
@@ -91,6 +93,7 @@ extern "C" {
 #define FACET_FX_ERR_LOH_FROM_DOTS         1
 #define FACET_FX_ERR_FRESNEL_SCHLICK       1
 #define FACET_FX_ERR_GGX_D                 1
+#define FACET_FX_ERR_GGX_ANISO_D           4
 #define FACET_FX_ERR_SMITH_G1              1
 #define FACET_FX_ERR_SMITH_G2              1
 #define FACET_FX_ERR_SMITH_G2_UNCORRELATED 1
@@ -120,6 +123,23 @@ int32_t facet_fresnel_schlick_fx(int32_t f0, int32_t cos_theta);
  * [2^-10, 1].  UQ19.13, max 2^20/pi = 333772.1 (N.H = 1, alpha = 2^-10).
  * Error: FACET_FX_ERR_GGX_D LSB.  Cost: 1 division, 3 fxf, 2 mul64. */
 uint32_t facet_ggx_d_fx(int32_t noh, int32_t alpha);
+/* Anisotropic GGX D = (ax ay)^3 / (pi K^2), K = (T.H ay)^2 + (B.H ax)^2 +
+ * (N.H ax ay)^2 (facet.h); noh [0, 1], toh, boh [-1, 1] (Q15 signed, the
+ * L.V domain), alpha_x, alpha_y [2^-10, 1].  UQ19.13 as ggx_d: for a unit h
+ * D <= 1/(pi ax ay) <= 2^20/pi (N.H = 1, both widths 2^-10), the format
+ * argument of ggx_d with alpha^2 replaced by ax ay.  Inputs no unit h has:
+ * K floored at (ax ay)^2 / 2 (facet.h), so D <= 4/(pi ax ay), which
+ * saturates at FACET_FX_MAX_D where ax ay < 2^-19.4.  Intermediates: P = AX
+ * AY Q30, T AY and B AX Q30 (each <= 2^30, exact), K Q90 exact in 96 bits
+ * [K <= 3], then one fxf rounding (src/fx_kernels.c).
+ * Error: FACET_FX_ERR_GGX_ANISO_D LSB: 5 roundings of <= 2^-32 relative
+ * (K, P/K, square, times P, times 1/pi) plus the final half LSB, which is
+ * more than 1 LSB only where raw > 2^29.7 (ax ay < 2^-17, at or near the
+ * peak); measured max 3 LSB (3.09 real) at raw 2^31.5, (129, 32, 1, 33,
+ * 32), relative 2^-29.9.  The exact peak (N.H = 1, T.H = B.H = 0) is
+ * correctly rounded, as ggx_d's.
+ * Cost: 1 division (the peak), 1 fxf division, 3 fxf mul, ~8 mul64. */
+uint32_t facet_ggx_aniso_d_fx(int32_t noh, int32_t toh, int32_t boh, int32_t alpha_x, int32_t alpha_y);
 /* Smith G1 (GGX, exact) = 2 n / (n + sqrt(alpha^2 + (1 - alpha^2) n^2));
  * nov [0, 1], alpha [2^-10, 1].  Q15, max 1; G1(0) = 0, G1(1) = 1.
  * Error: FACET_FX_ERR_SMITH_G1 LSB.  Cost: 1 sqrt, 1 division, 1 fxf, 3 mul. */
@@ -319,6 +339,9 @@ void facet_loh_from_dots_fx_batch(int32_t *out, const int32_t *lov, size_t n);
 void facet_fresnel_schlick_fx_batch(int32_t *out, const int32_t *f0, const int32_t *cos_theta,
                                     size_t n);
 void facet_ggx_d_fx_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
+void facet_ggx_aniso_d_fx_batch(uint32_t *out, const int32_t *noh, const int32_t *toh,
+                                const int32_t *boh, const int32_t *alpha_x, const int32_t *alpha_y,
+                                size_t n);
 void facet_smith_g1_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
 void facet_smith_g2_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
                              const int32_t *alpha, size_t n);
@@ -403,6 +426,11 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
  *   loh_from_dots          0.490  0.489  -         (-32755)
  *   fresnel_schlick        0.501  0.500  -         (706, 26184)
  *   ggx_d                  0.514  0.510  2^-15.15  (16701, 16432)
+ *   blinn_phong_d          0.501  0.500  2^-16.01  (31571, 3846)
+ *   beckmann_d             0.500  0.500  2^-16.02  (19614, 22452)
+ *   ggx_aniso_d            0.514  0.514  2^-15.02  (24888, -32706, 7085, 32723, 32705)
+ *   gtr_d                  0.514  0.510  2^-15.12  (26315, 315, 31073)
+ *   smith_g1_gtr           0.502  0.500  -         (24, 34, 97874)
  *   smith_g1               0.536  0.536  -         (126, 8227)
  *   smith_g2               0.536  0.526  -         (32744, 128, 8281)
  *   smith_g2_uncorrelated  0.544  0.539  -         (16617, 139, 8637)
@@ -418,6 +446,11 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
 #define FACET_FX_FAST_ERR_LOH_FROM_DOTS         0.490
 #define FACET_FX_FAST_ERR_FRESNEL_SCHLICK       0.501
 #define FACET_FX_FAST_ERR_GGX_D                 0.514
+#define FACET_FX_FAST_ERR_BLINN_PHONG_D         0.51
+#define FACET_FX_FAST_ERR_BECKMANN_D            0.51
+#define FACET_FX_FAST_ERR_GGX_ANISO_D           0.52
+#define FACET_FX_FAST_ERR_GTR_D                 0.52
+#define FACET_FX_FAST_ERR_SMITH_G1_GTR          0.51
 #define FACET_FX_FAST_ERR_SMITH_G1              0.536
 #define FACET_FX_FAST_ERR_SMITH_G2              0.536
 #define FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED 0.544
@@ -443,6 +476,75 @@ int32_t facet_fresnel_schlick_fx_fast(int32_t f0, int32_t cos_theta);
  * 64 bits; UQ19.13, max 2^20/pi.  One 1/x.
  * Error: FACET_FX_FAST_ERR_GGX_D.  Cost: 73 / 217 (109 / 652). */
 uint32_t facet_ggx_d_fx_fast(int32_t noh, int32_t alpha);
+/* The exponential D terms, the fast tier only (kernels.def fx_code fast).
+ * Format argument: each is 2^-y times a prefactor whose maximum over N.H
+ * is 1/(pi alpha^2) <= 2^20/pi (Blinn-Phong at N.H = 1; Beckmann at N.H = 1
+ * for alpha <= 2^-0.5, else 4 alpha^2 e^(1/alpha^2 - 2)/pi <= 0.47), the
+ * peak of ggx_d: UQ19.13 holds it with 13 fraction bits, and the tail that
+ * falls below its LSB (2^-13) is an absolute error, as ggx_d's tail (D
+ * below 2^-14 rounds to 0; the oracle does too).  What it takes is an
+ * exponent good to ~2^-20 absolute wherever D is above the LSB (y < 64):
+ * exact products, reciprocals refined to 2^-29.5 (table + one Newton
+ * step), -log2 N.H by a series in 1 - N.H near 1 (relative precision kept:
+ * p reaches 2^21 there) and by the integer log2 elsewhere, y held in Q24
+ * (saturated at 128: D 2^13 < 2^-29 beyond 64), 2^-y by the degree-5 2^f
+ * and a final rounded shift (src/fx_fast_body.h has each bound).
+ * Blinn-Phong D = N.H^p / (pi alpha^2), p = 2 (1 - alpha^2) / alpha^2;
+ * noh [0, 1], alpha [2^-10, 1]; UQ19.13, max 2^20/pi.  N.H = 0 gives 0
+ * (alpha < 1); alpha = 1 gives 1/pi everywhere (facet.h).  Intermediates:
+ * A^2, 2 (2^15 - A)(2^15 + A) Q30 exact; 1/alpha^2 and p as normalised
+ * 32-bit mantissas with clz exponents; -log2 N.H: X = 2^15 - N exact,
+ * X (series) in 64 bits (< 2^42) or Q26 (<= 15 2^26) times 2^20, one
+ * 64-bit scale, normalised; y Q24 (<= 2^31).
+ * Error: FACET_FX_FAST_ERR_BLINN_PHONG_D (measured 0.5009 over every N.H
+ * at 560 alphas; 0.5000 in the test; relative 2^-16 above 2^15 LSB).
+ * Cost: 202 / 918 (no precise tier). */
+uint32_t facet_blinn_phong_d_fx_fast(int32_t noh, int32_t alpha);
+/* Beckmann D = exp(-tan^2 / alpha^2) / (pi alpha^2 N.H^4) (facet.h) as
+ * 2^-z alpha^2 r^2 / pi, r = 1/(N.H alpha)^2, z = log2(e) (1 - N.H)(1 + N.H) r;
+ * noh [0, 1], alpha [2^-10, 1]; UQ19.13, max 2^20/pi.  N.H = 0 gives 0.
+ * Intermediates: N A, (2^15 - N)(2^15 + N), A^2 Q30 exact; 1/(N.H alpha)
+ * refined to 2^-29.5, its square and fourth power as 32-bit mantissas with
+ * clz exponents; z Q24 (saturated at 128 where z >= 64: D 2^13 <
+ * 2^-29 there, the prefactor being <= 2^21 wherever z >= 64).
+ * Error: FACET_FX_FAST_ERR_BECKMANN_D (measured 0.5001 over every N.H at
+ * 560 alphas; 0.5000 in the test; relative 2^-16 above 2^15 LSB).
+ * Cost: 163 / 638 (no precise tier). */
+uint32_t facet_beckmann_d_fx_fast(int32_t noh, int32_t alpha);
+/* Anisotropic GGX D, UQ19.13 (as facet_ggx_aniso_d_fx): K in Q61 in 64 bits
+ * (the (N.H ax ay)^2 term truncated, <= 2^-20 relative), its floor by an
+ * exact 64-bit max, normalised by clz; (ax ay)^3 from the normalised
+ * product; one 1/x.
+ * Error: FACET_FX_FAST_ERR_GGX_ANISO_D (measured 0.514; 0.512 over 3e6
+ * unit half vectors; relative 2^-15.0 above 2^15 LSB).
+ * Cost: 159 / 569 (194 / 937). */
+uint32_t facet_ggx_aniso_d_fx_fast(int32_t noh, int32_t toh, int32_t boh, int32_t alpha_x, int32_t alpha_y);
+/* GTR D = c / d^gamma (facet.h), the fast tier only (kernels.def fx_code
+ * fast); noh [0, 1], alpha [2^-10, 1], gamma [0, 4] (raw Q15 [0, 4 2^15],
+ * the GAMMA domain; outside clamps).  Evaluated as
+ *   D = 2^Z g(|M|) / (pi g(|L|)),  g(m) = m / (1 - 2^-m),  L = log2 alpha^2,
+ *   M = (1 - gamma) L,  Z = -gamma log2 d - max(M, 0) in [-60, 20],
+ * d = (1 - n)(1 + n) + (n alpha)^2 exact in 64 bits (as ggx_d), which is
+ * c = E(L) / (pi E(M)) of facet.h with its limits (gamma = 1: g(0) = 1/ln 2
+ * by a series; alpha = 1 and gamma = 0: 1/pi) and no special case.
+ * Integer log2 and 2^f (src/fx_fast_body.h): log2 = clz (the exponent) +
+ * a 16-entry reciprocal/log table and a degree-5 series on the mantissa
+ * (|error| <= 2^-25.5); 2^f = a degree-5 polynomial on f in [0, 1)
+ * (Chebyshev nodes, <= 2^-22.9 relative with its truncations); 2^Z's
+ * integer part is the final shift.  Formats: -log2 d, |L|, |M| Q26 [<= 60
+ * 2^26 < 2^32]; gamma (-log2 d) Q41 in 64 bits [< 2^47.3]; Z + 64 Q24 [4 ..
+ * 84: < 2^31]; g's n Q26, d Q31, their cross products Q57 [< 2^63].
+ * Output UQ19.13 as ggx_d.  Range: the peak D(1) = c / alpha^(2 gamma) ~
+ * (gamma - 1) / (pi alpha^2) for gamma > 1; it fits 2^19 for every alpha
+ * where gamma <= 2.57 (gamma = 2: 2^20/pi as GGX; gamma = 1: 24076.5;
+ * gamma < 1 smaller still: c <= 1/pi, d^-gamma <= alpha^-2gamma), and above
+ * gamma = 2.571 the peak saturates at FACET_FX_MAX_D for alpha below
+ * 2^-9.99 (gamma 2.6) .. 2^-9.53 (gamma = 4, peak 1.0e6), near N.H = 1
+ * only.  The tail falls below the LSB (2^-13) as ggx_d's: absolute error.
+ * Error: FACET_FX_FAST_ERR_GTR_D (measured max 0.514, relative 2^-15.1
+ * above 2^15 LSB: the reciprocal's 2^-16 and the exponent's 2^-24 times ln 2
+ * |Z|).  Cost: 293 / 1525 (no precise tier). */
+uint32_t facet_gtr_d_fx_fast(int32_t noh, int32_t alpha, int32_t gamma);
 /* Smith G1 (exact GGX) = 2n / (n + sqrt(a^2 + (1 - a^2) n^2)), Q15.
  * w exact in 64 bits, one sqrt, one 1/x.
  * Error: FACET_FX_FAST_ERR_SMITH_G1.  Cost: 91 / 229 (198 / 1063). */
@@ -456,6 +558,28 @@ int32_t facet_smith_g2_uncorrelated_fx_fast(int32_t nol, int32_t nov, int32_t al
 /* Vis = 0.5 / (nv r(nl) + nl r(nv)), UQ16.16.  Two sqrt, one 1/x.
  * Error: FACET_FX_FAST_ERR_SMITH_VIS.  Cost: 115 / 374 (340 / 1674). */
 uint32_t facet_smith_vis_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+/* Smith G1 for GTR (Dimov; facet.h's closed forms at gamma = 0 .. 4 and
+ * the monotone cubic in gamma between them), the fast tier only (kernels.def
+ * fx_code fast); nov [0, 1], alpha [2^-10, 1], gamma [0, 4] (raw [0, 4
+ * 2^15]).  Q15, max 1.  The Q15 output is an absolute measure, so every
+ * stage is held to an absolute error: the closed forms divided through by
+ * powers of W (W = sqrt(n^2 + alpha^2 s2), the table root and one Heron
+ * step) are O(1) functions of nu = n / W in [0, 1] and alpha^2, Q30 values
+ * (the undivided ones go as alpha^4 at small N.V); divisions by one
+ * refined reciprocal (table + Newton, 2^-29); R(u) = ln(1 + u) / u by a
+ * series below u = 1/16 and the integer log2 above; e = 1 / (ln 2 g(|L|))
+ * from gtr_d's g.  The five values are non-decreasing in gamma (checked
+ * against the oracle on a 401 x 4001 (alpha, N.V) grid), so the
+ * Fritsch-Carlson slopes (harmonic means 2 a b / (a + b) = 2 a (b / (a + b)),
+ * ends (3 d0 - d1) / 2 floored at 0) and the Hermite sum are formed from
+ * differences >= 0: nothing is signed; Q27 .. Q32 stages, each bound
+ * beside the code (src/fx_fast_body.h).
+ * Error: FACET_FX_FAST_ERR_SMITH_G1_GTR LSB (measured 0.5002 in the test,
+ * 0.5021 over 3e6 tuples with gamma uniform in [0, 4] and 1 in 7 at an
+ * integer order; each closed form alone <= 0.5016).  Cost: 949 / 3790
+ * (no precise tier; 14 refined reciprocals, 2 log2, 1 2^f: the widest
+ * kernel of the tier). */
+int32_t facet_smith_g1_gtr_fx_fast(int32_t nov, int32_t alpha, int32_t gamma);
 /* Hammon G1 = 2n / (n (2 - a) + a), the denominator exact; Q15.  One 1/x.
  * Error: FACET_FX_FAST_ERR_SMITH_G1_HAMMON.  Cost: 54 / 115 (62 / 508). */
 int32_t facet_smith_g1_hammon_fx_fast(int32_t nov, int32_t alpha);
@@ -612,6 +736,13 @@ void facet_loh_from_dots_fx_fast_batch(int32_t *out, const int32_t *lov, size_t 
 void facet_fresnel_schlick_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *cos_theta,
                                     size_t n);
 void facet_ggx_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
+void facet_blinn_phong_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
+void facet_beckmann_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
+void facet_ggx_aniso_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *toh,
+                                     const int32_t *boh, const int32_t *alpha_x,
+                                     const int32_t *alpha_y, size_t n);
+void facet_gtr_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha,
+                               const int32_t *gamma, size_t n);
 void facet_smith_g1_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
 void facet_smith_g2_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
                              const int32_t *alpha, size_t n);
@@ -621,6 +752,8 @@ void facet_smith_vis_fx_fast_batch(uint32_t *out, const int32_t *nol, const int3
                               const int32_t *alpha, size_t n);
 void facet_smith_g1_hammon_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
                                     size_t n);
+void facet_smith_g1_gtr_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
+                                      const int32_t *gamma, size_t n);
 void facet_smith_g2_hammon_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
                                     const int32_t *alpha, size_t n);
 void facet_smith_vis_hammon_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,

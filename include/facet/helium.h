@@ -50,10 +50,11 @@ FACET_INLINE float32x4_t facet_helium_sel_lt(float32x4_t a, float32x4_t b, float
  * compiler lowers MVE's float compares. */
 FACET_INLINE float32x4_t facet_helium_keep_ord(float32x4_t r, float32x4_t a, float32x4_t b)
 {
-    uint32x4_t abs_mask = vdupq_n_u32(0x7fffffffu), inf = vdupq_n_u32(0x7f800000u);
-    uint32x4_t ia = vandq_u32(vreinterpretq_u32_f32(a), abs_mask);
-    uint32x4_t ib = vandq_u32(vreinterpretq_u32_f32(b), abs_mask);
-    mve_pred16_t nan = (mve_pred16_t)(vcmphiq_u32(ia, inf) | vcmphiq_u32(ib, inf));
+    /* the bits without the sign, the larger of the two: above +Inf's bits
+     * exactly where a or b is a NaN (one compare, no predicate OR) */
+    uint32x4_t ia = vshlq_n_u32(vreinterpretq_u32_f32(a), 1);
+    uint32x4_t ib = vshlq_n_u32(vreinterpretq_u32_f32(b), 1);
+    mve_pred16_t nan = vcmphiq_u32(vmaxq_u32(ia, ib), vdupq_n_u32(0xff000000u));
     return vpselq_f32(vdupq_n_f32(0.0f), r, nan);
 }
 /* compare-and-select, not vmaxnm (which would return the number): a NaN

@@ -18,7 +18,7 @@
 #include <math.h>
 #include "facet.h"
 #include "fuzz_common.h"
-#include "../../src/kernel_list.h"
+#include "../sample.h"
 
 #define MAX_N 80
 #define ERR_FLOOR 0x1p-100
@@ -26,46 +26,11 @@
 
 static int same(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
 
-/* the low end of input i's domain (facet.h; as tests/sample.h) */
-/* each input's domain class, from the list */
-#define DOMAIN_CLASS_(input, domain) #domain
-static const struct { const char *name, *cls[FACET_MAX_INPUTS]; } domains_[] = {
-#define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...) \
-    { #name, { FACET_MAP_INPUTS(n, DOMAIN_CLASS_, __VA_ARGS__) } },
-#include "../../src/kernels.def"
-#undef FACET_KERNEL
-};
-
-static int is_cos_class(const facet_kernel *k, int i)
-{
-    size_t j;
-    for (j = 0; j < sizeof domains_ / sizeof domains_[0]; j++)
-        if (!strcmp(domains_[j].name, k->name))
-            return !strcmp(domains_[j].cls[i], "COS");
-    return 0;
-}
-
-static float domain_lo(const facet_kernel *k, int i)
-{
-    const char *n = k->inputs[i];
-    if (!strcmp(n, "lov") || !strcmp(n, "toh") || !strcmp(n, "boh"))
-        return -1.0f;
-    if (!strncmp(n, "alpha", 5))
-        return FACET_ALPHA_MIN;
-    if (is_cos_class(k, i)) /* the cosine floor (src/kernels.def class COS) */
-        return FACET_COS_MIN;
-    return 0.0f;
-}
-
-/* the high end: 4 for the GTR tail gamma, else 1 */
-static float domain_hi(const facet_kernel *k, int i)
-{
-    return !strcmp(k->inputs[i], "gamma") ? 4.0f : 1.0f;
-}
-
+/* each input's domain, from the list's domain classes: the one table the
+ * tests share (tests/sample.h) */
 static float clamp_in(const facet_kernel *k, int i, float v)
 {
-    float lo = domain_lo(k, i), hi = domain_hi(k, i);
+    float lo = smp_domain_lo(k, i), hi = smp_domain_hi(k, i);
     return v < lo ? lo : v > hi ? hi : v;
 }
 

@@ -108,6 +108,19 @@ if command -v arm-none-eabi-gcc > /dev/null 2>&1; then
             { head -5 build/bench-suite.cortexm.log; bad "bench/cortexm/cortexm_main.c does not compile ($f)"; }
     done
 fi
+# the Arm vector targets' counting program (bench/report/armcount_main.c, one
+# call per kernel and tier of the list) compiles for both ports: a kernel
+# the list gains must not silently drop the chooser's NEON and Helium rows
+if command -v aarch64-linux-gnu-gcc > /dev/null 2>&1; then
+    aarch64-linux-gnu-gcc -O2 -std=c99 -Wall -Wextra -Werror -Iinclude -DARMCOUNT_PORT=neon -fsyntax-only \
+        bench/report/armcount_main.c 2> build/bench-suite.armcount.log && ok ||
+        { head -5 build/bench-suite.armcount.log; bad "bench/report/armcount_main.c does not compile for NEON"; }
+fi
+if command -v arm-none-eabi-gcc > /dev/null 2>&1; then
+    arm-none-eabi-gcc -mcpu=cortex-m55 -mfloat-abi=hard -mthumb -O2 -std=c99 -Wall -Wextra -Werror -Iinclude \
+        -DARMCOUNT_PORT=helium -fsyntax-only bench/report/armcount_main.c 2> build/bench-suite.armcount.log && ok ||
+        { head -5 build/bench-suite.armcount.log; bad "bench/report/armcount_main.c does not compile for Helium"; }
+fi
 # the report's own part on its own (no mca, no Cortex-M traces): a quick run
 # writes a self-contained index.html that is valid UTF-8, whose labelled
 # figures put every label inside their SVG (an uninitialised picture once
@@ -123,6 +136,12 @@ rm -rf $r && mkdir -p $r
 printf '# facet report\n\n## f32 accuracy (a 60-bench fixture for the part make report writes)\n\nnone measured\n' > $r/accuracy.md
 { cat $r/accuracy.md; printf '\n# Benchmarks (bench/)\n\nthe stale bench part of a full run\n'; } > $r/report.md
 cp $r/report.md $r/report.md.full
+# the Arm vector targets' costs (what bench/report/arm_targets.sh leaves): a
+# fixture with NEON costed and Helium skipped, so both chooser paths show
+{ echo "# format port kernel measure value"
+  echo "f32 neon brdf_hammon mca-cortex-a57 44.50"; echo "f32_fast neon brdf_hammon mca-cortex-a57 43.25"
+  echo "fx_fast neon brdf_hammon mca-cortex-a57 99.75"; echo "f32 neon brdf_hammon qemu-insn 44.9"; } > $r/arm_vec.tsv
+printf 'neon ok llvm-mca fixture\nhelium skipped: a 60-bench fixture reason\n' > $r/arm_vec.status
 if build/facet-bench report $r --quick > $r.log 2>&1; then ok; else bad "facet-bench report --quick failed (log $r.log)"; fi
 n=$(grep -c '^<h1>Benchmarks (bench/)' $r/index.html)
 [ "$n" -eq 1 ] && ok || bad "index.html has $n Benchmarks sections, want 1"
@@ -155,6 +174,46 @@ for row in '| f32 scalar | oracle |' '| fx (Q15 dots) | oracle |' '| fx_fast (Q1
            '| model: exact-Vis BRDF | brdf_hammon oracle |'; do
     grep -qF "$row" $r/bench.md && ok || bad "image-space table lacks the row '$row'"
 done
+# the chooser's Arm vector targets: NEON costed in its one unit (modelled
+# cycles; the qemu-insn line must not leak in), Helium with the reason it
+# was not costed; and without arm_vec.status the report says why
+awk '/^### whole BRDF/ { f = 1 } f && /^\| NEON \(aarch64, Cortex-A57 model\) \| 3 \|/ { print; exit }' $r/bench.md |
+    grep -q '<= 43.2 cyc (llvm-mca A57 model): <b>brdf_hammon f32_fast</b>' && ok ||
+    bad "chooser: no NEON row for brdf_hammon with its llvm-mca cost (whole BRDF table)"
+awk '/^### whole BRDF/ { f = 1 } f && /^\| Helium \(Cortex-M55\) \| 0 \| not costed: skipped: a 60-bench fixture reason \|/ { g = 1 } END { exit !g }' $r/bench.md &&
+    ok || bad "chooser: no Helium row stating why it was not costed"
+grep -q 'Helium: skipped: a 60-bench fixture reason' $r/bench.md && ok || bad "chooser: the Helium status is not stated"
+# the menu's variants in image space: one row per variant (names from the
+# menu, the ones this build has), numbers in every measured cell, no inf or
+# nan, a model error wherever the variant approximates a reference, and the
+# labelled figure of the model rows
+sed -n '/^### The menu.s variants in image space/,/^#/p' $r/bench.md > $r/variants.md
+for v in 'ggx_d' 'blinn_phong_d' 'beckmann_d' 'ggx_aniso_d (alpha_y = alpha/2)' 'gtr_d (gamma 1)' 'gtr_d (gamma 1.5)' \
+         'gtr_d (gamma 2)' 'gtr_d (gamma 3)' smith_vis smith_vis_hammon smith_vis_joint_approx smith_vis_fit smith_g2 \
+         smith_g2_hammon smith_g2_uncorrelated g_implicit g_neumann g_cook_torrance g_kelemen smith_g1 smith_g1_hammon \
+         smith_g1_beckmann smith_g1_schlick_beckmann 'smith_g1_gtr (gamma 1.5)' 'smith_g1_gtr (gamma 3)' \
+         fresnel_schlick 'fresnel_schlick_f90 (f90 = 1)' fresnel_schlick_sg fresnel_cook_torrance diffuse_hammon \
+         diffuse_hammon_hybrid diffuse_hammon_cheap diffuse_burley diffuse_oren_nayar lambert; do
+    k=${v%% *}
+    build/facet list | grep -q "^$k " || continue
+    grep -qF "| $v | " $r/variants.md && ok || bad "image-space variants: no row for '$v'"
+done
+cell='[0-9]+ / [0-9]+ / [0-9]+\.[0-9][0-9][0-9] \([0-9]+\.[0-9][0-9]\)' # (no {n}: mawk has none)
+# columns: variant, term, f32, f32_fast, fx, fx_fast, model against, model error
+CELL="^$cell\$" awk 'BEGIN { c = ENVIRON["CELL"] } /^\| / && !/^\| variant / && !/^\|---/ {
+        sub(/^\| /, ""); sub(/ \|$/, ""); n = split($0, f, / \| /)
+        if (n != 8) { print "columns: " $0; bad = 1 }
+        for (i = 3; i <= 6; i++) if (f[i] != "-" && f[i] !~ c) { print "cell: " $0; bad = 1 }
+        if (f[7] != "-") { refs++; if (f[8] ~ c || f[8] == "0 (the reference)") mods++; else { print "model: " $0; bad = 1 } }
+        else if (f[8] != "-") { print "model without reference: " $0; bad = 1 } }
+    END { if (refs < 20) { print refs " rows with a reference, want >= 20"; bad = 1 } exit bad }' $r/variants.md > $r/variants.bad &&
+    ok || { head -3 $r/variants.bad; bad "image-space variants: a malformed row (above)"; }
+grep -qiE '(^|[^a-z])(inf|nan)([^a-z]|$)' $r/variants.md && bad "image-space variants: inf or nan in the table" || ok
+grep -qE '^\| smith_vis_hammon \| Vis \| '"$cell"' \| '"$cell"' \| '"$cell"' \| '"$cell"' \|' $r/variants.md && ok ||
+    bad "image-space variants: smith_vis_hammon lacks its f32, f32_fast, fx and fx_fast cells"
+grep -q '<b>Model error in image space: each variant against its exact reference.</b>' $r/index.html && ok ||
+    bad "no labelled figure of the variants' model error"
+[ -s $r/image_variants_model.png ] && ok || bad "no image_variants_model.png"
 # white furnace: Lambert's directional albedo is 1 (to the quadrature's 2e-4)
 grep -qE '^\| lambert \| any \| 1\.000[0-9] \| 1\.000[0-9] \| 1\.000[0-9] \|' $r/bench.md && ok ||
     bad "white furnace: Lambert's albedo is not 1"

@@ -74,7 +74,6 @@
 #define X_HAMMON_DEN_ FACET_K(x_hammon_den)
 #define X_DIFFUSE_SINGLE_ FACET_K(x_diffuse_single)
 #define X_DIFFUSE_PI_ FACET_K(x_diffuse_pi)
-#define X_BRDF_PARTS_ FACET_K(x_brdf_parts)
 #define X_BRDF_GEOMETRY_ FACET_K(x_brdf_geometry)
 #define X_BRDF_CHANNEL_ FACET_K(x_brdf_channel)
 
@@ -602,7 +601,7 @@ FACET_INLINE V_ FACET_K(smith_g1_gtr)(V_ nov, V_ alpha, V_ gamma)
     V_ W = MUL_(w2, RSQRT_X5_(w2)); /* cubed in G^4: the precise rsqrt in both tiers */
     V_ n2 = ADD_(n, n), nW = ADD_(n, W), b = ADD_(C_(1.0f), a2);
     V_ y0, y1, y2, y3, y4, la, e, den1, u, W3, num4, den4, k4;
-    V_ d0, d1, d2, d3, m0, m1, m2, m3, m4, yj, yk, mj, mk, t, t1, j1, j2, j3, S, sc;
+    V_ d0, d1, d2, d3, m0, m1, m2, m3, m4, yj, yk, mj, mk, t, t1, j1, j2, j3, S, ex, sc;
     /* gamma = 0: 2n / (1 + n) */
     y0 = MUL_(n2, RCP_EXP_(ADD_(C_(1.0f), n)));
     /* gamma = 1: n / (n + e s2 (W + n (1 - R(u))) / ((W + 1)(n + W))),
@@ -635,7 +634,8 @@ FACET_INLINE V_ FACET_K(smith_g1_gtr)(V_ nov, V_ alpha, V_ gamma)
      * y (d0 d1 ...), which underflow for a tiny N.V (the y go as N.V):
      * they are formed on the differences scaled by sc = 2^-floor(log2 N.V)
      * (exact), and the slope term is scaled back by 1 / sc. */
-    sc = FACET_OP(exp2i)(SUB_(C_(0.0f), FACET_OP(getexp)(MAX_(n, C_(0x1p-126f)))));
+    ex = FACET_OP(getexp)(MAX_(n, C_(0x1p-126f)));
+    sc = FACET_OP(exp2i)(SUB_(C_(0.0f), ex));
     d0 = MUL_(SUB_(y1, y0), sc);
     d1 = MUL_(SUB_(y2, y1), sc);
     d2 = MUL_(SUB_(y3, y2), sc);
@@ -657,8 +657,7 @@ FACET_INLINE V_ FACET_K(smith_g1_gtr)(V_ nov, V_ alpha, V_ gamma)
     /* (1 + 2t)(1 - t)^2 yj + t^2 (3 - 2t) yk + t (1 - t) ((1 - t) mj - t mk) */
     S = MUL_(MUL_(FMA_(C_(2.0f), t, C_(1.0f)), MUL_(t1, t1)), yj);
     S = FMA_(MUL_(MUL_(t, t), FNMA_(C_(2.0f), t, C_(3.0f))), yk, S);
-    S = FMA_(MUL_(t, t1), MUL_(FNMA_(t, mk, MUL_(t1, mj)), FACET_OP(exp2i)(FACET_OP(getexp)(MAX_(n, C_(0x1p-126f))))),
-             S);
+    S = FMA_(MUL_(t, t1), MUL_(FNMA_(t, mk, MUL_(t1, mj)), FACET_OP(exp2i)(ex)), S);
     return NAN0_(CLAMP_(S, C_(0.0f), C_(1.0f)), nov, alpha, gamma);
 }
 
@@ -926,11 +925,11 @@ FACET_INLINE V_ FACET_K(diffuse_hammon_cheap)(V_ nol, V_ nov, V_ lov, V_ alpha, 
  * brdf = (dv2 F + albedo (single + albedo multi)) / pi.  The RGB form shares
  * it across channels; per channel the same operations run in the same order,
  * so each channel equals brdf_hammon to the bit. */
-typedef struct X_BRDF_PARTS_ { V_ y5, dv2, single, multi; } X_BRDF_PARTS_;
-
-FACET_INLINE X_BRDF_PARTS_ X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha)
+/* The parts are out-parameters, not a struct: RVV's vector types are
+ * sizeless (no struct members, no arrays), and one body serves every port. */
+FACET_INLINE void X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha,
+                                   V_ *y5_, V_ *dv2_, V_ *single_, V_ *multi_)
 {
-    X_BRDF_PARTS_ g;
     V_ nl = X_COS_(nol), nv = X_COS_(nov);
     V_ lv = X_LOV_(lov);
     V_ a = X_ALPHA_(alpha);
@@ -968,38 +967,44 @@ FACET_INLINE X_BRDF_PARTS_ X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha)
     V_ dv_pi = MUL_(MUL_(u, m), u);             /* pi D Vis / 2; u m = alpha t / e <= 512 */
     /* 0.5 / N.H = L.H / s (N.H = s / (2 L.H)), at least 0.5 */
     V_ h = MAX_(MUL_(lh, RCP_(sh)), C_(0.5f));
-    g.y5 = MUL_(MUL_(y2, y2), y);
-    g.dv2 = ADD_(dv_pi, dv_pi);
-    g.single = X_DIFFUSE_SINGLE_(nl, nv, t, h, a, &g.multi);
-    return g;
+    *y5_ = MUL_(MUL_(y2, y2), y);
+    *dv2_ = ADD_(dv_pi, dv_pi);
+    *single_ = X_DIFFUSE_SINGLE_(nl, nv, t, h, a, multi_);
 }
 
-FACET_INLINE V_ X_BRDF_CHANNEL_(const X_BRDF_PARTS_ *g, V_ f0, V_ albedo)
+FACET_INLINE V_ X_BRDF_CHANNEL_(V_ y5, V_ dv2, V_ single, V_ multi, V_ f0, V_ albedo)
 {
     V_ f0c = X_UNIT_(f0), alb = X_UNIT_(albedo);
-    V_ f = FMA_(SUB_(C_(1.0f), f0c), g->y5, f0c);
-    V_ dif = MUL_(alb, FMA_(alb, g->multi, g->single));
-    return MUL_(FMA_(g->dv2, f, dif), C_(FACET_INV_PI_));
+    V_ f = FMA_(SUB_(C_(1.0f), f0c), y5, f0c);
+    V_ dif = MUL_(alb, FMA_(alb, multi, single));
+    return MUL_(FMA_(dv2, f, dif), C_(FACET_INV_PI_));
 }
 
 FACET_INLINE V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_ albedo)
 {
-    X_BRDF_PARTS_ g = X_BRDF_GEOMETRY_(nol, nov, lov, alpha);
-    return NAN0_(X_BRDF_CHANNEL_(&g, f0, albedo), nol, nov, lov, alpha, f0, albedo);
+    V_ y5, dv2, single, multi;
+    X_BRDF_GEOMETRY_(nol, nov, lov, alpha, &y5, &dv2, &single, &multi);
+    return NAN0_(X_BRDF_CHANNEL_(y5, dv2, single, multi, f0, albedo), nol, nov, lov, alpha, f0, albedo);
 }
 
 /* brdf_hammon for three channels of f0 and albedo at once, the geometry
- * computed once: out[c] equals brdf_hammon(..., f0[c], albedo[c]) bit for bit
+ * computed once: *out_c equals brdf_hammon(..., f0_c, albedo_c) bit for bit
  * (NaN rule included: a NaN in the geometry zeroes every channel, one in
- * f0[c] or albedo[c] channel c). */
-FACET_INLINE void FACET_K(brdf_hammon_rgb)(V_ out[3], V_ nol, V_ nov, V_ lov, V_ alpha,
-                                           const V_ f0[3], const V_ albedo[3])
+ * f0_c or albedo_c channel c).  Channels as separate arguments (sizeless
+ * vector types have no arrays). */
+#define X_BRDF_RGB_CH_(o, f0c, albc)                                                          \
+    *(o) = NAN0_(X_BRDF_CHANNEL_(y5, dv2, single, multi, f0c, albc), nol, nov, lov, alpha, f0c, albc)
+FACET_INLINE void FACET_K(brdf_hammon_rgb)(V_ *out_r, V_ *out_g, V_ *out_b, V_ nol, V_ nov, V_ lov,
+                                           V_ alpha, V_ f0_r, V_ f0_g, V_ f0_b, V_ albedo_r,
+                                           V_ albedo_g, V_ albedo_b)
 {
-    X_BRDF_PARTS_ g = X_BRDF_GEOMETRY_(nol, nov, lov, alpha);
-    int c;
-    for (c = 0; c < 3; c++)
-        out[c] = NAN0_(X_BRDF_CHANNEL_(&g, f0[c], albedo[c]), nol, nov, lov, alpha, f0[c], albedo[c]);
+    V_ y5, dv2, single, multi;
+    X_BRDF_GEOMETRY_(nol, nov, lov, alpha, &y5, &dv2, &single, &multi);
+    X_BRDF_RGB_CH_(out_r, f0_r, albedo_r);
+    X_BRDF_RGB_CH_(out_g, f0_g, albedo_g);
+    X_BRDF_RGB_CH_(out_b, f0_b, albedo_b);
 }
+#undef X_BRDF_RGB_CH_
 
 /* Lambert: albedo / pi, the baseline diffuse. */
 FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
@@ -1058,6 +1063,5 @@ FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
 #undef X_HAMMON_DEN_
 #undef X_DIFFUSE_SINGLE_
 #undef X_DIFFUSE_PI_
-#undef X_BRDF_PARTS_
 #undef X_BRDF_GEOMETRY_
 #undef X_BRDF_CHANNEL_

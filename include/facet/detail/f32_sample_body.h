@@ -77,7 +77,7 @@ FACET_INLINE V_ S_SQRT0_(V_ x) { return MUL_(x, RSQRT_(MAX_(x, C_(7.88860905e-31
  * minimax) fitted in long double, coefficients rounded to float; with
  * those float coefficients and exact arithmetic the relative error is
  * below 3.6e-8 (S) and 9.5e-9 (C).  Tested: tests/test_sample_prims.c. */
-FACET_INLINE void FACET_K(sincos_2pi)(V_ sc[2], V_ u)
+FACET_INLINE void FACET_K(sincos_2pi)(V_ *sin_out, V_ *cos_out, V_ u)
 {
     V_ x = S_U_(u);
     V_ a = MIN_(x, SUB_(C_(1.0f), x));
@@ -94,8 +94,8 @@ FACET_INLINE void FACET_K(sincos_2pi)(V_ sc[2], V_ u)
     k = FMA_(k, t, C_(-1.973920822e+01f));
     k = FMA_(k, t, C_(1.0f));
     /* swap for b >= 1/8, then the signs */
-    sc[0] = MUL_(SEL_LT_(b, C_(0.125f), s, k), SEL_LT_(x, C_(0.5f), C_(1.0f), C_(-1.0f)));
-    sc[1] = MUL_(SEL_LT_(b, C_(0.125f), k, s), SEL_LT_(a, C_(0.25f), C_(1.0f), C_(-1.0f)));
+    *sin_out = MUL_(SEL_LT_(b, C_(0.125f), s, k), SEL_LT_(x, C_(0.5f), C_(1.0f), C_(-1.0f)));
+    *cos_out = MUL_(SEL_LT_(b, C_(0.125f), k, s), SEL_LT_(a, C_(0.25f), C_(1.0f), C_(-1.0f)));
 }
 
 /* ---- 2^y and log2 ----------------------------------------------------------
@@ -107,16 +107,16 @@ FACET_INLINE void FACET_K(sincos_2pi)(V_ sc[2], V_ u)
  * s^2 / c^2 the sampled tan^2 of the unit-width distribution.  Normalizing
  * here (rather than trusting s^2 + c^2 = 1) makes |h| = 1 to rounding
  * whatever the error of sin/cos; c > 0 keeps h.z > 0. */
-FACET_INLINE void S_FROM_SC_(V_ h[3], V_ s, V_ c, V_ u2, V_ ax, V_ ay)
+FACET_INLINE void S_FROM_SC_(V_ *hx, V_ *hy, V_ *hz, V_ s, V_ c, V_ u2, V_ ax, V_ ay)
 {
-    V_ sc[2], x, y, n;
-    FACET_K(sincos_2pi)(sc, u2);
-    x = MUL_(MUL_(ax, s), sc[1]);
-    y = MUL_(MUL_(ay, s), sc[0]);
+    V_ sn, cs, x, y, n;
+    FACET_K(sincos_2pi)(&sn, &cs, u2);
+    x = MUL_(MUL_(ax, s), cs);
+    y = MUL_(MUL_(ay, s), sn);
     n = RSQRT_UNIT_(FMA_(x, x, FMA_(y, y, MUL_(c, c))));
-    h[0] = MUL_(x, n);
-    h[1] = MUL_(y, n);
-    h[2] = MUL_(c, n);
+    *hx = MUL_(x, n);
+    *hy = MUL_(y, n);
+    *hz = MUL_(c, n);
 }
 
 /* ---- GGX D sampling ------------------------------------------------------
@@ -131,18 +131,18 @@ FACET_INLINE void S_FROM_SC_(V_ h[3], V_ s, V_ c, V_ u2, V_ ax, V_ ay)
  * For ax = ay = alpha: tan^2 theta = alpha^2 u1 / (1 - u1), i.e.
  * cos^2 theta = (1 - u1) / (1 + (alpha^2 - 1) u1), Schutte's and the VSB
  * notes' inverse CDF.  No cancellation anywhere (1 - u1 is exact for u1 >= 1/2). */
-FACET_INLINE void FACET_K(ggx_sample_d_aniso)(V_ h[3], V_ u1, V_ u2, V_ alpha_x, V_ alpha_y)
+FACET_INLINE void FACET_K(ggx_sample_d_aniso)(V_ *hx_out, V_ *hy_out, V_ *hz_out, V_ u1, V_ u2, V_ alpha_x, V_ alpha_y)
 {
     V_ u = S_U_(u1);
-    S_FROM_SC_(h, S_SQRT0_(u), S_SQRT0_(SUB_(C_(1.0f), u)), u2,
+    S_FROM_SC_(hx_out, hy_out, hz_out, S_SQRT0_(u), S_SQRT0_(SUB_(C_(1.0f), u)), u2,
                FACET_K(x_alpha)(alpha_x), FACET_K(x_alpha)(alpha_y));
 }
 
-FACET_INLINE void FACET_K(ggx_sample_d)(V_ h[3], V_ u1, V_ u2, V_ alpha)
+FACET_INLINE void FACET_K(ggx_sample_d)(V_ *hx_out, V_ *hy_out, V_ *hz_out, V_ u1, V_ u2, V_ alpha)
 {
     V_ a = FACET_K(x_alpha)(alpha);
     V_ u = S_U_(u1);
-    S_FROM_SC_(h, S_SQRT0_(u), S_SQRT0_(SUB_(C_(1.0f), u)), u2, a, a);
+    S_FROM_SC_(hx_out, hy_out, hz_out, S_SQRT0_(u), S_SQRT0_(SUB_(C_(1.0f), u)), u2, a, a);
 }
 
 /* pdf of h: D(h) N.H, D by ggx_d's own code (so D agrees with ggx_d to the
@@ -210,7 +210,7 @@ FACET_INLINE V_ FACET_K(ggx_pdf_d_aniso)(V_ hx, V_ hy, V_ hz, V_ alpha_x, V_ alp
  * v: components clamped to [-1, 1] (NaN -> -1), v.z raised to 0 (below the
  * horizon: the view from the horizon at the same azimuth); only v's
  * direction matters; a stretched v shorter than 2^-50 acts as (0, 0, 1). */
-FACET_INLINE void S_VNDF_(V_ h[3], V_ vx, V_ vy, V_ vz, V_ u1, V_ u2, V_ ax, V_ ay)
+FACET_INLINE void S_VNDF_(V_ *hx_out, V_ *hy_out, V_ *hz_out, V_ vx, V_ vy, V_ vz, V_ u1, V_ u2, V_ ax, V_ ay)
 {
     V_ x = MUL_(ax, CLAMP_(vx, C_(-1.0f), C_(1.0f)));
     V_ y = MUL_(ay, CLAMP_(vy, C_(-1.0f), C_(1.0f)));
@@ -218,7 +218,7 @@ FACET_INLINE void S_VNDF_(V_ h[3], V_ vx, V_ vy, V_ vz, V_ u1, V_ u2, V_ ax, V_ 
     V_ t2 = FMA_(x, x, MUL_(y, y));
     V_ l2 = FMA_(z, z, t2);
     V_ tiny = C_(7.88860905e-31f); /* 2^-100 */
-    V_ flat, r, rt, e1x, e1y, rho, Vz, opv, omv, u, Hz, s, sc[2], cphi, A, B, Hx, Hy, mx, my, n;
+    V_ flat, r, rt, e1x, e1y, rho, Vz, opv, omv, u, Hz, s, sn, cs, cphi, A, B, Hx, Hy, mx, my, n;
     z = SEL_LT_(l2, tiny, C_(1.0f), z);
     t2 = SEL_LT_(l2, tiny, C_(0.0f), t2);
     l2 = SEL_LT_(l2, tiny, C_(1.0f), l2);
@@ -235,36 +235,36 @@ FACET_INLINE void S_VNDF_(V_ h[3], V_ vx, V_ vy, V_ vz, V_ u1, V_ u2, V_ ax, V_ 
     u = S_U_(u1);
     Hz = MUL_(SUB_(C_(1.0f), u), opv);
     s = S_SQRT0_(MUL_(MUL_(u, opv), ADD_(Hz, omv)));
-    FACET_K(sincos_2pi)(sc, MUL_(S_U_(u2), C_(0.5f)));
+    FACET_K(sincos_2pi)(&sn, &cs, MUL_(S_U_(u2), C_(0.5f)));
     /* H.e1 = rho + s cos phi' directly where cos phi' >= -1/2 (no
      * cancellation worse than the value's own conditioning), else from the
      * rim form; its reciprocal is the precise one in both tiers, since a
      * cancelling sum would amplify an unrefined estimate's error */
-    cphi = FNMA_(sc[0], sc[0], MUL_(sc[1], sc[1]));
+    cphi = FNMA_(sn, sn, MUL_(cs, cs));
     A = MUL_(MUL_(Hz, FNMA_(u, opv, omv)), FACET_OP(rcp)(MAX_(ADD_(rho, s), tiny)));
-    A = FMA_(ADD_(s, s), MUL_(sc[1], sc[1]), A);
+    A = FMA_(ADD_(s, s), MUL_(cs, cs), A);
     A = SEL_LT_(cphi, C_(-0.5f), A, FMA_(s, cphi, rho));
-    B = MUL_(ADD_(s, s), MUL_(sc[0], sc[1]));
+    B = MUL_(ADD_(s, s), MUL_(sn, cs));
     Hx = FMA_(e1x, A, MUL_(SUB_(C_(0.0f), e1y), B));
     Hy = FMA_(e1y, A, MUL_(e1x, B));
     mx = MUL_(ax, Hx);
     my = MUL_(ay, Hy);
     n = RSQRT_UNIT_(FMA_(mx, mx, FMA_(my, my, MUL_(Hz, Hz))));
-    h[0] = MUL_(mx, n);
-    h[1] = MUL_(my, n);
-    h[2] = MUL_(Hz, n);
+    *hx_out = MUL_(mx, n);
+    *hy_out = MUL_(my, n);
+    *hz_out = MUL_(Hz, n);
 }
 
-FACET_INLINE void FACET_K(ggx_sample_vndf)(V_ h[3], V_ vx, V_ vy, V_ vz, V_ u1, V_ u2, V_ alpha)
+FACET_INLINE void FACET_K(ggx_sample_vndf)(V_ *hx_out, V_ *hy_out, V_ *hz_out, V_ vx, V_ vy, V_ vz, V_ u1, V_ u2, V_ alpha)
 {
     V_ a = FACET_K(x_alpha)(alpha);
-    S_VNDF_(h, vx, vy, vz, u1, u2, a, a);
+    S_VNDF_(hx_out, hy_out, hz_out, vx, vy, vz, u1, u2, a, a);
 }
 
-FACET_INLINE void FACET_K(ggx_sample_vndf_aniso)(V_ h[3], V_ vx, V_ vy, V_ vz, V_ u1, V_ u2,
+FACET_INLINE void FACET_K(ggx_sample_vndf_aniso)(V_ *hx_out, V_ *hy_out, V_ *hz_out, V_ vx, V_ vy, V_ vz, V_ u1, V_ u2,
                                                  V_ alpha_x, V_ alpha_y)
 {
-    S_VNDF_(h, vx, vy, vz, u1, u2, FACET_K(x_alpha)(alpha_x), FACET_K(x_alpha)(alpha_y));
+    S_VNDF_(hx_out, hy_out, hz_out, vx, vy, vz, u1, u2, FACET_K(x_alpha)(alpha_x), FACET_K(x_alpha)(alpha_y));
 }
 
 /* pdf of h: G1(v) max(0, V.H) D(h) / N.V.  With G1 = 2 n / (n + r),
@@ -315,16 +315,16 @@ FACET_INLINE V_ FACET_K(ggx_pdf_vndf_aniso)(V_ vx, V_ vy, V_ vz, V_ hx, V_ hy, V
 }
 
 /* l = 2 (v.h) h - v, components clamped to [-1, 1] first (NaN -> -1). */
-FACET_INLINE void FACET_K(reflect)(V_ l[3], V_ vx, V_ vy, V_ vz, V_ hx, V_ hy, V_ hz)
+FACET_INLINE void FACET_K(reflect)(V_ *lx_out, V_ *ly_out, V_ *lz_out, V_ vx, V_ vy, V_ vz, V_ hx, V_ hy, V_ hz)
 {
     V_ one = C_(1.0f), mone = C_(-1.0f);
     V_ x = CLAMP_(vx, mone, one), y = CLAMP_(vy, mone, one), z = CLAMP_(vz, mone, one);
     V_ a = CLAMP_(hx, mone, one), b = CLAMP_(hy, mone, one), c = CLAMP_(hz, mone, one);
     V_ d = FMA_(x, a, FMA_(y, b, MUL_(z, c)));
     V_ d2 = ADD_(d, d);
-    l[0] = FMA_(d2, a, SUB_(C_(0.0f), x));
-    l[1] = FMA_(d2, b, SUB_(C_(0.0f), y));
-    l[2] = FMA_(d2, c, SUB_(C_(0.0f), z));
+    *lx_out = FMA_(d2, a, SUB_(C_(0.0f), x));
+    *ly_out = FMA_(d2, b, SUB_(C_(0.0f), y));
+    *lz_out = FMA_(d2, c, SUB_(C_(0.0f), z));
 }
 
 /* ---- GTR D sampling ------------------------------------------------------
@@ -353,7 +353,7 @@ FACET_INLINE void S_GTR1_SC_(V_ *s, V_ *c, V_ u, V_ a)
 
 /* gamma < 1.5 samples GTR1 (gamma = 1), otherwise (NaN too) GGX (gamma = 2):
  * the two orders with a closed-form inverse CDF in this library. */
-FACET_INLINE void FACET_K(gtr_sample_d)(V_ h[3], V_ u1, V_ u2, V_ alpha, V_ gamma)
+FACET_INLINE void FACET_K(gtr_sample_d)(V_ *hx_out, V_ *hy_out, V_ *hz_out, V_ u1, V_ u2, V_ alpha, V_ gamma)
 {
     V_ a = FACET_K(x_alpha)(alpha);
     V_ u = S_U_(u1);
@@ -361,7 +361,7 @@ FACET_INLINE void FACET_K(gtr_sample_d)(V_ h[3], V_ u1, V_ u2, V_ alpha, V_ gamm
     V_ s2 = S_SQRT0_(u), c2 = S_SQRT0_(SUB_(C_(1.0f), u));
     V_ g = SEL_LT_(gamma, C_(1.5f), C_(1.0f), C_(0.0f));
     S_GTR1_SC_(&s1, &c1, u, a);
-    S_FROM_SC_(h, SEL_LT_(C_(0.5f), g, s1, s2), SEL_LT_(C_(0.5f), g, c1, c2), u2, a, a);
+    S_FROM_SC_(hx_out, hy_out, hz_out, SEL_LT_(C_(0.5f), g, s1, s2), SEL_LT_(C_(0.5f), g, c1, c2), u2, a, a);
 }
 
 /* GTR1: D = (alpha^2 - 1) / (pi ln(alpha^2) d), d = 1 + (alpha^2 - 1) N.H^2

@@ -1,0 +1,139 @@
+#!/bin/sh
+# bench/report/arm_targets.sh OUT_DIR - the chooser's costs on the two Arm
+# vector ports, which this machine cannot time (called by report.sh):
+#   neon    aarch64 (build/aarch64, the 40-arm suite's cross build):
+#           llvm-mca (LLVM's cortex-a57 model) on the EXECUTED instruction
+#           trace of one batch call (qemu-aarch64 -singlestep -d
+#           exec,nochain), callees and the tail included, / samples: MODELLED
+#           cycles per sample (one pass over the 64-sample trace: 4 passes
+#           changed brdf_hammon's figures by under 1.5 %)
+#   helium  Cortex-M55 (build/m55-clang, the helium objects from clang 14,
+#           as the README's Helium table): instructions executed per sample
+#           under qemu-system-arm -M mps3-an547: MEASURED instruction
+#           counts, not cycles
+# for every kernel and every tier the port runs (f32, f32_fast, fx,
+# fx_fast), from one image per target (bench/report/armcount_main.c).
+# Writes OUT_DIR/arm_vec.tsv ("format port kernel measure value") and
+# OUT_DIR/arm_vec.status (per target "PORT ok HOW" or "PORT skipped WHY",
+# which the report prints).  A missing tool or a failed build skips that
+# target with the reason; it never fails the report.  The figures are
+# cached in build/armcount/ and reused while the library, this script and
+# the program are older than them.
+set -u
+out=$1
+MAKE=${MAKE:-make}
+dir=build/armcount
+mkdir -p "$dir" "$out"
+have() { command -v "$1" > /dev/null 2>&1; }
+missing() { m=; for t in "$@"; do have "$t" || m="$m${m:+, }$t"; done; echo "$m"; }
+: > "$out/arm_vec.status"
+echo "# format port kernel measure value" > "$out/arm_vec.tsv"
+status() { echo "$*" >> "$out/arm_vec.status"; echo "report: arm targets: $*"; }
+fresh() { # fresh CACHE FILES...: CACHE exists and is newer than every FILE
+    c=$1; shift
+    [ -s "$c" ] || return 1
+    for f in "$@"; do [ "$c" -nt "$f" ] || return 1; done
+}
+# counts ELF DIS TRACE LABELS [MCADIR]: per marked call "FORMAT KERNEL
+# INSNS"; with MCADIR, the executed instruction texts of call i go to
+# MCADIR/i.s (branch, call and literal targets as one label)
+counts() {
+    b=$($NM "$1" | awk '$3 == "armcount_begin" { print $1 }')
+    e=$($NM "$1" | awk '$3 == "armcount_end" { print $1 }')
+    awk -v b="$b" -v e="$e" -v mca="${5:-}" '
+        BEGIN { k = 0; nl = 0 }
+        function hex(s,   i, n, c) { n = 0; s = tolower(s); sub(/^0x/, "", s)
+            for (i = 1; i <= length(s); i++) { c = index("0123456789abcdef", substr(s, i, 1)); if (!c) break; n = n * 16 + c - 1 }
+            return n }
+        FILENAME == ARGV[1] { if ($0 !~ /^ +[0-9a-f]+:\t/) next
+            n = split($0, f, "\t"); a = f[1]; sub(/^ +/, "", a); sub(/:$/, "", a)
+            t = f[2]; for (i = 3; i <= n; i++) t = t "\t" f[i]
+            sub(/[ \t]*\/\/.*$/, "", t)
+            if (t ~ / <[^>]*>$/) { sub(/ <[^>]*>$/, "", t); sub(/[0-9a-f]+$/, ".Lt", t) }
+            m = t; sub(/[ \t].*$/, "", m)
+            if (m == "bl") sub(/^bl/, "b", t)     # llvm-mca charges a call 100 cycles;
+            if (m == "blr") sub(/^blr/, "br", t)  # the callee follows in the trace
+            text[hex(a)] = t; next }
+        FILENAME == ARGV[2] { label[nl++] = $1 " " $2; next }
+        { s = $0; sub(/^[^\[]*\[[^\/]*\//, "", s); sub(/\/.*$/, "", s); pc = hex(s)
+          if (pc == hex(b)) { on = 1; n = 0; next }
+          if (pc == hex(e) && on) { print label[k], n; on = 0; if (mca) close(mca "/" k ".s"); k++; next }
+          if (on) { n++; if (mca) print text[pc] > (mca "/" k ".s") } }' "$2" "$4" "$3"
+}
+samples=64
+
+# ---- NEON (aarch64): llvm-mca on the executed trace -------------------------
+cpu=cortex-a57
+if ! have aarch64-linux-gnu-gcc || ! have qemu-aarch64 || ! have llvm-mca; then
+    status "neon skipped: not installed: $(missing aarch64-linux-gnu-gcc qemu-aarch64 llvm-mca)"
+elif ! $MAKE -s BUILD=build/aarch64 CC=aarch64-linux-gnu-gcc CFLAGS="-O2 -g" build/aarch64/libfacet.a > "$dir/aarch64.build.log" 2>&1; then
+    status "neon skipped: the aarch64 cross build of the library failed ($dir/aarch64.build.log)"
+elif fresh "$dir/neon.tsv" build/aarch64/libfacet.a bench/report/armcount_main.c bench/report/arm_targets.sh; then
+    cat "$dir/neon.tsv" >> "$out/arm_vec.tsv"
+    status "neon ok llvm-mca -mcpu=$cpu on the executed trace (cached)"
+else
+    NM=aarch64-linux-gnu-nm
+    rm -rf "$dir/neon.d" && mkdir -p "$dir/neon.d"
+    if aarch64-linux-gnu-gcc -O2 -std=c99 -static -Iinclude -DARMCOUNT_PORT=neon -DN=$samples \
+            bench/report/armcount_main.c build/aarch64/libfacet.a -lm -o "$dir/neon.elf" 2> "$dir/neon.log" &&
+       qemu-aarch64 -singlestep -d exec,nochain -D "$dir/neon.trace" "$dir/neon.elf" > "$dir/neon.labels" 2>> "$dir/neon.log"; then
+        aarch64-linux-gnu-objdump -d --no-show-raw-insn "$dir/neon.elf" > "$dir/neon.dis"
+        grep -v '^armcount:' "$dir/neon.labels" > "$dir/neon.lab"
+        counts "$dir/neon.elf" "$dir/neon.dis" "$dir/neon.trace" "$dir/neon.lab" "$dir/neon.d" > "$dir/neon.calls"
+        rm -f "$dir/neon.trace"
+        i=0
+        : > "$dir/neon.tsv.tmp"
+        while read -r fmt k insns; do
+            c=$(llvm-mca -mtriple=aarch64 -mcpu=$cpu -iterations=1 "$dir/neon.d/$i.s" 2>> "$dir/neon.log" |
+                awk -v n=$samples '/^Iterations:/ {it = $2} /^Total Cycles:/ {c = $3} END { if (it) printf "%.2f", c / it / n }')
+            [ -n "$c" ] && echo "$fmt neon $k mca-$cpu $c" >> "$dir/neon.tsv.tmp"
+            echo "$fmt neon $k qemu-insn $(awk -v i="$insns" -v n=$samples 'BEGIN { printf "%.1f", i / n }')" >> "$dir/neon.tsv.tmp"
+            i=$((i + 1))
+        done < "$dir/neon.calls"
+        rm -rf "$dir/neon.d"
+        if [ -s "$dir/neon.tsv.tmp" ]; then
+            mv "$dir/neon.tsv.tmp" "$dir/neon.tsv"
+            cat "$dir/neon.tsv" >> "$out/arm_vec.tsv"
+            status "neon ok llvm-mca -mcpu=$cpu on the executed trace"
+        else
+            status "neon skipped: no call was traced ($dir/neon.log)"
+        fi
+    else
+        status "neon skipped: the counting image failed to build or run ($dir/neon.log)"
+    fi
+fi
+
+# ---- Helium (Cortex-M55): executed instructions under qemu-system-arm ----------
+lib=build/m55-clang/libfacet.a
+if ! have arm-none-eabi-gcc || ! have qemu-system-arm || ! have clang; then
+    status "helium skipped: not installed: $(missing arm-none-eabi-gcc qemu-system-arm clang)"
+elif ! $MAKE -s BUILD=build/m55-clang CC=arm-none-eabi-gcc AR=arm-none-eabi-ar PICFLAGS= HELIUM_CC=clang \
+        CFLAGS="-mcpu=cortex-m55 -mfloat-abi=hard -mthumb -O2 -g" $lib > "$dir/m55.build.log" 2>&1; then
+    status "helium skipped: the Cortex-M55 build of the library failed ($dir/m55.build.log)"
+elif fresh "$dir/helium.tsv" $lib bench/report/armcount_main.c bench/report/arm_targets.sh; then
+    cat "$dir/helium.tsv" >> "$out/arm_vec.tsv"
+    status "helium ok qemu-system-arm instruction counts (cached)"
+else
+    NM=arm-none-eabi-nm
+    if arm-none-eabi-gcc -mcpu=cortex-m55 -mfloat-abi=hard -mthumb -O2 -std=c99 -Iinclude -DARMCOUNT_PORT=helium \
+            -DN=$samples --specs=rdimon.specs -nostartfiles -T tests/cortexm/an547.ld tests/cortexm/startup_m55.c \
+            bench/report/armcount_main.c $lib -lm -o "$dir/m55.elf" 2> "$dir/m55.log" &&
+       timeout 300 qemu-system-arm -M mps3-an547 -nographic -semihosting-config enable=on,target=native \
+            -kernel "$dir/m55.elf" -singlestep -d exec,nochain -D "$dir/m55.trace" > "$dir/m55.labels" 2>> "$dir/m55.log"; then
+        arm-none-eabi-objdump -d "$dir/m55.elf" > "$dir/m55.dis"
+        grep -v '^armcount:' "$dir/m55.labels" | tr -d '\r' > "$dir/m55.lab"
+        counts "$dir/m55.elf" "$dir/m55.dis" "$dir/m55.trace" "$dir/m55.lab" |
+            awk -v n=$samples '{ printf "%s helium %s qemu-insn %.1f\n", $1, $2, $3 / n }' > "$dir/helium.tsv.tmp"
+        rm -f "$dir/m55.trace"
+        if [ -s "$dir/helium.tsv.tmp" ]; then
+            mv "$dir/helium.tsv.tmp" "$dir/helium.tsv"
+            cat "$dir/helium.tsv" >> "$out/arm_vec.tsv"
+            status "helium ok qemu-system-arm instruction counts"
+        else
+            status "helium skipped: no call was traced ($dir/m55.log)"
+        fi
+    else
+        status "helium skipped: the counting image failed to build or run ($dir/m55.log)"
+    fi
+fi
+exit 0
