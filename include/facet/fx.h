@@ -662,7 +662,7 @@ void facet_brdf_hammon_rgb_fx_fast_batch_interleaved(uint64_t *out, const int32_
  *                                                    5th V.H, 2.1e8 pairs: the tables' s, ct)
  *   fresnel_schlick_f90     0.500  0.500  -         (35, 6472, 24521)
  *   fresnel_schlick_sg      0.501  0.500  -         (46, 17697)
- *   diffuse_burley          0.506  0.505  2^-11.01  (170, 188, 24325, 13879, 3)
+ *   diffuse_burley          0.505  0.505  2^-11.01  (170, 188, 24325, 13879, 3)
  *   diffuse_oren_nayar      0.507  0.507  2^-11.00  (2230, 2227, 32768, 22716, 1)
  *   diffuse_hammon_hybrid   0.511  0.511  2^-10.99  (28017, 5031, -14686, 32745, 18)
  *   diffuse_hammon_cheap    0.506  0.506  2^-11.01  (184, 22231, -30411, 32717, 40)
