@@ -1332,20 +1332,12 @@ FXF_INLINE fxv_u32 fxf_fast_diffuse_burley(fxv_i32 nol, fxv_i32 nov, fxv_i32 loh
 }
 
 /* Hammon's rough and multi with another smooth term (hybrid, cheap): the
- * dot triple and the rough term of diffuse_hammon (fxf_dots_of, fxf_sqrt32,
- * fxw_diffuse26_shape: the same steps and bounds, here as single values):
+ * dot triple of diffuse_hammon (fxf_dots_of) and its rough term
+ * (fxw_diffuse26_shape's steps and bounds, here as one value):
  *   c = ~min(P, Q) = L.H^2 2^32 - 1 (the raised triple), L.H = ls 2^-(20 + h)
  *   a rough Q25 as there; the bracket (1 - a) smooth Q29 / 16 + a rough Q25
  *   [smooth <= 1 here: B <= 64.9 as there], then fxw_diffuse26_albedo and
  *   diffuse_hammon's final (d + 2.5) / 4. */
-FXF_INLINE fxv_u32 fxm_dots_c(fxv_u32 s, fxv_i32 lov)
-{
-    fxv_u32 t = fxv_clamp_off(lov, -FACET_FX_ONE + 1, FACET_FX_ONE); /* LOV + 32767 */
-    fxv_u32 p = fxv_mul32(fxv_sub32(fxv_k32(65536), s), fxv_add32(fxv_k32(65536), s));
-    fxv_u32 q = fxv_shl(fxv_sub32(fxv_k32(65535), t), 16);
-    return fxv_not(fxv_min(p, q));
-}
-
 FXF_INLINE fxv_u32 fxm_rough25(fxv_u32 a, fxv_u32 s, fxv_u32 c)
 {
     fxv_u32 k = fxv_and(fxv_clz(c), fxv_k32(30)), h = fxv_shr(k, 1), x = fxv_shlv(c, k);
@@ -1361,8 +1353,9 @@ FXF_INLINE fxv_u32 fxm_rough25(fxv_u32 a, fxv_u32 s, fxv_u32 c)
 FXF_INLINE fxv_u32 fxm_hammon_variant(fxv_u32 smooth29, fxv_u32 nl, fxv_u32 nv, fxv_i32 lov, fxv_u32 a,
                                       fxv_u32 alb)
 {
-    fxv_u32 s = fxv_add32(nl, nv);
-    fxv_u32 shape = fxv_add32(fxv_shr(fxv_add32(smooth29, fxv_k32(8)), 4), fxm_rough25(a, s, fxm_dots_c(s, lov)));
+    fxv_u32 s, u, w, c, shape;
+    fxf_dots_of(nl, nv, lov, &s, &u, &w, &c);
+    shape = fxv_add32(fxv_shr(fxv_add32(smooth29, fxv_k32(8)), 4), fxm_rough25(a, s, c));
     fxv_u32 d = fxw_diffuse26_albedo(shape, a, alb);
     return fxv_shr(fxv_add32(fxv_shl(d, 1), fxv_k32(5)), 3);
 }
