@@ -99,19 +99,15 @@ FACET_INLINE float32x4_t facet_neon_rsqrt_fast(float32x4_t x)
  * inputs.  Tested at every n mod 4 (tests/test_tails.c). */
 FACET_INLINE float32x4_t facet_neon_load_n(const float *p, size_t r)
 {
-    float t[4] = { 0.5f, 0.5f, 0.5f, 0.5f };
-    size_t j;
-    for (j = 0; j < r && j < 4; j++)
-        t[j] = p[j];
+    float t[4];
+    facet_tail_in_(t, 4, p, r);
     return vld1q_f32(t);
 }
 FACET_INLINE void facet_neon_store_n(float *p, float32x4_t v, size_t r)
 {
     float t[4];
-    size_t j;
     vst1q_f32(t, v);
-    for (j = 0; j < r && j < 4; j++)
-        p[j] = t[j];
+    facet_tail_out_(p, t, 4, r);
 }
 
 /* Exponent-bit ops (exp2/log2 of f32_body.h and the samplers):

@@ -81,19 +81,15 @@ FACET_INLINE __m128 facet_sse2_rsqrt_fast(__m128 x)
  * inputs.  Tested at every n mod 4 (tests/test_tails.c). */
 FACET_INLINE __m128 facet_sse2_load_n(const float *p, size_t r)
 {
-    float t[4] = { 0.5f, 0.5f, 0.5f, 0.5f };
-    size_t j;
-    for (j = 0; j < r && j < 4; j++)
-        t[j] = p[j];
+    float t[4];
+    facet_tail_in_(t, 4, p, r);
     return _mm_loadu_ps(t);
 }
 FACET_INLINE void facet_sse2_store_n(float *p, __m128 v, size_t r)
 {
     float t[4];
-    size_t j;
     _mm_storeu_ps(t, v);
-    for (j = 0; j < r && j < 4; j++)
-        p[j] = t[j];
+    facet_tail_out_(p, t, 4, r);
 }
 
 /* Exponent-bit ops (exp2/log2 of f32_body.h and the samplers):
