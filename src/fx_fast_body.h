@@ -982,14 +982,11 @@ FXF_INLINE fxv_u32 fxf_p5(fxv_u32 x)
  *   a rough = x2 2^-(24 + k), x2 = hi(2 hi(mh, A floor(2^20/10)), q), to Q25.
  * Each term's relative error <= 2^-14.8 (the P sums), its truncations
  * <= 2^-25 absolute: below the output's LSB (2^-24) even at albedo = 1. */
-/* split in two for the RGB form (the shape before albedo enters, then the
- * albedo part); integer sums, so the same bits as one expression */
-FXF_INLINE fxv_u32 fxw_diffuse26_shape(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 s,
-                                       fxv_u32 c, fxv_u32 x, fxv_u32 k, fxv_u32 lh_s, fxv_u32 lh_h)
+/* the rough term, a rough Q25, from c = L.H^2 2^32 - 1 normalised (x = c
+ * << k, k even), L.H = lh_s 2^-(20 + lh_h) and s = NL + NV */
+FXF_INLINE fxv_u32 fxw_diffuse26_rough(fxv_u32 a, fxv_u32 s, fxv_u32 c, fxv_u32 x, fxv_u32 k, fxv_u32 lh_s,
+                                       fxv_u32 lh_h)
 {
-    fxv_u32 pp = fxw_mulhi(fxf_p5(nl), fxf_p5(nv));                                   /* Q30 */
-    fxv_u32 k1 = fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), a), fxv_k32(FXW_C105));       /* Q30 <= 2^30.07 */
-    fxv_u32 smooth = fxw_mulhi(pp, fxv_shl(k1, 1));                                   /* Q29 */
     fxv_u32 t45 = fxv_sub32(fxv_k32(9u << 28), fxv_shr(c, 2));                       /* Q29 */
     fxv_u32 mh = fxw_mulhi(x, t45);
     fxv_u32 ks = fxv_clz(s), rs = fxf_rcp20(fxv_shlv(s, ks));
@@ -1000,8 +997,18 @@ FXF_INLINE fxv_u32 fxw_diffuse26_shape(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u3
      * x2 = hi(2 x1, q); Q25: 2 x2 >> k [a rough 2^(25 + k) < 2^31.9: rough
      * <= 0.45 t (1 + 128 sqrt(t/2)) with t < 2^(1 - k)] */
     fxv_u32 x1 = fxw_mulhi(mh, fxv_mul32(a, fxv_k32(FXW_TENTH)));
-    fxv_u32 rough = fxv_shrv(fxv_shl(fxw_mulhi(fxv_shl(x1, 1), q), 1), k);
-    return fxv_add32(fxv_shr(fxv_add32(smooth, fxv_k32(8)), 4), rough);
+    return fxv_shrv(fxv_shl(fxw_mulhi(fxv_shl(x1, 1), q), 1), k);
+}
+
+/* split in two for the RGB form (the shape before albedo enters, then the
+ * albedo part); integer sums, so the same bits as one expression */
+FXF_INLINE fxv_u32 fxw_diffuse26_shape(fxv_u32 nl, fxv_u32 nv, fxv_u32 a, fxv_u32 s,
+                                       fxv_u32 c, fxv_u32 x, fxv_u32 k, fxv_u32 lh_s, fxv_u32 lh_h)
+{
+    fxv_u32 pp = fxw_mulhi(fxf_p5(nl), fxf_p5(nv));                                   /* Q30 */
+    fxv_u32 k1 = fxv_mul32(fxv_sub32(fxv_k32(FXF_ONE), a), fxv_k32(FXW_C105));       /* Q30 <= 2^30.07 */
+    fxv_u32 smooth = fxw_mulhi(pp, fxv_shl(k1, 1));                                   /* Q29 */
+    return fxv_add32(fxv_shr(fxv_add32(smooth, fxv_k32(8)), 4), fxw_diffuse26_rough(a, s, c, x, k, lh_s, lh_h));
 }
 
 FXF_INLINE fxv_u32 fxw_diffuse26_albedo(fxv_u32 shape, fxv_u32 a, fxv_u32 alb)
@@ -1333,21 +1340,15 @@ FXF_INLINE fxv_u32 fxf_fast_diffuse_burley(fxv_i32 nol, fxv_i32 nov, fxv_i32 loh
 
 /* Hammon's rough and multi with another smooth term (hybrid, cheap): the
  * dot triple of diffuse_hammon (fxf_dots_of) and its rough term
- * (fxw_diffuse26_shape's steps and bounds, here as one value):
+ * (fxw_diffuse26_rough, the same code and bounds):
  *   c = ~min(P, Q) = L.H^2 2^32 - 1 (the raised triple), L.H = ls 2^-(20 + h)
  *   a rough Q25 as there; the bracket (1 - a) smooth Q29 / 16 + a rough Q25
  *   [smooth <= 1 here: B <= 64.9 as there], then fxw_diffuse26_albedo and
  *   diffuse_hammon's final (d + 2.5) / 4. */
 FXF_INLINE fxv_u32 fxm_rough25(fxv_u32 a, fxv_u32 s, fxv_u32 c)
 {
-    fxv_u32 k = fxv_and(fxv_clz(c), fxv_k32(30)), h = fxv_shr(k, 1), x = fxv_shlv(c, k);
-    fxv_u32 ls = fxf_sqrt20(x);
-    fxv_u32 mh = fxw_mulhi(x, fxv_sub32(fxv_k32(9u << 28), fxv_shr(c, 2)));
-    fxv_u32 ks = fxv_clz(s), rs = fxf_rcp20(fxv_shlv(s, ks));
-    fxv_u32 q = fxv_add32(fxv_k32(1u << 24), fxv_shrv(fxw_mulhi(fxv_shl(ls, 12), fxv_shl(rs, 12)),
-                                                      fxv_sub32(fxv_add32(h, fxv_k32(24)), ks)));
-    fxv_u32 x1 = fxw_mulhi(mh, fxv_mul32(a, fxv_k32(FXW_TENTH)));
-    return fxv_shrv(fxv_shl(fxw_mulhi(fxv_shl(x1, 1), q), 1), k);
+    fxv_u32 k = fxv_and(fxv_clz(c), fxv_k32(30)), h, ls = fxf_sqrt32(c, &h);
+    return fxw_diffuse26_rough(a, s, c, fxv_shlv(c, k), k, ls, h);
 }
 
 FXF_INLINE fxv_u32 fxm_hammon_variant(fxv_u32 smooth29, fxv_u32 nl, fxv_u32 nv, fxv_i32 lov, fxv_u32 a,
