@@ -3,7 +3,7 @@
 #   make check      every test (gcc, clang, sanitizers, cross ports); closing
 #                   line "N passed, N failed, N skipped"
 #   make report     accuracy sweep (+ bench, build/facet-bench) -> build/report/
-#   make fuzz       libFuzzer targets, FUZZ_SECONDS (300) each (tests/fuzz.mk;
+#   make fuzz       libFuzzer targets, FUZZ_SECONDS (300) each (tests/fuzz/fuzz.mk;
 #                   the one recursive make: an instrumented libfacet)
 #   make install PREFIX=/usr/local   (headers, libraries, pkg-config, CMake
 #                   package config, bin/facet); make uninstall (same PREFIX)
@@ -29,30 +29,39 @@ PICFLAGS  = -fPIC
 
 TARGET  := $(shell $(CC) -dumpmachine)
 
-LIB_SRC  := $(wildcard src/*.c)
+# the library: src/core (the lists, the dispatcher, the CPU module), one
+# folder per format (src/f32, src/fx) and the reference (src/oracle); the
+# firmware's batch loops (src/fx/fx_firmware_batch.c) replace the dispatched
+# batches there, never here
+LIB_SRC  := $(filter-out src/fx/fx_firmware_batch.c,$(wildcard src/core/*.c src/f32/*.c src/fx/*.c src/oracle/*.c))
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 CLI_SRC  := $(wildcard src/cli/*.c)
 CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
-TEST_SRC := $(wildcard tests/test_*.c)
-TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
-HEADERS  := $(wildcard include/*.h include/facet/*.h include/facet/detail/*.h) src/kernels.def src/sample_kernels.def
+# the tests, one folder per area (tests/README.md); every binary lands in
+# $(BUILD)/tests/ under its own name
+TEST_SRC := $(wildcard tests/*/test_*.c)
+TEST_BIN := $(addprefix $(BUILD)/tests/,$(notdir $(TEST_SRC:.c=)))
+TEST_DIRS := $(sort $(dir $(wildcard tests/*/*.c)))
+vpath %.c $(TEST_DIRS)
+HEADERS  := $(wildcard include/*.h include/facet/*.h include/facet/detail/*.h) src/core/kernels.def src/core/sample_kernels.def
+SRC_HDRS := $(wildcard src/*/*.h)
 # The fixed-point kernels on their own (firmware): the kernels of both tiers,
 # their batch API as plain loops (no port table, no dispatcher: with
 # --gc-sections a firmware keeps only the kernels it calls), the RGB forms,
 # the kernel table.  Compile with -Iinclude.
-FX_SOURCES := src/fx_core.c src/fx_kernels.c src/fx_fast.c src/fx_table.c src/fx_rgb.c \
-              src/fx_only/fx_batch_scalar.c
+FX_SOURCES := src/fx/fx_prims.c src/fx/fx_kernels.c src/fx/fx_fast.c src/fx/fx_table.c src/fx/fx_rgb.c \
+              src/fx/fx_firmware_batch.c
 
-# Parts add their own rules here (ports/<isa>/port.mk, tests/*.mk, bench/*.mk);
+# Parts add their own rules here (ports/<isa>/port.mk, tests/*/*.mk, bench/*.mk);
 # they may append to LIB_OBJ, CLI_OBJ, TEST_BIN and EXTRA_TESTS.
 EXTRA_TESTS :=
--include $(sort $(wildcard ports/*/port.mk tests/*.mk bench/*.mk))
+-include $(sort $(wildcard ports/*/port.mk tests/*/*.mk bench/*.mk))
 
 .PHONY: all lib tests check report install uninstall clean fx-sources
 all: lib $(BUILD)/facet
 lib: $(BUILD)/libfacet.a $(BUILD)/libfacet.so
 
-$(BUILD)/src/%.o: src/%.c $(HEADERS) $(wildcard src/*.h src/cli/*.h)
+$(BUILD)/src/%.o: src/%.c $(HEADERS) $(SRC_HDRS)
 	@mkdir -p $(dir $@)
 	$(CC) $(BASEFLAGS) $(PICFLAGS) -c $< -o $@
 
@@ -66,7 +75,7 @@ $(BUILD)/libfacet.so: $(LIB_OBJ)
 $(BUILD)/facet: $(CLI_OBJ) $(BUILD)/libfacet.a
 	$(CC) $(CFLAGS) -o $@ $^ -lm
 
-$(BUILD)/tests/%: tests/%.c tests/harness.h tests/sample.h $(BUILD)/libfacet.a
+$(BUILD)/tests/%: %.c tests/lib/harness.h tests/lib/sample.h $(BUILD)/libfacet.a
 	@mkdir -p $(dir $@)
 	$(CC) $(BASEFLAGS) -D_DEFAULT_SOURCE -o $@ $< $(BUILD)/libfacet.a -lm $(if $(findstring test_threads,$@),-pthread)
 
@@ -79,7 +88,7 @@ fx-sources:
 	@echo $(FX_SOURCES)
 
 report: all
-	@tests/report.sh $(BUILD)
+	@tests/report/report.sh $(BUILD)
 
 # What `make install` puts under $(DESTDIR)$(PREFIX), one list that
 # `make uninstall` removes again (and then the directories left empty).
@@ -100,11 +109,11 @@ install: lib $(BUILD)/facet
 	install -m 644 $(BUILD)/libfacet.a $(IROOT)/lib/
 	install -m 755 $(BUILD)/libfacet.so $(IROOT)/lib/libfacet.so.0
 	ln -sf libfacet.so.0 $(IROOT)/lib/libfacet.so
-	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' src/facet.pc.in > $(IROOT)/lib/pkgconfig/facet.pc
-	install -m 644 src/facet-config.cmake $(IROOT)/lib/cmake/facet/facet-config.cmake
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' src/install/facet.pc.in > $(IROOT)/lib/pkgconfig/facet.pc
+	install -m 644 src/install/facet-config.cmake $(IROOT)/lib/cmake/facet/facet-config.cmake
 	sed -e 's|@VERSION@|$(VERSION)|' \
 	    -e "s|@SIZEOF_VOID_P@|$$(echo __SIZEOF_POINTER__ | $(CC) -E -P - | tr -d ' \n')|" \
-	    src/facet-config-version.cmake.in > $(IROOT)/lib/cmake/facet/facet-config-version.cmake
+	    src/install/facet-config-version.cmake.in > $(IROOT)/lib/cmake/facet/facet-config-version.cmake
 
 uninstall:
 	rm -f $(addprefix $(IROOT)/,$(INSTALL_FILES))

@@ -14,15 +14,15 @@ BENCH_TARGET := $(shell $(CC) -dumpmachine)
 BENCH_X86    := $(filter x86_64% i686% i586% i386%,$(BENCH_TARGET))
 BENCH_NATIVE := $(shell $(CC) -march=native -E -x c /dev/null >/dev/null 2>&1 && echo -march=native)
 # -I. : what the bench takes from outside bench/, named by its folder in the
-# #include line: tests/sample.h (the bench judges error on the same samplers
-# as the tests), src/kernels.def and src/kernel_list.h (every loop is
-# generated from the library's kernel list), src/port.h (the port tables,
-# read by report/symbols.c), src/sample_port.h (a sampler's call by its
+# #include line: tests/lib/sample.h (the bench judges error on the same samplers
+# as the tests), src/core/kernels.def and src/core/kernel_list.h (every loop is
+# generated from the library's kernel list), src/core/port.h (the port tables,
+# read by report/symbols.c), src/core/sample_port.h (a sampler's call by its
 # kind, for the samplers' loops).  -Ibench: a part's header from another part
 # is included as "harness/bench.h", "raster/raster.h", ...
 BENCH_FLAGS   = $(BASEFLAGS) -D_GNU_SOURCE -I. -Ibench
-BENCH_DEPS    = $(HEADERS) $(wildcard bench/*.h bench/*/*.h) tests/sample.h tests/sample_common.h src/kernel_list.h \
-                src/port.h src/sample_port.h
+BENCH_DEPS    = $(HEADERS) $(wildcard bench/*.h bench/*/*.h) tests/lib/sample.h tests/lib/sample_common.h src/core/kernel_list.h \
+                src/core/port.h src/core/sample_port.h
 
 ifneq ($(BENCH_X86),)
 BENCH_SHADER_PEERS := peers_shader_avx2 peers_shader_avx2_fm peers_shader_avx512 peers_shader_avx512_fm
@@ -69,8 +69,8 @@ $(BENCH_SIMD_OBJ): $(BUILD)/bench/%.o: bench/%.c $(BENCH_DEPS)
 $(BUILD)/bench/harness/peers_textbook.o: bench/harness/peers_textbook.c bench/harness/peers.h $(HEADERS)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) -O2 -ffp-contract=off -c $< -o $@
-# the samplers' textbook peer, built the same way (its formulas: tests/sample_peer.h)
-$(BUILD)/bench/harness/peers_sample.o: bench/harness/peers_sample.c bench/harness/peers.h tests/sample_peer.h $(HEADERS)
+# the samplers' textbook peer, built the same way (its formulas: tests/lib/sample_peer.h)
+$(BUILD)/bench/harness/peers_sample.o: bench/harness/peers_sample.c bench/harness/peers.h tests/lib/sample_peer.h $(HEADERS)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude -I. $(CFLAGS) -O2 -ffp-contract=off -c $< -o $@
 
@@ -91,6 +91,6 @@ $(BENCH_SHADER_PEERS:%=$(BUILD)/bench/harness/%.o): $(BENCH_SHADER_SRC)
 
 # the PNG encoder and the rasterizer (every shading path against the oracle)
 $(BUILD)/tests/test_bench: bench/test_bench.c $(BUILD)/bench/report/png.o $(BENCH_RASTER_OBJ) \
-        $(BUILD)/bench/harness/cycles.o $(BUILD)/libfacet.a $(BENCH_DEPS) tests/harness.h
+        $(BUILD)/bench/harness/cycles.o $(BUILD)/libfacet.a $(BENCH_DEPS) tests/lib/harness.h
 	@mkdir -p $(dir $@)
 	$(CC) $(BENCH_FLAGS) -o $@ $< $(filter %.o %.a,$^) -lm

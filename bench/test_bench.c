@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "tests/harness.h"
+#include "tests/lib/harness.h"
 #include "report/png.h"
 #include "raster/raster.h"
 

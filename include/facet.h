@@ -32,12 +32,12 @@
  *     this caps N.H at 1 and is continuous with the geometric definition.
  *   - Error: relative to the oracle evaluated at the same float inputs
  *     (values below the absolute floor stated above compared absolutely),
- *     maximum over the test sweep (tests/test_f32_accuracy.c), in units of
+ *     maximum over the test sweep (tests/f32/test_f32_accuracy.c), in units of
  *     2^-k; FACET_ERR_* below are the bounds the tests enforce.  Where a
  *     bound has an absolute floor it is said so.
  *   - Cost: operations of the kernel body as a port with FMA executes them
  *     (clamp = 2, select = 2, keep_ord = 2, fma = 1), counted by
- *     tests/test_op_counts.c;
+ *     tests/f32/test_op_counts.c;
  *     rsqrt and rcp are listed apart: each is an estimate plus the port's
  *     refinement steps (see the port headers).
  *
@@ -118,7 +118,7 @@ float facet_fresnel_schlick_f32(float f0, float cos_theta);
  * infinite, a perfect mirror) gives 1 for every V.H.  Near f0 = 1 the
  * function is steep at grazing: F dips to about 1/2 at the Brewster angle,
  * cos = 1/sqrt(eta^2 + 1) ~ (1 - f0) / 4, and returns to 1 at V.H = 0.
- * Model error of fresnel_schlick against it (relative, tests/test_oracle.c,
+ * Model error of fresnel_schlick against it (relative, tests/oracle/test_oracle.c,
  * 401 f0 log-spaced x 2001 V.H): f0 in [0.02, 0.1] (dielectrics, eta 1.33
  * to 1.92) max 0.236 at (f0 0.031, V.H 0.587), where Schlick is too low,
  * mean 0.094; f0 in [0.02, 0.999] max 0.999 at (0.98, V.H 0.005), the
@@ -171,7 +171,7 @@ float facet_ggx_d_f32(float noh, float alpha);
 /* ---- D terms beyond GGX ------------------------------------------------------
  * Every D here is a normal distribution in the same sense as ggx_d: the
  * integral of D(m) (N.M) over the hemisphere is 1 (checked by quadrature in
- * tests/test_oracle.c for alpha 2^-10 .. 1).  alpha is the same width as
+ * tests/oracle/test_oracle.c for alpha 2^-10 .. 1).  alpha is the same width as
  * GGX's (perceptual roughness^2); no model error: each is the exact term.
  * No libm: the powers and exponentials are 2^y and log2 from the exponent
  * bits and polynomials (include/facet/detail/f32_body.h, "2^y and log2":
@@ -295,7 +295,7 @@ float facet_smith_g1_hammon_f32(float nov, float alpha);
  *         P2 = 2 alpha^4 + alpha^2 + 1
  * (Dimov's mu-forms multiplied through by sin theta_v; his G^1 divided by
  * ln alpha^2, so alpha = 1 is no 0/0; each checked against the exact G1 by
- * quadrature to 2e-11, tests/test_oracle.c), and between the orders the
+ * quadrature to 2e-11, tests/oracle/test_oracle.c), and between the orders the
  * monotone cubic Hermite interpolant in gamma (Fritsch-Carlson, MATLAB's
  * pchip) through the five values.  Dimov interpolates "by a spline"
  * without naming it; the natural cubic spline overshoots to G1 = -0.099
@@ -437,7 +437,7 @@ float facet_smith_vis_joint_approx_f32(float nol, float nov, float alpha);
  * model error of Vis is bounded by that of r, since Vis~/Vis - 1 lies
  * between the values of r/r~ - 1 at N.L and at N.V).
  * Model error vs exact smith_vis: <= FACET_MODEL_ERR_SMITH_VIS_FIT over
- * N.L, N.V in [2^-8, 1], alpha in [2^-10, 1] (tests/test_vis_fit.c).
+ * N.L, N.V in [2^-8, 1], alpha in [2^-10, 1] (tests/f32/test_vis_fit.c).
  * Domain: as smith_vis; symmetric.
  * Error: <= FACET_ERR_SMITH_VIS_FIT_F32 (2^-21), vs the oracle of this formula.
  * Cost: 28 ops (0 rsqrt, 1 rcp). */
@@ -507,7 +507,7 @@ float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, flo
  *   result = albedo / pi (1 + (f_d90 - 1)(1 - N.L)^5)(1 + (f_d90 - 1)(1 - N.V)^5)
  * L.H is an input (loh_from_dots gives it from L.V).  Each factor is in
  * [1/2, 5/2]: no cancellation.  Not energy conserving: directional albedo
- * (albedo = 1; tests/test_oracle.c, N.V in {1, 0.5, 0.1, 0.01}, alpha in
+ * (albedo = 1; tests/oracle/test_oracle.c, N.V in {1, 0.5, 0.1, 0.01}, alpha in
  * {2^-10, 1/4, 1/2, 1}) from 0.542 (N.V = 0.01, alpha = 2^-10) to 1.538
  * (N.V = 0.01, alpha = 1); at N.V = 1 exactly 1 - 1/42 + 5 sqrt(alpha)/84.
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.H, alpha, albedo.
@@ -598,7 +598,7 @@ float facet_lambert_f32(float albedo);
  * the port's vector width).  Runs on
  * the best port for this CPU, chosen once and thread-safely on first use:
  * avx512 > avx2 > sse2 on x86, neon on ARM, else scalar.  Every port meets the
- * bounds above (tests/test_f32_accuracy.c runs each kernel on each port);
+ * bounds above (tests/f32/test_f32_accuracy.c runs each kernel on each port);
  * results may differ between ports by rounding, within those bounds. */
 void facet_noh_from_dots_f32_batch(float *out, const float *nol, const float *nov,
                                    const float *lov, size_t n);
@@ -939,7 +939,7 @@ const facet_kernel *facet_kernel_find(const char *name); /* NULL if unknown */
  *     [FACET_ALPHA_MIN, 1] (NaN to FACET_ALPHA_MIN).
  *   - Every sampled h is a unit vector (||h| - 1| <= 2^-22 in both tiers:
  *     the final normalization uses the precise rsqrt in f32_fast too) with
- *     h.z > 0, for every input including NaN and Inf (tests/test_sample_ports.c).
+ *     h.z > 0, for every input including NaN and Inf (tests/sample/test_sample_ports.c).
  *   - Error of a sampled vector: the Euclidean distance from the oracle's
  *     vector at the same float inputs (facet/oracle.h; about the angle in
  *     radians) divided by max(1, K / 16), where K is the oracle map's own
@@ -951,16 +951,16 @@ const facet_kernel *facet_kernel_find(const char *name); /* NULL if unknown */
  *     near the cap rim).  pdfs: relative error vs the oracle, as the
  *     kernels; ggx_pdf_vndf_aniso forms v.h itself, so its error is
  *     relative to that dot product's conditioning sum |v_i h_i| / |v.h|.
- *     Bounds: maximum over tests/test_sample_accuracy.c's sweep (200 k
+ *     Bounds: maximum over tests/sample/test_sample_accuracy.c's sweep (200 k
  *     samples per sampler aimed at the ends of u, grazing and normal views,
  *     alpha log-uniform) on every port, in the fast tier also with
  *     estimates at the architectural bound; FACET_ERR_<SAMPLER>_F32[_FAST].
  *   - The sampled distributions are checked by chi-square goodness of fit
- *     against the pdfs (tests/test_sample_chi2.c: 10^6 samples, 2-D
+ *     against the pdfs (tests/sample/test_sample_chi2.c: 10^6 samples, 2-D
  *     histograms in (theta, phi), alpha 0.05 .. 1, views to 89.9 degrees,
  *     p > 0.01 each; moments for alpha down to 0.002), and the VNDF
- *     estimator by a white furnace (tests/test_sample_furnace.c).
- *   - Cost: operations as the kernels' (tests/test_sample_prims.c counts
+ *     estimator by a white furnace (tests/sample/test_sample_furnace.c).
+ *   - Cost: operations as the kernels' (tests/sample/test_sample_prims.c counts
  *     them; the exponent-bit ops exp2i, getexp, getmant count 1).
  *
  * ggx_sample_d(h, u1, u2, alpha): GGX D importance sampling,

@@ -64,8 +64,8 @@ for fmt in fx fxfast f32soft f32fpu; do
         rm -rf "$b.d"
         mkdir -p "$b.d"
         case $fmt in
-        fx) src="-DBENCH_FX src/fx_core.c src/fx_kernels.c"; pat='^facet_.*_fx$' ;;
-        fxfast) src="-DBENCH_FX -DBENCH_FX_FAST src/fx_core.c src/fx_kernels.c src/fx_fast.c"; pat='^facet_.*_fx_fast$' ;;
+        fx) src="-DBENCH_FX src/fx/fx_prims.c src/fx/fx_kernels.c"; pat='^facet_.*_fx$' ;;
+        fxfast) src="-DBENCH_FX -DBENCH_FX_FAST src/fx/fx_prims.c src/fx/fx_kernels.c src/fx/fx_fast.c"; pat='^facet_.*_fx_fast$' ;;
         f32soft) src="-mfloat-abi=soft"; pat='^bench_f32_' ;;
         *) case $cpu in # the core's single-precision FPU, hard-float ABI
            cortex-m4) src="-mfloat-abi=hard -mfpu=fpv4-sp-d16" ;;

@@ -19,7 +19,7 @@
 #include "facet/scalar.h"
 #endif
 
-#include "../../src/kernel_list.h"
+#include "../../src/core/kernel_list.h"
 
 /* nol, nov, lov, alpha, f0, albedo, noh, loh: consistent geometry
  * (L.V from N.L, N.V and an azimuth; N.H and L.H from the identities) */
@@ -28,7 +28,7 @@
 #define PT1 0.350000f, 0.920000f, 0.636589f, 0.050000f, 0.950000f, 0.100000f, 0.701971f, 0.904596f
 #define PT2 0.930000f, 0.550000f, 0.400266f, 0.600000f, 0.040000f, 0.500000f, 0.884385f, 0.836740f
 #define PT3 0.120000f, 0.430000f, 0.921875f, 0.012000f, 0.560000f, 0.300000f, 0.280534f, 0.980274f
-/* where each kernel input (src/kernels.def's names) is in a point; a
+/* where each kernel input (src/core/kernels.def's names) is in a point; a
  * one-cosine kernel's cos is L.H (Fresnel) */
 #define AT_nol 0
 #define AT_nov 1
@@ -62,7 +62,7 @@ volatile uint64_t bench_sink;
 #define QP_(p) QP(p)
 static const int32_t in[N_PTS][8] = { QP_(PT0), QP_(PT1), QP_(PT2), QP_(PT3) };
 typedef int32_t T;
-/* Names generated here from src/kernels.def: one call per fixed-point kernel */
+/* Names generated here from src/core/kernels.def: one call per fixed-point kernel */
 #ifdef BENCH_FX_FAST
 #define BENCH_TIER_(name) facet_##name##_fx_fast
 #define BENCH_IF_TIER_(fx_type, fx_code, ...) FACET_IF_FX(fx_type, __VA_ARGS__)
@@ -78,7 +78,7 @@ typedef int32_t T;
 #define FP_(p) FP(p)
 static const float in[N_PTS][8] = { FP_(PT0), FP_(PT1), FP_(PT2), FP_(PT3) };
 typedef float T;
-/* Names generated here from src/kernels.def: a noinline wrapper per kernel,
+/* Names generated here from src/core/kernels.def: a noinline wrapper per kernel,
  * so the trace can cut out its call, and one call per kernel */
 #define PARAM_(q) float x##q
 #define ARG_(q) x##q
@@ -88,7 +88,7 @@ typedef float T;
     {                                                                                        \
         return facet_##name##_f32_scalar(FACET_EACH_INPUT(n, ARG_));                         \
     }
-#include "../../src/kernels.def"
+#include "../../src/core/kernels.def"
 #undef FACET_KERNEL
 static volatile float fsink;
 #define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...) \
@@ -100,7 +100,7 @@ int main(void)
     int i;
     for (i = 0; i < N_PTS; i++) {
         const T *p = in[i];
-#include "../../src/kernels.def"
+#include "../../src/core/kernels.def"
     }
     return 0;
 }

@@ -31,7 +31,7 @@ for cpu in cortex-m0 cortex-m4; do
     rm -rf "$b.d"
     mkdir -p "$b.d"
     # shellcheck disable=SC2086
-    arm-none-eabi-gcc -mcpu=$cpu $cflags $link -DBENCH_FX src/fx_core.c src/fx_kernels.c \
+    arm-none-eabi-gcc -mcpu=$cpu $cflags $link -DBENCH_FX src/fx/fx_prims.c src/fx/fx_kernels.c \
         bench/cortexm/cortexm_main.c -o "$b.elf" || exit 1
     arm-none-eabi-objdump -d "$b.elf" > "$b.dis"
     arm-none-eabi-nm "$b.elf" | awk '$2 ~ /^[Tt]$/ && $3 ~ /^facet_.*_fx$/ { print $1, $3 }' |

@@ -21,7 +21,7 @@
  * program reports the error with those rounded values too.
  *
  * Build and run:  cc -O2 -o fit_vis bench/fit/fit_vis.c -lm && ./fit_vis
- * (a minute or two).  tests/test_vis_fit.c checks the 5% bound on the
+ * (a minute or two).  tests/f32/test_vis_fit.c checks the 5% bound on the
  * 3-D grid with the oracle (facet_oracle_smith_vis_fit vs smith_vis). */
 #include <stdio.h>
 #include <stdlib.h>

@@ -14,7 +14,7 @@
 #include <math.h>
 #include "facet.h"
 #include "facet/fx.h"
-#include "tests/sample.h"
+#include "tests/lib/sample.h"
 #include "cycles.h"
 #include "facet_bench.h"
 #include "raster/raster.h"

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "facet/oracle.h"
-#include "tests/sample_common.h" /* the samplers the tests judge error on (and sample.h) */
+#include "tests/lib/sample_common.h" /* the samplers the tests judge error on (and sample.h) */
 #include "bench.h"
 #include "loops.h"
 #include "peers.h"
@@ -481,7 +481,7 @@ static void run_fx(const bench_fx *fx, const kdata *d, const bench_opts *o, benc
     free(x.out);
 }
 
-/* ---- the importance samplers (facet.h, src/sample_kernels.def) ----------------- */
+/* ---- the importance samplers (facet.h, src/core/sample_kernels.def) ----------------- */
 
 typedef struct sdata {
     const facet_sampler *k;
@@ -490,7 +490,7 @@ typedef struct sdata {
     double *want[FACET_SAMPLER_MAX_OUTPUTS], *cond;
 } sdata;
 
-/* in-domain inputs from tests/sample_common.h (the accuracy test's), with
+/* in-domain inputs from tests/lib/sample_common.h (the accuracy test's), with
  * gamma = 1 (GTR1, the closed form the peer computes too), the oracle's
  * outputs and the conditioning of the contracts' error measure */
 static void sdata_make(sdata *d, const facet_sampler *k, size_t n, unsigned long long seed)
@@ -541,7 +541,7 @@ static void sdata_free(sdata *d)
     free(d->cond);
 }
 
-/* the contracts' measure (facet.h, tests/test_sample_accuracy.c): vectors
+/* the contracts' measure (facet.h, tests/sample/test_sample_accuracy.c): vectors
  * by Euclidean distance / max(1, K / 16), pdfs by relative error / the
  * conditioning of v.h; max_rel and mean_rel hold it */
 static void serr_of(bench_err *e, const sdata *d)
@@ -660,8 +660,8 @@ static void run_samplers(const bench_opts *o, bench_sink sink, void *ctx, int *c
             peer_sample_fn fn = peer_sample_textbook(k->name, &same);
             if (fn) {
                 srow(&row, &d, "f32", "textbook", "peer", 1);
-                row.note = same ? "tests/sample_peer.h: the direct formulas with libm, -O2"
-                                : "tests/sample_peer.h: Heitz 2018 as transcribed, libm, -O2 (another map of "
+                row.note = same ? "tests/lib/sample_peer.h: the direct formulas with libm, -O2"
+                                : "tests/lib/sample_peer.h: Heitz 2018 as transcribed, libm, -O2 (another map of "
                                   "(u1, u2) to h with the same law: error not comparable)";
                 fn(d.out, (const float *const *)d.in, d.n);
                 serr_of(&row.err, &d);

@@ -34,13 +34,13 @@ typedef struct bench_err {
     long n;
     /* fixed-point rows: error in units of the output's last place against
      * round-half-up(oracle * 2^frac) at the same (Q15) inputs, as
-     * tests/test_fx_accuracy.c measures it; max_rel/mean_rel are then
+     * tests/fx/test_fx_accuracy.c measures it; max_rel/mean_rel are then
      * relative to the oracle at the Q15 inputs (floor: one LSB) */
     int has_lsb;
     double max_lsb, mean_lsb;
     /* brdf_hammon (64-bit output): where the oracle is >= 16 its LSB (2^-24)
      * is below what the double oracle resolves, so those samples are held to
-     * 2^-26 relative instead (as in tests/test_fx_accuracy.c): their max
+     * 2^-26 relative instead (as in tests/fx/test_fx_accuracy.c): their max
      * relative error (-1: none) and the count of samples in max/mean_lsb */
     double big_rel;
     long n_lsb;

@@ -22,7 +22,7 @@ static void usage(FILE *f)
             "shader_avx512 on x86), and measures each one's error against the double oracle.\n"
             "Then the importance samplers and pdfs ('facet list' names them; KERNEL may be\n"
             "one): the batch API of both f32 tiers on every port, and the textbook peer\n"
-            "(tests/sample_peer.h); error in the samplers' measure (facet.h).\n"
+            "(tests/lib/sample_peer.h); error in the samplers' measure (facet.h).\n"
             "Throughput: cycles per sample over an L1-resident SoA set (difference of R and\n"
             "2R passes); latency: cycles per call in a dependent chain.  >= 11 epochs after\n"
             "warm-up, pinned to one CPU; min, median, spread; '!' marks spread > 5%%.\n"

@@ -2,7 +2,7 @@
 #include <math.h>
 #include <string.h>
 #include "fxhook.h"
-#include "src/kernel_list.h"
+#include "src/core/kernel_list.h"
 
 static volatile int32_t opaque_zero; /* always 0; the compiler cannot know */
 
@@ -10,7 +10,7 @@ static volatile int32_t opaque_zero; /* always 0; the compiler cannot know */
 #define COL_(q) in[q]
 #define CHAINED_(q) (q == 0 ? in[0][i] + (int32_t)(uint32_t)y * z : in[q][i])
 
-/* Names generated here from src/kernels.def: three loops per fixed-point
+/* Names generated here from src/core/kernels.def: three loops per fixed-point
  * kernel and tier (the fast tier only where fx_code is fast: NULL in the
  * table), and the table. */
 #define FX_LOOPS(name, T, tier, suffix, n)                                                         \
@@ -36,7 +36,7 @@ static volatile int32_t opaque_zero; /* always 0; the compiler cannot know */
     }
 #define FACET_KERNEL(name, NAME, n, T, fx_frac, fx_max, fx_format, fx_code, ...) \
     FACET_IF_PRECISE(fx_code, FX_LOOPS(name, T, fx, , n)) FACET_IF_FX(T, FX_LOOPS(name, T, fx_fast, _fast, n))
-#include "src/kernels.def"
+#include "src/core/kernels.def"
 #undef FACET_KERNEL
 
 void bench_fx_identity_chain(void *out, const int32_t *const *in, size_t n_)
@@ -53,7 +53,7 @@ static bench_fx table[] = {
     FACET_IF_FX(T, { #name, NULL, FACET_PRECISE_OR(fx_code, batch_##name, NULL),                            \
                      FACET_PRECISE_OR(fx_code, call_##name, NULL), FACET_PRECISE_OR(fx_code, chain_##name, NULL), \
                      batch_##name##_fast, call_##name##_fast, chain_##name##_fast },)
-#include "src/kernels.def"
+#include "src/core/kernels.def"
 #undef FACET_KERNEL
 };
 

@@ -15,7 +15,7 @@
 #include <stddef.h>
 
 typedef void (*bench_fn)(float *out, const float *const *in, size_t n);
-/* a sampler's loop (src/sample_kernels.def): out[o][i] = output o of the
+/* a sampler's loop (src/core/sample_kernels.def): out[o][i] = output o of the
  * sampler at in[0][i], ...; n a multiple of the lane count */
 typedef void (*bench_sfn)(float *const *out, const float *const *in, size_t n);
 

@@ -3,8 +3,8 @@
  * token) and LP_TIER (its name string). */
 #include "facet.h"
 #include "loops.h"
-#include "src/kernel_list.h"
-#include "src/sample_port.h" /* FACET_SAMPLE_CALL: a sampler's call by its kind */
+#include "src/core/kernel_list.h"
+#include "src/core/sample_port.h" /* FACET_SAMPLE_CALL: a sampler's call by its kind */
 
 #define LP_CAT_(a, b) a##b
 #define LP_CAT(a, b) LP_CAT_(a, b)
@@ -19,7 +19,7 @@
 #define LP_FED_AT_4 LP_PLAIN_(4)
 #define LP_FED_AT_5 LP_PLAIN_(5)
 
-/* Names generated here from src/kernels.def: two loops per kernel. */
+/* Names generated here from src/core/kernels.def: two loops per kernel. */
 #define FACET_KERNEL(name, NAME, n, ...)                                        \
     static void LP_CAT(LP_TNAME, LP_CAT(_thr_, name))(float *out, const float *const *in, size_t n_) \
     {                                                                           \
@@ -35,7 +35,7 @@
             y = LP_KT(name)(FACET_EACH_INPUT(n, LP_FED_));                       \
         LP_STORE(out, y);                                                       \
     }
-#include "src/kernels.def"
+#include "src/core/kernels.def"
 #undef FACET_KERNEL
 
 static void LP_CAT(LP_TNAME, _thr_identity)(float *out, const float *const *in, size_t n_)
@@ -56,7 +56,7 @@ static void LP_CAT(LP_TNAME, _chain_identity)(float *out, const float *const *in
 
 static const bench_loop LP_CAT(lp_k_, LP_TNAME)[] = {
 #define FACET_KERNEL(name, NAME, n, ...) { LP_CAT(LP_TNAME, LP_CAT(_thr_, name)), LP_CAT(LP_TNAME, LP_CAT(_chain_, name)) },
-#include "src/kernels.def"
+#include "src/core/kernels.def"
 #undef FACET_KERNEL
     { LP_CAT(LP_TNAME, _thr_identity), LP_CAT(LP_TNAME, _chain_identity) },
 };
@@ -67,7 +67,7 @@ static const bench_loop LP_CAT(lp_k_, LP_TNAME)[] = {
 #define LP_SAMPLE_CALL(kind, k, o, n_out, a, n) FACET_SAMPLE_CALL(kind, k, o, n_out, a, n)
 #endif
 
-/* Names generated here from src/sample_kernels.def: one throughput loop
+/* Names generated here from src/core/sample_kernels.def: one throughput loop
  * per sampler (inputs loaded, the sampler called, its outputs stored). */
 #define FACET_SAMPLER(name, NAME, kind, err, n_out, n_in, outs, ins)           \
     static void LP_CAT(LP_TNAME, LP_CAT(_s_, name))(float *const *out, const float *const *in, size_t n_) \
@@ -83,12 +83,12 @@ static const bench_loop LP_CAT(lp_k_, LP_TNAME)[] = {
                 LP_STORE(out[j] + i, o_[j]);                                    \
         }                                                                       \
     }
-#include "src/sample_kernels.def"
+#include "src/core/sample_kernels.def"
 #undef FACET_SAMPLER
 
 static const bench_sfn LP_CAT(lp_s_, LP_TNAME)[] = {
 #define FACET_SAMPLER(name, ...) LP_CAT(LP_TNAME, LP_CAT(_s_, name)),
-#include "src/sample_kernels.def"
+#include "src/core/sample_kernels.def"
 #undef FACET_SAMPLER
 };
 

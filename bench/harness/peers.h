@@ -61,7 +61,7 @@ int peer_available(const peer_set *p);
 peer_term_fn peer_term(const peer_set *p, const char *name);
 
 /* The samplers' textbook peer (peers_sample.c, built like the textbook
- * peer: tests/sample_peer.h's direct libm formulas, -O2): out[o][i] =
+ * peer: tests/lib/sample_peer.h's direct libm formulas, -O2): out[o][i] =
  * output o of the sampler or pdf `name` (facet.h) at in[0][i], ..., or
  * NULL where it has none.  *same_map (if not NULL): 1 where it computes
  * the same map as facet's oracle (so its error against it means

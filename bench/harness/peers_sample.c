@@ -1,11 +1,11 @@
-/* peers_sample.c - the textbook peers of the samplers (tests/sample_peer.h:
+/* peers_sample.c - the textbook peers of the samplers (tests/lib/sample_peer.h:
  * the direct formulas with libm, as a renderer writes them from the
  * papers), as batch loops over SoA arrays for the bench.  Built like
  * peers_textbook.c (-O2, default floating point, bench/bench.mk).  Inputs
  * in the order of the facet sampler of the same name (facet.h); see peers.h. */
 #include <string.h>
 #include "facet.h"
-#include "tests/sample_peer.h"
+#include "tests/lib/sample_peer.h"
 #include "peers.h"
 
 static void s_ggx_sample_d(float *const *out, const float *const *in, size_t n)

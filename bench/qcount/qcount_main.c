@@ -1,13 +1,13 @@
 /* qcount_main.c - brdf_hammon's batch functions, one port and tier at a
  * time, each call between two marker functions, for counting executed
  * instructions under qemu (bench/qcount/qcount.sh cuts the trace at the
- * markers).  Calls the port tables directly (src/port.h), so the
+ * markers).  Calls the port tables directly (src/core/port.h), so the
  * dispatcher's pointer load is not counted.  N samples per call. */
 #include <stdint.h>
 #include <stdio.h>
 #include "facet.h"
 #include "facet/fx.h"
-#include "../../src/port.h"
+#include "../../src/core/port.h"
 
 #define N 64
 

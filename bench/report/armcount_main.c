@@ -2,14 +2,14 @@
  * each tier the port runs (f32, f32_fast, fx, fx_fast), one call of N
  * samples between two marker calls, for counting executed instructions
  * under qemu (bench/report/arm_targets.sh cuts the trace at the markers).
- * The port's tables are called directly (src/port.h), so the dispatcher's
+ * The port's tables are called directly (src/core/port.h), so the dispatcher's
  * pointer load is not counted.  Prints one "FORMAT KERNEL" line per counted
  * call, in call order.  ARMCOUNT_PORT names the port (helium). */
 #include <stdint.h>
 #include <stdio.h>
 #include "facet.h"
 #include "facet/fx.h"
-#include "../../src/port.h"
+#include "../../src/core/port.h"
 
 #ifndef N
 #define N 64
@@ -52,7 +52,7 @@ int main(void)
             qin[d][i] = (int32_t)(fin[d][i] * 32768.0f);
         }
 /* a kernel the port's table leaves NULL runs the tier's scalar loop (the
- * dispatcher's rule, src/dispatch.c): that is what the port executes */
+ * dispatcher's rule, src/core/dispatch.c): that is what the port executes */
 #define CALL_(tab, fb, fmt, name, outp, ...) \
     armcount_begin(id); (tab.name ? tab.name : fb.name)(outp, __VA_ARGS__, N); armcount_end(id++); \
     printf("%s %s\n", fmt, #name);
@@ -61,7 +61,7 @@ int main(void)
     CALL_(F32_FAST, facet_port_scalar_f32_fast, "f32_fast", name, out, FACET_MAP_INPUTS(n, F_ARG_, __VA_ARGS__)) \
     FACET_IF_PRECISE(fx_code, CALL_(FX, facet_fx_port_scalar, "fx", name, (fx_type *)(void *)qout, FACET_MAP_INPUTS(n, Q_ARG_, __VA_ARGS__))) \
     FACET_IF_FX(fx_type, CALL_(FX_FAST, facet_fx_fast_port_scalar, "fx_fast", name, (fx_type *)(void *)qout, FACET_MAP_INPUTS(n, Q_ARG_, __VA_ARGS__)))
-#include "../../src/kernels.def"
+#include "../../src/core/kernels.def"
 #undef FACET_KERNEL
     printf("armcount: %g %llu\n", (double)out[0], (unsigned long long)qout[0]);
     return 0;

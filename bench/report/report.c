@@ -727,7 +727,7 @@ static void section_clock(void)
 {
     h2("Clock and method");
     para("Clock: <b>%s</b> (%s). %s Pinned to CPU %d. Throughput: %s samples per pass, "
-         "L1-resident structure-of-arrays of valid random geometry from tests/sample.h (per-sample "
+         "L1-resident structure-of-arrays of valid random geometry from tests/lib/sample.h (per-sample "
          "alpha, f0, albedo), cost = t(2R passes) - t(R passes) over R passes; >= 11 epochs after "
          "warm-up, each the best of 3; reported: min and median, spread = (max - min) / median, "
          "'!' where spread > 5%%. Latency: a dependent chain (the first input of call i+1 is "
@@ -750,7 +750,7 @@ static void section_kernels(void)
          "input) and mean over the error set; 'bound' is the facet.h bound (ok/BAD). Peers: error against "
          "the oracle of the formula they compute. Fixed-point rows (fmt fx): the float inputs rounded to Q15 "
          "(ties up) and clamped to the fx domain outside the timing; error in LSB of the output format "
-         "against round-half-up(oracle 2^frac) at those Q15 inputs, the measure of tests/test_fx_accuracy.c "
+         "against round-half-up(oracle 2^frac) at those Q15 inputs, the measure of tests/fx/test_fx_accuracy.c "
          "(brdf_hammon where the oracle is >= 16: relative, bound 2^-26); path batch = "
          "facet_KERNEL_fx_batch with facet_set_port(port) active (identical timings across ports mean the "
          "build routes every port to the same fx loop), path call = facet_KERNEL_fx per sample. Throughput in %s per sample (median), est. cycles per "
@@ -1548,7 +1548,7 @@ static void section_arm(void)
         return;
     }
     para("bench/cortexm/cortexm.sh builds bench/cortexm/cortexm_main.c with arm-none-eabi-gcc -O2 -mthumb -mcpu=CORE "
-         "(fixed point: src/fx_core.c, src/fx_kernels.c; f32: facet/scalar.h with -mfloat-abi=soft, so "
+         "(fixed point: src/fx/fx_prims.c, src/fx/fx_kernels.c; f32: facet/scalar.h with -mfloat-abi=soft, so "
          "every float operation is a libgcc call), runs it under qemu-system-arm -singlestep -d exec "
          "(one log line per executed instruction) and cuts each kernel call out of the trace, from the "
          "kernel's first instruction to its return: callees (reciprocal, square root, libgcc soft-float "
@@ -1591,7 +1591,7 @@ static void section_arm(void)
         trow(cells);
     }
     tend();    para("The fast tiers against the precise fixed point and the core's FPU: <b>fx_fast</b> "
-         "(facet_KERNEL_fx_fast, src/fx_fast.c) and the precise f32 kernel built for the core's FPU "
+         "(facet_KERNEL_fx_fast, src/fx/fx_fast.c) and the precise f32 kernel built for the core's FPU "
          "(<b>f32 FPU</b>: -mfloat-abi=hard, -mfpu=fpv4-sp-d16 on M4, fpv5-d16 on M7), measured the same way.");
     thead(9, "kernel", "fx_fast M0 insns", "fx_fast M0 cyc (TRM)", "fx_fast M4 insns", "fx_fast M4 / M7 / M33 mca",
           "fx M4 insns", "f32 FPU M4 insns", "f32 FPU M4 / M7 mca", "fx/fx_fast M4 (mca)");
@@ -1783,7 +1783,7 @@ static void section_targets(void)
 }
 
 /* the core part of report.md (accuracy tables) as HTML: headings, tables,
- * paragraphs; enough for what tests/report.sh writes */
+ * paragraphs; enough for what tests/report/report.sh writes */
 static void md_to_html(FILE *in, FILE *out)
 {
     char line[8192];
@@ -1852,7 +1852,7 @@ static int copy_file(const char *path, FILE *out)
 }
 
 /* report.md and index.html are composed here, from accuracy.md (the part
- * tests/report.sh writes; absent in a bench-only run) and this run's bench
+ * tests/report/report.sh writes; absent in a bench-only run) and this run's bench
  * part, so a quick run after a full one replaces the bench part of both
  * rather than adding a second one beside the stale first. */
 /* accuracy.md split at its first section: the head (title, machine, date)
@@ -1920,7 +1920,7 @@ static void write_index(void)
     snprintf(path, sizeof path, "%s/bench.html", outdir);
     copy_file(path, out);
     if (acc && head < n) {
-        fputs("<h1>Accuracy (tests/report.sh)</h1>\n", out);
+        fputs("<h1>Accuracy (tests/report/report.sh)</h1>\n", out);
         md_part_to_html(acc + head, n - head, out);
     }
     free(acc);
@@ -1944,11 +1944,11 @@ static void write_report_md(void)
     if (acc)
         fwrite(acc, 1, head, out);
     else
-        fputs("# facet report\n\n(bench part only: no accuracy.md from tests/report.sh here)\n", out);
+        fputs("# facet report\n\n(bench part only: no accuracy.md from tests/report/report.sh here)\n", out);
     snprintf(path, sizeof path, "%s/bench.md", outdir);
     copy_file(path, out);
     if (acc && head < n) {
-        fputs("\n# Accuracy (tests/report.sh)\n\n", out);
+        fputs("\n# Accuracy (tests/report/report.sh)\n\n", out);
         fwrite(acc + head, 1, n - head, out);
     }
     free(acc);

@@ -1,13 +1,13 @@
 #!/bin/sh
 # bench/report/report.sh BUILD_DIR - the benchmark part of `make report` (called
-# from the marked block at the end of tests/report.sh).  Writes, under
+# from the marked block at the end of tests/report/report.sh).  Writes, under
 # BUILD_DIR/report/ (or FACET_REPORT_OUT): mca.tsv (llvm-mca cycles per sample of each port's
 # batch loop), size.tsv (bytes of each batch function), arm.tsv (Cortex-M
 # figures from bench/cortexm/cortexm.sh, when its tools exist), arm_vec.tsv
 # and arm_vec.status (the NEON and Helium ports' costs, arm_targets.sh), then
 # runs `build/facet-bench report`, which measures everything else and
 # writes bench.md, then report.md and index.html: accuracy.md (the accuracy
-# part tests/report.sh left, if any) followed by this run's bench part.
+# part tests/report/report.sh left, if any) followed by this run's bench part.
 # Progress goes to the terminal.
 set -u
 build=${1:-build}

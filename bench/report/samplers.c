@@ -2,7 +2,7 @@
  * report.c): the samplers' cost per port and tier beside the textbook peer
  * (rows of the bench run, harness/bench.c), a picture of sampled directions
  * against the pdf (SVG: OUTDIR/sampling.svg, inlined in the HTML), and the
- * chi-square table that tests/test_sample_chi2.c printed into
+ * chi-square table that tests/sample/test_sample_chi2.c printed into
  * OUTDIR/sample_chi2.txt (bench/report/sample_chi2.sh). */
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE
@@ -359,14 +359,14 @@ void report_samplers(FILE *md, FILE *html, const char *outdir, int quick, report
                 "(median; '!' where the spread exceeds 5%%) and, in parentheses, est. core cycles (see the clock "
                 "section), through the batch API (facet_<sampler>_f32_batch and _f32_fast_batch) with "
                 "facet_set_port(port) active, in structure-of-arrays over the in-domain inputs of "
-                "tests/test_sample_accuracy.c (gtr_sample_d with gamma = 1), beside the textbook peer "
-                "(tests/sample_peer.h: the direct formulas with libm, in float, -O2, one sample at a time; "
+                "tests/sample/test_sample_accuracy.c (gtr_sample_d with gamma = 1), beside the textbook peer "
+                "(tests/lib/sample_peer.h: the direct formulas with libm, in float, -O2, one sample at a time; "
                 "no peer for the anisotropic forms, reflect and pdf_vndf_reflect). Measured in the same run as "
                 "the kernels' rows; compare ratios only. Every facet row is within its facet.h bound in the "
                 "samplers' error measure (`facet-bench bench SAMPLER` shows the errors).\n\n", cyc_unit());
     fprintf(html, "<p>Cost of each sampler and pdf (facet.h, \"GGX and GTR importance sampling\"): %s per sample "
                   "(median; '!' where the spread exceeds 5%%) and, in parentheses, est. core cycles, through the "
-                  "batch API with facet_set_port(port) active, beside the textbook peer (tests/sample_peer.h: the "
+                  "batch API with facet_set_port(port) active, beside the textbook peer (tests/lib/sample_peer.h: the "
                   "direct formulas with libm, -O2); gtr_sample_d timed with gamma = 1. Same run as the kernels' "
                   "rows; compare ratios only. <code>facet-bench bench SAMPLER</code> shows the errors.</p>\n",
             cyc_unit());
@@ -384,8 +384,8 @@ void report_samplers(FILE *md, FILE *html, const char *outdir, int quick, report
                 "Top: D sampling at alpha 0.1, 0.5, 1; bottom: visible normals at alpha 0.5 for views at 0, 60 and "
                 "89 degrees from N.\n\n", n, facet_port_name());
     free(svg);
-    fprintf(md, "### Chi-square goodness of fit (tests/test_sample_chi2.c)\n\n");
-    fprintf(html, "<h3>Chi-square goodness of fit (tests/test_sample_chi2.c)</h3>\n");
+    fprintf(md, "### Chi-square goodness of fit (tests/sample/test_sample_chi2.c)\n\n");
+    fprintf(html, "<h3>Chi-square goodness of fit (tests/sample/test_sample_chi2.c)</h3>\n");
     fprintf(md, "Each sampler against its pdf: 16 x 16 bins in (q, phi_h), q the GGX CDF of theta_h, bins "
                 "expecting fewer than 5 pooled; Pearson chi-square, pass p > 0.01; integral - 1: the pdf's "
                 "quadrature over the hemisphere. The test's own output, run for this report.\n\n");

@@ -1,9 +1,9 @@
 /* symbols.c - `facet-bench batch-symbols`: where each port's f32 batch
  * function of each kernel sits in this binary, so report.sh can size it and
  * hand its loop to llvm-mca without knowing the library's private names for
- * these functions.  Read from the library's port tables (src/port.h, the
+ * these functions.  Read from the library's port tables (src/core/port.h, the
  * dispatcher's contract: a port's name, its lanes, then one function per
- * kernel in src/kernels.def order).  One line per tier, compiled-in port and
+ * kernel in src/core/kernels.def order).  One line per tier, compiled-in port and
  * kernel:
  *   FORMAT PORT KERNEL OFFSET       (FORMAT: f32 or f32_fast)
  * OFFSET: the function's address minus the address of the public
@@ -14,7 +14,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "facet.h"
-#include "src/port.h"
+#include "src/core/port.h"
 #include "facet_bench.h"
 
 #pragma weak facet_port_scalar_f32
@@ -37,7 +37,7 @@ static void print_port(const char *format, const facet_f32_port *p)
     port = p->name; /* (inside the macro, `name` is the kernel's) */
 #define FACET_KERNEL(name, ...) \
     printf("%s %s %s %lld\n", format, port, #name, (long long)((intptr_t)(uintptr_t)p->name - (intptr_t)anchor));
-#include "src/kernels.def"
+#include "src/core/kernels.def"
 #undef FACET_KERNEL
 }
 

@@ -86,7 +86,7 @@ FACET_INLINE __m512 facet_avx512_rsqrt_fast(__m512 x) { return facet_avx512_rsqr
  *     if (i < n)
  *         facet_avx512_store_n(out + i, kernel(facet_avx512_load_n(x + i, n - i), ...), n - i);
  * All loads of a block come before its store, so out may be one of the
- * inputs.  Tested at every n mod 16 (tests/test_tails.c). */
+ * inputs.  Tested at every n mod 16 (tests/f32/test_tails.c). */
 FACET_INLINE __m512 facet_avx512_load_n(const float *p, size_t r)
 {
     return _mm512_mask_loadu_ps(_mm512_set1_ps(0.5f), (__mmask16)((1u << r) - 1u), p);

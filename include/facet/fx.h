@@ -34,7 +34,7 @@
  *
  * Rounding: one rule everywhere - round to nearest, ties up (toward
  * +infinity).  Quotients and square roots are exact (floor plus remainder)
- * before that rounding; see src/fx_core.h.  No value is an error marker:
+ * before that rounding; see src/fx/fx_prims.h.  No value is an error marker:
  * every raw output is the rounded (or saturated) function value.
  *
  * NaN: fixed point has none.  Inputs are int32 and every pattern is a value
@@ -46,19 +46,19 @@
  * Arithmetic: uint32/uint64 only (no signed overflow), no float, no libgcc
  * helper, no dependence on a hardware divider; 32x32->64 products are one
  * UMULL where the core has it and four 16x16 MULS on ARMv6-M (exact either
- * way).  Shared primitives (src/fx_core.c): one reciprocal (facet_fx_rcp32:
+ * way).  Shared primitives (src/fx/fx_prims.c): one reciprocal (facet_fx_rcp32:
  * 32-entry 16-bit seed table, 3 Newton steps, exact fix-up), one rsqrt
  * (facet_fx_rsqrt32: 24-entry table, 3 Newton steps) giving an exact integer
  * square root, the exact 2-by-1 division of Moller-Granlund.  Every
  * quotient is exact, so a core with a divide instruction may compute it
  * with that instead (Cortex-M3/M4/M7/M33: two 32-bit UDIV digits; 64-bit
- * hosts: the native division) with the same bits (src/fx_core.h fx_div64).
+ * hosts: the native division) with the same bits (src/fx/fx_prims.h fx_div64).
  *
  * Each kernel's contract (formula, output format and maximum, error, cost)
  * is beside its declaration below; the error is the FACET_FX_ERR_* bound,
- * enforced by tests/test_fx_accuracy.c.  The intermediates and the overflow
- * argument of each step are beside its code (src/fx_kernels.c,
- * src/fx_body.h).  Cost: operations of the scalar specification (mul =
+ * enforced by tests/fx/test_fx_accuracy.c.  The intermediates and the overflow
+ * argument of each step are beside its code (src/fx/fx_kernels.c,
+ * src/fx/fx_body.h).  Cost: operations of the scalar specification (mul =
  * 32x32->32, mul64 = 32x32->64, division = one exact 64/32 quotient, sqrt
  * = one exact integer root, fxf = one 32-bit-mantissa float step).
  */
@@ -88,7 +88,7 @@ extern "C" {
 #define FACET_FX_MAX_BRDF  0xFFFFFFFFFFFFFFFFull
 
 /* ---- measured error bounds (max |raw - round(oracle 2^frac)| in LSB over
- * tests/test_fx_accuracy.c's sweep; enforced there) --------------------- */
+ * tests/fx/test_fx_accuracy.c's sweep; enforced there) --------------------- */
 #define FACET_FX_ERR_NOH_FROM_DOTS         1
 #define FACET_FX_ERR_LOH_FROM_DOTS         1
 #define FACET_FX_ERR_FRESNEL_SCHLICK       1
@@ -131,7 +131,7 @@ uint32_t facet_ggx_d_fx(int32_t noh, int32_t alpha);
  * K floored at (ax ay)^2 / 2 (facet.h), so D <= 4/(pi ax ay), which
  * saturates at FACET_FX_MAX_D where ax ay < 2^-19.4.  Intermediates: P = AX
  * AY Q30, T AY and B AX Q30 (each <= 2^30, exact), K Q90 exact in 96 bits
- * [K <= 3], then one fxf rounding (src/fx_kernels.c).
+ * [K <= 3], then one fxf rounding (src/fx/fx_kernels.c).
  * Error: FACET_FX_ERR_GGX_ANISO_D LSB: 5 roundings of <= 2^-32 relative
  * (K, P/K, square, times P, times 1/pi) plus the final half LSB, which is
  * more than 1 LSB only where raw > 2^29.7 (ax ay < 2^-17, at or near the
@@ -176,8 +176,8 @@ uint32_t facet_smith_vis_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
  * Outputs: the G terms Q15 (max 1: every one is capped at 1 or a product
  * or minimum of [0, 1] values); the Vis terms UQ16.16 (smith_vis_joint_approx
  * max 13117 as smith_vis_hammon; smith_vis_fit max 15521, both at
- * N.L = N.V = 2^-8, alpha = 2^-10 [raw < 2^30]).  Scaling (src/fx_kernels.c
- * and src/fx_fast_body.h give each step's Q format and bound):
+ * N.L = N.V = 2^-8, alpha = 2^-10 [raw < 2^30]).  Scaling (src/fx/fx_kernels.c
+ * and src/fx/fx_fast_body.h give each step's Q format and bound):
  *   g_implicit  N.L N.V Q30 exact [<= 2^30], rounded once to Q15;
  *   g_neumann   min(N.L, N.V) exact;
  *   g_cook_torrance  g = 2 N.H min(N.L, N.V) Q30 exact [<= 2^31]; 1 where
@@ -199,7 +199,7 @@ uint32_t facet_smith_vis_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
  * Errors: FACET_FX_ERR_* in LSB (precise; measured: correctly rounded, 0
  * LSB, but for the two Vis terms, 1 LSB: fxf's 32-bit rounding of the
  * denominator), FACET_FX_FAST_ERR_* in the fast tier's measure (its
- * maximum over tests/test_fx_fast.c's sweep, 0.8 M to 2 M tuples per
+ * maximum over tests/fx/test_fx_fast.c's sweep, 0.8 M to 2 M tuples per
  * kernel, and its quick variant under FACET_TEST_QUICK; e, LSB < 1K, rel >= 1K, argmax):
  *   g_implicit                 0.500  0.500  -         (512, 32)
  *   g_neumann                  0      0      -         (exact)
@@ -297,7 +297,7 @@ uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alp
 /* brdf_hammon for an RGB f0 and albedo, the geometry (D, Vis, the Fresnel
  * tail, the diffuse shape) computed once: out[c] equals
  * facet_brdf_hammon_fx(nol, nov, lov, alpha, f0[c], albedo[c]) bit for bit
- * (the same operations per channel; tests/test_fx_rgb.c), on every target.
+ * (the same operations per channel; tests/fx/test_fx_rgb.c), on every target.
  * Cost: one geometry and three channel tails (`build/facet-bench api`:
  * 0.48x the time of three
  * facet_brdf_hammon_fx calls, 0.63x in fx_fast, on x86-64). */
@@ -371,11 +371,11 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
  * v 2^frac), v the exact value at the same raw inputs (the oracle).  The
  * error measure is e = |raw - v 2^frac| / max(1, 2^-10 v 2^frac);
  * FACET_FX_FAST_ERR_<NAME> is its measured maximum over
- * tests/test_fx_fast.c's sweep and a 2e7-tuple run of the same families
+ * tests/fx/test_fx_fast.c's sweep and a 2e7-tuple run of the same families
  * per kernel (enforced by the test; the tier's bound is 1).
  * Integer only, no divide instruction, no libgcc helper (Cortex-M0/M4,
- * RV32IMC), bit-exact on every target (pinned hashes, tests/fx_hash.h);
- * written once over the lane op layer (src/fx_fast_body.h), so a SIMD port
+ * RV32IMC), bit-exact on every target (pinned hashes, tests/lib/fx_hash.h);
+ * written once over the lane op layer (src/fx/fx_fast_body.h), so a SIMD port
  * instantiates the same body.  Cost: executed instructions per call on
  * Cortex-M4 / Cortex-M0 (qemu trace, mean of bench/cortexm_main.c's 4
  * inputs; arm-none-eabi-gcc 12.2 -O2), the precise tier's in brackets.
@@ -488,7 +488,7 @@ uint32_t facet_ggx_d_fx_fast(int32_t noh, int32_t alpha);
  * step), -log2 N.H by a series in 1 - N.H near 1 (relative precision kept:
  * p reaches 2^21 there) and by the integer log2 elsewhere, y held in Q24
  * (saturated at 128: D 2^13 < 2^-29 beyond 64), 2^-y by the degree-5 2^f
- * and a final rounded shift (src/fx_fast_body.h has each bound).
+ * and a final rounded shift (src/fx/fx_fast_body.h has each bound).
  * Blinn-Phong D = N.H^p / (pi alpha^2), p = 2 (1 - alpha^2) / alpha^2;
  * noh [0, 1], alpha [2^-10, 1]; UQ19.13, max 2^20/pi.  N.H = 0 gives 0
  * (alpha < 1); alpha = 1 gives 1/pi everywhere (facet.h).  Intermediates:
@@ -527,7 +527,7 @@ uint32_t facet_ggx_aniso_d_fx_fast(int32_t noh, int32_t toh, int32_t boh, int32_
  * d = (1 - n)(1 + n) + (n alpha)^2 exact in 64 bits (as ggx_d), which is
  * c = E(L) / (pi E(M)) of facet.h with its limits (gamma = 1: g(0) = 1/ln 2
  * by a series; alpha = 1 and gamma = 0: 1/pi) and no special case.
- * Integer log2 and 2^f (src/fx_fast_body.h): log2 = clz (the exponent) +
+ * Integer log2 and 2^f (src/fx/fx_fast_body.h): log2 = clz (the exponent) +
  * a 16-entry reciprocal/log table and a degree-5 series on the mantissa
  * (|error| <= 2^-25.5); 2^f = a degree-5 polynomial on f in [0, 1)
  * (Chebyshev nodes, <= 2^-22.9 relative with its truncations); 2^Z's
@@ -573,7 +573,7 @@ uint32_t facet_smith_vis_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
  * Fritsch-Carlson slopes (harmonic means 2 a b / (a + b) = 2 a (b / (a + b)),
  * ends (3 d0 - d1) / 2 floored at 0) and the Hermite sum are formed from
  * differences >= 0: nothing is signed; Q27 .. Q32 stages, each bound
- * beside the code (src/fx_fast_body.h).
+ * beside the code (src/fx/fx_fast_body.h).
  * Error: FACET_FX_FAST_ERR_SMITH_G1_GTR LSB (measured 0.5002 in the test,
  * 0.5021 over 3e6 tuples with gamma uniform in [0, 4] and 1 in 7 at an
  * integer order; each closed form alone <= 0.5016).  Cost: 949 / 3790
@@ -626,7 +626,7 @@ void facet_brdf_hammon_rgb_fx_fast_batch_interleaved(uint64_t *out, const int32_
  * diffuse terms UQ8.24 as diffuse_hammon (diffuse_burley max 6.25/pi =
  * 1.99; diffuse_oren_nayar (A + B 256)/pi <= 27.3 at nl = nv = 2^-8, L.V =
  * 1 [raw < 2^28.8]; the two Hammon variants <= diffuse_hammon's 20.65).
- * Scaling (src/fx_fast_body.h gives each step's Q format and bound):
+ * Scaling (src/fx/fx_fast_body.h gives each step's Q format and bound):
  *   fresnel_cook_torrance  the Fresnel equations divided by eta (u = 1/eta
  *               = (1 - s)/(1 + s), s = sqrt(f0)): rs = (u c - ct)/(u c + ct),
  *               rp = (c - u ct)/(c + u ct), ct = sqrt(v + u^2 c^2), v = 1 -
@@ -654,7 +654,7 @@ void facet_brdf_hammon_rgb_fx_fast_batch_interleaved(uint64_t *out, const int32_
  *               multi and final steps (its bounds) with the smooth term
  *               (1 - yl^5/2)(1 - yv^5/2) Q30 (hybrid), 1 (cheap).
  * Errors: FACET_FX_FAST_ERR_* (the fast tier's measure, its maximum over
- * tests/test_fx_fast.c's full sweep, 0.8 M to 2.3 M tuples per kernel, x86-64;
+ * tests/fx/test_fx_fast.c's full sweep, 0.8 M to 2.3 M tuples per kernel, x86-64;
  * e, LSB < 1K, rel >= 1K, argmax; the error is the final rounding in each
  * but cook_torrance):
  *   fresnel_cook_torrance   0.634  0.634  -         (51, 11657; the test's sweep: 0.610 at
@@ -726,7 +726,7 @@ void facet_diffuse_hammon_cheap_fx_fast_batch(uint32_t *out, const int32_t *nol,
 /* ---- fast tier batches: out[i] = facet_<kernel>_fx_fast(in1[i], ...) ---
  * Dispatched like the precise batches (one port choice for every format):
  * the active port's code (avx2 and avx512: AVX2 lanes; aarch64 neon: NEON
- * lanes; the fast body, src/fx_fast_body.h, instantiated on each), the
+ * lanes; the fast body, src/fx/fx_fast_body.h, instantiated on each), the
  * scalar loop elsewhere.  Bit-identical to the scalar kernels for every
  * int32 input, n, alignment and tail; out may be the very same array as an
  * input (32-bit outputs); no other overlap. */

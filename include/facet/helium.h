@@ -100,7 +100,7 @@ FACET_INLINE float32x4_t facet_helium_rsqrt_fast(float32x4_t x) { return facet_h
  * lanes and 0.5 (inside every kernel's domain) into the others, reading
  * nothing past p + r; facet_helium_store_n(p, v, r) stores the first r
  * lanes, writing nothing else.  Tail-predicated (VCTP), no stack copy.
- * Tested at every n mod 4 (tests/test_tails.c, on the M55 image). */
+ * Tested at every n mod 4 (tests/f32/test_tails.c, on the M55 image). */
 FACET_INLINE float32x4_t facet_helium_load_n(const float *p, size_t r)
 {
     mve_pred16_t m = vctp32q((uint32_t)(r < 4 ? r : 4));

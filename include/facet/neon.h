@@ -96,7 +96,7 @@ FACET_INLINE float32x4_t facet_neon_rsqrt_fast(float32x4_t x)
  *     if (i < n)
  *         facet_neon_store_n(out + i, kernel(facet_neon_load_n(x + i, n - i), ...), n - i);
  * All loads of a block come before its store, so out may be one of the
- * inputs.  Tested at every n mod 4 (tests/test_tails.c). */
+ * inputs.  Tested at every n mod 4 (tests/f32/test_tails.c). */
 FACET_INLINE float32x4_t facet_neon_load_n(const float *p, size_t r)
 {
     float t[4];

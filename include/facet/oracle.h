@@ -17,7 +17,7 @@
  * handling (clamping, and the identity extension for inconsistent dot
  * triples), which is part of what the kernels promise.
  *
- * Accuracy: validated in tests/test_oracle.c, against quadrature
+ * Accuracy: validated in tests/oracle/test_oracle.c, against quadrature
  * (normalisation of D, Lambda integrated from the slope distribution, the
  * Smith constraint, the 21/(20 pi) smooth-diffuse albedo), by symmetry, and
  * against an independent long-double evaluation at ill-conditioned points:

@@ -78,7 +78,7 @@ FACET_INLINE __m128 facet_sse2_rsqrt_fast(__m128 x)
  *     if (i < n)
  *         facet_sse2_store_n(out + i, kernel(facet_sse2_load_n(x + i, n - i), ...), n - i);
  * All loads of a block come before its store, so out may be one of the
- * inputs.  Tested at every n mod 4 (tests/test_tails.c). */
+ * inputs.  Tested at every n mod 4 (tests/f32/test_tails.c). */
 FACET_INLINE __m128 facet_sse2_load_n(const float *p, size_t r)
 {
     float t[4];

@@ -1,9 +1,9 @@
-/* fx_avx2.c - the lane op layer of src/fx_body.h on AVX2: 4 lanes, each a
+/* fx_avx2.c - the lane op layer of src/fx/fx_body.h on AVX2: 4 lanes, each a
  * uint64_t in a __m256i (vpmuludq for the exact 32x32->64 products), int32
  * inputs clamped as 4 dwords (vpmaxsd / vpminsd) before they are widened.
  * Integer instructions only.  Bit-identical to the scalar specification
- * (tests/test_fx_ports.c).  Dispatched for the avx2 and avx512 ports
- * (src/dispatch.c). */
+ * (tests/fx/test_fx_ports.c).  Dispatched for the avx2 and avx512 ports
+ * (src/core/dispatch.c). */
 #if !defined(__AVX2__)
 #error "fx_avx2.c needs AVX2 (-mavx2): built by ports/avx2/port.mk"
 #endif
@@ -37,7 +37,7 @@ static inline fxv_u32 fxv_lo(fxv_u64 a) { return _mm256_and_si256(a, _mm256_set1
 static inline fxv_u32 fxv_hi(fxv_u64 a) { return _mm256_srli_epi64(a, 32); }
 static inline fxv_u32 fxv_narrow(fxv_u64 a) { return a; }
 
-/* the fast tier's ops (src/fx_body.h's list; src/fx_fast_body.h): values
+/* the fast tier's ops (src/fx/fx_body.h's list; src/fx/fx_fast_body.h): values
  * below 2^32 in 64-bit lanes, so signed 64-bit compares order them and a
  * left shift is masked back to 32 bits (mod 2^32, as the scalar ops) */
 #define FXV_M32_ _mm256_set1_epi64x(0xFFFFFFFFll)
@@ -90,4 +90,4 @@ static inline void fxv_store32_(void *p, fxv_u32 v)
  * warns about an unused static function) */
 #define fxv_store_uint64_t(p, v) _mm256_storeu_si256((__m256i *)(p), (v))
 
-#include "../../src/fx_vbatch.h"
+#include "../../src/fx/fx_batch_body.h"

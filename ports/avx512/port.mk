@@ -2,7 +2,7 @@
 # runs them only where CPUID and XCR0 say the CPU and OS can).
 ifneq ($(filter x86_64%,$(TARGET)),)
 LIB_OBJ += $(BUILD)/ports/avx512/f32_avx512.o
-$(BUILD)/ports/avx512/%.o: ports/avx512/%.c $(HEADERS) $(wildcard src/*.h)
+$(BUILD)/ports/avx512/%.o: ports/avx512/%.c $(HEADERS) $(SRC_HDRS)
 	@mkdir -p $(dir $@)
 	$(CC) $(BASEFLAGS) $(PICFLAGS) -mavx512f -c $< -o $@
 endif

@@ -1,4 +1,4 @@
-/* fx_helium.c - the lane op layer of src/fx_body.h and src/fx_fast_body.h
+/* fx_helium.c - the lane op layer of src/fx/fx_body.h and src/fx/fx_fast_body.h
  * on Helium (Armv8.1-M MVE integer: Cortex-M55, M85): 4 lanes of 32 bits in
  * a uint32x4_t; a 64-bit lane value is a pair of them (low and high words),
  * the exact 32x32->64 product one VMUL and one VMULH (the high word alone
@@ -6,7 +6,7 @@
  * 64-bit sum a carry by compare.  Table lookups are gathers (VLDRW with
  * shifted offsets), clz is VCLZ, shifts VSHL by a register or a per-lane
  * count.  Integer instructions only.  Bit-identical to the scalar
- * specification (tests/test_fx_ports.c and the pinned hashes, run on the
+ * specification (tests/fx/test_fx_ports.c and the pinned hashes, run on the
  * Cortex-M55 model by tests/suites/52-helium.sh).
  * The batch functions' tails are predicated (VCTP): lanes past the end are
  * neither read nor written. */
@@ -62,7 +62,7 @@ FXV_FAST_ fxv_u32 fxv_hi(fxv_u64 a) { return a.hi; }
 FXV_FAST_ fxv_u32 fxv_narrow(fxv_u64 a) { return a.lo; }
 
 /* the fast tier's ops */
-/* the body's constant shifts (1 to 31, src/fx_fast_body.h) as immediates:
+/* the body's constant shifts (1 to 31, src/fx/fx_fast_body.h) as immediates:
  * macros, so the count reaches the intrinsic as a constant expression */
 #define fxv_shr(a, k) vshrq_n_u32((a), (k))
 #define fxv_shl(a, k) vshlq_n_u32((a), (k))
@@ -91,9 +91,9 @@ FXV_FAST_ fxv_u32 fxv_clamp_off(fxv_i32 x, int32_t lo, int32_t hi)
 FXV_FAST_ fxv_u32 fxv_lut(const uint32_t *t, fxv_u32 i) { return vldrwq_gather_shifted_offset_u32(t, i); }
 
 #include "facet/fx.h"
-#include "../../src/port.h"
-#include "../../src/fx_body.h"
-#include "../../src/fx_fast_body.h"
+#include "../../src/core/port.h"
+#include "../../src/fx/fx_body.h"
+#include "../../src/fx/fx_fast_body.h"
 
 /* whole vectors by plain loads and stores, the tail (n % 4) by predicated
  * ones (0 in the lanes past the end, which are neither read nor written);
@@ -131,27 +131,27 @@ FXV_FAST_ void fxh_storep_uint64_t(uint64_t *o, fxv_u64 v, mve_pred16_t p)
             fxh_storep_##fx_type(out + i, body(FACET_EACH_INPUT(n, FXH_LOADP_)), p);        \
         }                                                                                  \
     }
-/* Names generated here from src/kernels.def: the precise tier on lanes
+/* Names generated here from src/core/kernels.def: the precise tier on lanes
  * where fx_code is lanes, the fast tier on lanes for every fixed-point
  * kernel (fewer instructions than the scalar loop on the M55 model: README
  * "SIMD ports") */
 #define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...)      \
     FACET_IF_LANES(fx_code, FXH_DEF(fxh_batch_##name, fxb_##name, n, fx_type))             \
     FACET_IF_FX(fx_type, FXH_DEF(fxh_fast_batch_##name, fxf_fast_##name, n, fx_type))
-#include "../../src/kernels.def"
+#include "../../src/core/kernels.def"
 #undef FACET_KERNEL
 
 const facet_fx_port facet_fx_port_helium = {
     "helium", 4,
 #define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...) \
     FACET_IF_LANES(fx_code, .name = fxh_batch_##name,)
-#include "../../src/kernels.def"
+#include "../../src/core/kernels.def"
 #undef FACET_KERNEL
 };
 const facet_fx_port facet_fx_fast_port_helium = {
     "helium", 4,
 #define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...) \
     FACET_IF_FX(fx_type, .name = fxh_fast_batch_##name,)
-#include "../../src/kernels.def"
+#include "../../src/core/kernels.def"
 #undef FACET_KERNEL
 };

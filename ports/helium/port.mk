@@ -1,7 +1,7 @@
 # Helium port (Armv8.1-M MVE with floating point: Cortex-M55, M85): built
 # into the library where the compiler targets it (bare-metal arm-none-eabi
 # with e.g. CFLAGS="-mcpu=cortex-m55 -mfloat-abi=hard -mthumb"; the
-# dispatcher asks MVFR1 at run time, src/cpu.c).  tests/helium.mk links the
+# dispatcher asks MVFR1 at run time, src/core/cpu.c).  tests/ports/helium.mk links the
 # test images; tests/suites/52-helium.sh runs them on qemu's mps3-an547.
 # HELIUM_CC: the compiler of the two port objects alone (default $(CC));
 # HELIUM_CC=clang builds them with clang 14 for the same core
@@ -14,7 +14,7 @@ HELIUM_CC ?= $(CC)
 HELIUM_CCFLAGS := $(if $(filter clang%,$(notdir $(HELIUM_CC))),--target=arm-none-eabi -fshort-enums \
                   -isystem $(dir $(shell $(CC) -print-file-name=libc.a))../include)
 LIB_OBJ += $(BUILD)/ports/helium/f32_helium.o $(BUILD)/ports/helium/fx_helium.o
-$(BUILD)/ports/helium/%.o: ports/helium/%.c $(HEADERS) $(wildcard src/*.h)
+$(BUILD)/ports/helium/%.o: ports/helium/%.c $(HEADERS) $(SRC_HDRS)
 	@mkdir -p $(dir $@)
 	$(HELIUM_CC) $(HELIUM_CCFLAGS) $(BASEFLAGS) -c $< -o $@
 endif

@@ -1,13 +1,13 @@
-/* fx_neon.c - the lane op layer of src/fx_body.h on aarch64 NEON: 2 lanes,
+/* fx_neon.c - the lane op layer of src/fx/fx_body.h on aarch64 NEON: 2 lanes,
  * each a uint64_t in a uint64x2_t (vmull.u32 for the exact 32x32->64
  * products), int32 inputs clamped as 2 words (smax / smin) before they are
  * widened.  Integer instructions only.  Bit-identical to the scalar
- * specification (tests/test_fx_ports.c, run under qemu-user by
+ * specification (tests/fx/test_fx_ports.c, run under qemu-user by
  * tests/suites/40-arm.sh).
  * aarch64 only: on armv7 the scalar loop executed fewer instructions for
  * every fixed-point kernel (qemu counts, README fixed point "SIMD ports"),
  * so armv7 has no fixed-point SIMD code and its neon port runs the scalar
- * loops (src/dispatch.c). */
+ * loops (src/core/dispatch.c). */
 #if defined(__aarch64__)
 #include <arm_neon.h>
 #include <stdint.h>
@@ -40,7 +40,7 @@ static inline fxv_u32 fxv_lo(fxv_u64 a) { return vandq_u64(a, vdupq_n_u64(0xFFFF
 static inline fxv_u32 fxv_hi(fxv_u64 a) { return vshrq_n_u64(a, 32); }
 static inline fxv_u32 fxv_narrow(fxv_u64 a) { return a; }
 
-/* the fast tier's ops (src/fx_body.h's list; src/fx_fast_body.h): values
+/* the fast tier's ops (src/fx/fx_body.h's list; src/fx/fx_fast_body.h): values
  * below 2^32 in 64-bit lanes; a left shift is masked back to 32 bits (mod
  * 2^32, as the scalar ops); clz is the 32-bit clz of each lane's low word */
 #define FXV_M32_ vdupq_n_u64(0xFFFFFFFFu)
@@ -76,7 +76,7 @@ static inline fxv_i32 fxv_load(const int32_t *p) { return vld1_s32(p); }
 #define fxv_store_uint32_t(p, v) vst1_u32((p), vmovn_u64(v))
 #define fxv_store_uint64_t(p, v) vst1q_u64((p), (v))
 
-#include "../../src/fx_vbatch.h"
+#include "../../src/fx/fx_batch_body.h"
 #else
 typedef int facet_fx_neon_aarch64_only_; /* ISO C wants a declaration */
 #endif

@@ -6,8 +6,8 @@
  * inputs are loaded before its outputs are stored, so out may alias any
  * input.  Built with clang (RVV_CC, ports/rvv/port.mk). */
 #include "facet/rvv.h"
-#include "../../src/port.h"
-#include "../../src/sample_port.h"
+#include "../../src/core/port.h"
+#include "../../src/core/sample_port.h"
 
 /* the lanes of one strip at most (VLMAX): facet_port_at's "lanes" */
 int facet_rvv_lanes(void) { return (int)facet_rvv_vlmax(); }
@@ -15,7 +15,7 @@ int facet_rvv_lanes(void) { return (int)facet_rvv_vlmax(); }
 #define RB_PARAM_(q) const float *x##q
 #define RB_LOAD_(q) facet_rvv_load(x##q + i, vl)
 
-/* Names generated here from src/kernels.def: one batch function per kernel
+/* Names generated here from src/core/kernels.def: one batch function per kernel
  * and tier, and the two port tables. */
 #define RB_DEF_(name, n, tier)                                                              \
     static void rb_##name##_##tier(float *out, FACET_EACH_INPUT(n, RB_PARAM_), size_t count) \
@@ -27,10 +27,10 @@ int facet_rvv_lanes(void) { return (int)facet_rvv_vlmax(); }
         }                                                                                  \
     }
 #define FACET_KERNEL(name, NAME, n, ...) RB_DEF_(name, n, f32) RB_DEF_(name, n, f32_fast)
-#include "../../src/kernels.def"
+#include "../../src/core/kernels.def"
 #undef FACET_KERNEL
 
-/* RGB: each stream an element stride (src/port.h: 1 planar, 3 interleaved,
+/* RGB: each stream an element stride (src/core/port.h: 1 planar, 3 interleaved,
  * 0 uniform): a strided load (vlse32, the stride in bytes; 0 broadcasts
  * the one value), every output a strided store */
 FACET_INLINE facet_rvv_v rb_load_s_(const float *p, ptrdiff_t s, size_t i, size_t vl)
@@ -68,19 +68,19 @@ RB_RGB_(f32_fast)
 const facet_f32_port facet_port_rvv_f32 = {
     "rvv", 0,
 #define FACET_KERNEL(name, NAME, n, ...) rb_##name##_f32,
-#include "../../src/kernels.def"
+#include "../../src/core/kernels.def"
 #undef FACET_KERNEL
     rb_brdf_hammon_rgb_f32,
 };
 const facet_f32_port facet_port_rvv_f32_fast = {
     "rvv", 0,
 #define FACET_KERNEL(name, NAME, n, ...) rb_##name##_f32_fast,
-#include "../../src/kernels.def"
+#include "../../src/core/kernels.def"
 #undef FACET_KERNEL
     rb_brdf_hammon_rgb_f32_fast,
 };
 
-/* the samplers (src/sample_port.h): outputs through pointers to three
+/* the samplers (src/core/sample_port.h): outputs through pointers to three
  * locals (sizeless vectors have no arrays), loads and stores with vl */
 #define RS_IN_1 facet_rvv_load(in[0] + i, vl)
 #define RS_IN_2 RS_IN_1, facet_rvv_load(in[1] + i, vl)
@@ -111,18 +111,18 @@ const facet_f32_port facet_port_rvv_f32_fast = {
     }
 #define FACET_SAMPLER(name, NAME, kind, err, n_out, n_in, ...) \
     RS_DEF_(name, kind, n_out, n_in, f32) RS_DEF_(name, kind, n_out, n_in, f32_fast)
-#include "../../src/sample_kernels.def"
+#include "../../src/core/sample_kernels.def"
 #undef FACET_SAMPLER
 
 const facet_sample_port facet_sample_port_rvv_f32 = {
     "rvv", 0,
 #define FACET_SAMPLER(name, ...) rs_##name##_f32,
-#include "../../src/sample_kernels.def"
+#include "../../src/core/sample_kernels.def"
 #undef FACET_SAMPLER
 };
 const facet_sample_port facet_sample_port_rvv_f32_fast = {
     "rvv", 0,
 #define FACET_SAMPLER(name, ...) rs_##name##_f32_fast,
-#include "../../src/sample_kernels.def"
+#include "../../src/core/sample_kernels.def"
 #undef FACET_SAMPLER
 };

@@ -1,11 +1,11 @@
-/* fx_rvv.c - the lane op layer of src/fx_fast_body.h (and the 64-bit ops
- * of src/fx_body.h it uses) on RVV 1.0, vector-length agnostic: VLMAX
+/* fx_rvv.c - the lane op layer of src/fx/fx_fast_body.h (and the 64-bit ops
+ * of src/fx/fx_body.h it uses) on RVV 1.0, vector-length agnostic: VLMAX
  * lanes of 32 bits in a vuint32m1_t, a 64-bit lane value one element of a
  * vuint64m2_t (the same lane count at twice the LMUL): the exact 32x32->64
  * product is one widening vwmulu, its high word a narrowing shift.  Every
  * op runs on all VLMAX lanes; the batch functions load and store with the
  * strip's vl (nothing past n is read or written).  Integer instructions
- * only, bit-identical to the scalar specification (tests/test_fx_ports.c
+ * only, bit-identical to the scalar specification (tests/fx/test_fx_ports.c
  * and the pinned hashes, run at VLEN 128, 256 and 512 by
  * tests/suites/54-rvv.sh).  The fast tier only: the precise tier runs the
  * scalar loops (NULL members).
@@ -13,7 +13,7 @@
  * RVV 1.0 has no clz (that is Zvbb): clz(a) = 1054 - the biased exponent
  * of a widened exactly to double (vfwcvt, exact for every u32), and 0 gives
  * 1054, held at 32 by a min.  Shift counts by register use the low 5 bits
- * (SEW 32); the body's counts are all in [0, 31] (src/fx_fast_body.h). */
+ * (SEW 32); the body's counts are all in [0, 31] (src/fx/fx_fast_body.h). */
 #include <riscv_vector.h>
 #include <stdint.h>
 #include <stddef.h>
@@ -83,9 +83,9 @@ FXV_FAST_ fxv_u32 fxv_lut(const uint32_t *t, fxv_u32 i)
 }
 
 #include "facet/fx.h"
-#include "../../src/port.h"
-#include "../../src/fx_body.h"
-#include "../../src/fx_fast_body.h"
+#include "../../src/core/port.h"
+#include "../../src/fx/fx_body.h"
+#include "../../src/fx/fx_fast_body.h"
 
 /* strips of vl = vsetvl(n - i) lanes, loaded and stored with that vl; a
  * uint64_t output lane is one element of the u64m2 result */
@@ -104,16 +104,16 @@ FXV_FAST_ fxv_u32 fxv_lut(const uint32_t *t, fxv_u32 i)
             fxr_store_##fx_type(out + i, body(FACET_EACH_INPUT(n, FXR_LOAD_)), vl);        \
         }                                                                                  \
     }
-/* Names generated here from src/kernels.def: the fast tier on lanes for
+/* Names generated here from src/core/kernels.def: the fast tier on lanes for
  * every fixed-point kernel */
 #define FACET_KERNEL(name, NAME, n, fx_type, ...) \
     FACET_IF_FX(fx_type, FXR_DEF(fxr_fast_batch_##name, fxf_fast_##name, n, fx_type))
-#include "../../src/kernels.def"
+#include "../../src/core/kernels.def"
 #undef FACET_KERNEL
 
 const facet_fx_port facet_fx_fast_port_rvv = {
     "rvv", 0,
 #define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type, .name = fxr_fast_batch_##name,)
-#include "../../src/kernels.def"
+#include "../../src/core/kernels.def"
 #undef FACET_KERNEL
 };

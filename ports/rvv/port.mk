@@ -2,7 +2,7 @@
 # targets (CC=riscv64-linux-gnu-gcc).  gcc 12 has no RVV intrinsics, so the
 # two port objects are compiled by RVV_CC (default clang, >= 14:
 # --target=riscv64-linux-gnu -march=rv64gcv) and linked with the rest; the
-# dispatcher asks AT_HWCAP (bit 'V') at run time (src/cpu.c).  Where RVV_CC
+# dispatcher asks AT_HWCAP (bit 'V') at run time (src/core/cpu.c).  Where RVV_CC
 # cannot compile <riscv_vector.h> the library is built without the port
 # (FACET_PORT_RVV unset); tests/suites/54-rvv.sh checks that it is there.
 # FACET_RVV_LMUL=2 (make RVV_LMUL=2) selects m2 vectors for the f32 port.
@@ -13,7 +13,7 @@ RVV_OK := $(shell printf '\043include <riscv_vector.h>\n' | $(RVV_CC) $(RVV_CCFL
 ifeq ($(RVV_OK),1)
 BASEFLAGS += -DFACET_PORT_RVV=1
 LIB_OBJ += $(BUILD)/ports/rvv/f32_rvv.o $(BUILD)/ports/rvv/fx_rvv.o
-$(BUILD)/ports/rvv/%.o: ports/rvv/%.c $(HEADERS) $(wildcard src/*.h)
+$(BUILD)/ports/rvv/%.o: ports/rvv/%.c $(HEADERS) $(SRC_HDRS)
 	@mkdir -p $(dir $@)
 	$(RVV_CC) $(RVV_CCFLAGS) $(BASEFLAGS) $(PICFLAGS) -c $< -o $@
 endif

@@ -1,14 +1,14 @@
 /* fw_main.c - a firmware image that shades with the fixed-point batch API
  * alone, built from `make fx-sources` the way the README's "Firmware builds"
  * says (arm-none-eabi-gcc -Os -ffunction-sections -fdata-sections,
- * -Wl,--gc-sections, newlib; tests/fx.mk: fx-firmware).  It runs on
+ * -Wl,--gc-sections, newlib; tests/fx/fx.mk: fx-firmware).  It runs on
  * qemu-system-arm (each batch result must equal the scalar kernel's: exit
  * status 0), tests/suites/50-fx-targets.sh fails if the image holds any f32,
  * dispatcher, CPU-detection or oracle symbol, a libm function or a float
  * helper, and its size is the README's firmware figure.
  * FW_TIER: 0 the same image without any facet call (the size baseline),
  * 1 facet_brdf_hammon_fx_batch, 2 facet_brdf_hammon_fx_fast_batch, 9 the
- * batch and the double oracle (src/oracle.c, libm): an image the symbol
+ * batch and the double oracle (src/oracle/oracle.c, libm): an image the symbol
  * check must reject. */
 #include <stdint.h>
 #include <facet/fx.h>

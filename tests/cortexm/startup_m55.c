@@ -1,5 +1,5 @@
 /* startup_m55.c - the start of the library's test images on qemu's
- * mps3-an547 (Cortex-M55, tests/helium.mk): tests/cortexm/startup.c's
+ * mps3-an547 (Cortex-M55, tests/ports/helium.mk): tests/cortexm/startup.c's
  * (vector table, FPU and MVE enabled through CPACR CP10/CP11, .bss zeroed,
  * semihosting I/O), plus what a hosted test's main expects: argc/argv
  * (argv[1] = FACET_M55_ARG when the build defines it: the accuracy test's

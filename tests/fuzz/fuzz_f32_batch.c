@@ -13,12 +13,12 @@
  *     the clamped inputs (values below 2^-100 compared absolutely; the
  *     flushing ports' larger floor does not apply on the x86 hosts this
  *     runs on, and a port that flushes denormals is judged as
- *     tests/test_f32_accuracy.c does). */
+ *     tests/f32/test_f32_accuracy.c does). */
 #include <float.h>
 #include <math.h>
 #include "facet.h"
 #include "fuzz_common.h"
-#include "../sample.h"
+#include "../lib/sample.h"
 
 #define MAX_N 80
 #define ERR_FLOOR 0x1p-100
@@ -27,7 +27,7 @@
 static int same(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
 
 /* each input's domain, from the list's domain classes: the one table the
- * tests share (tests/sample.h) */
+ * tests share (tests/lib/sample.h) */
 static float clamp_in(const facet_kernel *k, int i, float v)
 {
     float lo = smp_domain_lo(k, i), hi = smp_domain_hi(k, i);

@@ -9,7 +9,7 @@
  *     maximum;
  *   - clamping: a result equals the result at the clamped inputs;
  *   - monotonicity where the function is monotone (the list of
- *     tests/test_fx_accuracy.c): consecutive samples that differ in one
+ *     tests/fx/test_fx_accuracy.c): consecutive samples that differ in one
  *     such input are ordered. */
 #include "facet.h"
 #include "facet/fx.h"

@@ -1,3 +1,3 @@
 # The library and every test, built with the default compiler at -O2.
-. tests/suite_lib.sh
+. tests/lib/suite_lib.sh
 run_build_and_tests build gcc "${CC:-cc}" "-O2 -g"

@@ -1,7 +1,7 @@
 # The AVX2 and AVX-512 ports with their rcp/rsqrt estimates replaced by values off by the
 # architectural error bound (1.5 * 2^-12, 2^-14): the Newton steps must keep every
 # kernel inside its bound whatever a vendor's tables return.
-. tests/suite_lib.sh
+. tests/lib/suite_lib.sh
 case "$(${CC:-cc} -dumpmachine)" in
 x86_64*|i?86*)
     dir=build/worst-est

@@ -1,5 +1,5 @@
 # The same tests built with clang: warnings-clean and passing.
-. tests/suite_lib.sh
+. tests/lib/suite_lib.sh
 if command -v clang >/dev/null 2>&1; then
     run_build_and_tests build/clang clang clang "-O2 -g"
 else

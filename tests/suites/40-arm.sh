@@ -5,7 +5,7 @@
 # qemu-user; then the facet command's tests through qemu.  Skipped, with the
 # reason, where the cross compiler or qemu is missing (.ci/run installs them).
 # lane: emulators
-. tests/suite_lib.sh
+. tests/lib/suite_lib.sh
 for target in aarch64 armv7; do
     case $target in
     aarch64) cc=aarch64-linux-gnu-gcc qemu=qemu-aarch64 sysroot=/usr/aarch64-linux-gnu ;;
@@ -24,7 +24,7 @@ for target in aarch64 armv7; do
     dir=build/$target
     mkdir -p $dir
     bins=""
-    for t in tests/test_*.c bench/test_bench.c; do
+    for t in tests/*/test_*.c bench/test_bench.c; do
         [ -f "$t" ] && bins="$bins $dir/tests/$(basename "$t" .c)"
     done
     if ! $MAKE -s -j"$JOBS" BUILD=$dir CC=$cc CFLAGS="-O2 -g" lib $dir/facet $dir/facet-bench $bins > $dir/build.log 2>&1; then
@@ -40,5 +40,5 @@ for target in aarch64 armv7; do
         case $t in */test_f32_accuracy) level=2 ;; esac
         FACET_TEST_QUICK=$level run_one $target $qemu -L $sysroot "$t"
     done
-    FACET_EXEC="$qemu -L $sysroot" run_one $target sh tests/test_cli.sh $dir
+    FACET_EXEC="$qemu -L $sysroot" run_one $target sh tests/cli/test_cli.sh $dir
 done

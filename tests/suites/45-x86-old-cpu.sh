@@ -3,7 +3,7 @@
 # error, and nothing outside the AVX objects may execute an AVX instruction
 # (qemu would stop the test with SIGILL); the same for the bench's SIMD
 # loops and rasterizer paths.  Skipped off x86 or without qemu.
-. tests/suite_lib.sh
+. tests/lib/suite_lib.sh
 case "$(${CC:-cc} -dumpmachine)" in
 x86_64*) ;;
 *) echo "old-cpu: 0 passed, 0 failed, 0 skipped"; exit 0 ;;

@@ -18,7 +18,7 @@
 #                  calls the oracle; prints the image sizes
 # A missing toolchain or emulator skips its target with the reason.
 # lane: emulators
-. tests/suite_lib.sh
+. tests/lib/suite_lib.sh
 B=build/emu # its own tree: it runs beside the host suites (tests/check.sh)
 skip() { echo "SKIP $1: $2"; echo "$1: 0 passed, 0 failed, 1 skipped"; }
 have() { command -v "$1" > /dev/null 2>&1; }
@@ -27,20 +27,20 @@ mkdir -p $B
 
 # fw_bad ELF: the symbols of ELF that a firmware link of the fixed-point
 # sources must not hold: a global that a library source outside them
-# defines (src/*.c compiled for the host, names only: tests/fx.mk
-# fx-host-syms; src/fx_batch.c is libfacet's dispatched batch API, which
-# src/fx_only/fx_batch_scalar.c defines for firmware, with
+# defines (src/*.c compiled for the host, names only: tests/fx/fx.mk
+# fx-host-syms; src/fx/fx_batch.c is libfacet's dispatched batch API, which
+# src/fx/fx_firmware_batch.c defines for firmware, with
 # facet_fx_port_name), a libm function, a soft-float helper
 fw_bad() {
     arm-none-eabi-nm "$1" | awk '{ print $NF }' | sort -u > "$B/fx-fw.syms"
-    { awk -v ok="$($MAKE -s fx-sources) src/fx_batch.c" '
+    { awk -v ok="$($MAKE -s fx-sources) src/fx/fx_batch.c" '
           BEGIN { n = split(ok, a, " "); for (i = 1; i <= n; i++) allowed[a[i]] = 1 }
           !($1 in allowed) && $2 != "facet_fx_port_name" { print $2 }' "$B/fx/host-syms.txt"
       grep -E '^(__aeabi_([fd]|[ui]?[il]2[fd])|__(add|sub|mul|div)[sd]f3|__float|__fix|__extend|__trunc|__ieee754|(sqrt|pow|exp|expm1|log|log1p|sin|cos|tan|atan2|cbrt|hypot)f?$)' "$B/fx-fw.syms"
     } | sort -u | comm -12 - "$B/fx-fw.syms"
 }
 fw_check() {
-    if ! mk fx-host-syms || ! grep -q '^src/oracle.c facet_oracle_lambert$' "$B/fx/host-syms.txt"; then
+    if ! mk fx-host-syms || ! grep -q '^src/oracle/oracle.c facet_oracle_lambert$' "$B/fx/host-syms.txt"; then
         cat "$B/fx-fx-host-syms.build.log"; echo "ERROR fx-firmware: the host symbol list failed"; return
     fi
     p=0 f=0

@@ -1,6 +1,6 @@
 # The Helium port on a Cortex-M55: the library built with arm-none-eabi-gcc
 # for -mcpu=cortex-m55 (helium and scalar ports, MVE and the FPU), and the C
-# tests that exercise the ports linked as bare-metal images (tests/helium.mk)
+# tests that exercise the ports linked as bare-metal images (tests/ports/helium.mk)
 # run on qemu-system-arm -M mps3-an547 with semihosting:
 #   test_f32_ports     lanes, every tail, alignment, aliasing, symmetry, bad
 #                      input, on both f32 tiers of each port
@@ -13,7 +13,7 @@
 #   test_f32_rgb, test_fx_rgb  the RGB batches (every layout, tail, alias) and RGB fixed point
 # Skipped, with the reason, where the toolchain or qemu is missing.
 # lane: emulators
-. tests/suite_lib.sh
+. tests/lib/suite_lib.sh
 have() { command -v "$1" > /dev/null 2>&1; }
 if ! have arm-none-eabi-gcc; then
     echo "SKIP helium: arm-none-eabi-gcc missing (apt-get install gcc-arm-none-eabi libnewlib-arm-none-eabi)"

@@ -23,7 +23,7 @@
 # is missing (.ci/run installs them).  It runs in the host lane of
 # tests/check.sh, not beside 40-arm in the emulator lane: that lane is the
 # longer one (40-arm, 50, 52), and the host lane has the room.
-. tests/suite_lib.sh
+. tests/lib/suite_lib.sh
 have() { command -v "$1" > /dev/null 2>&1; }
 skip() {
     echo "SKIP rvv: $1"

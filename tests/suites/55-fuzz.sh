@@ -3,7 +3,7 @@
 # FACET_FUZZ_SECONDS (default 20) from its committed seed corpus; any
 # finding fails.  `make fuzz` runs them longer.  Skipped, with the reason,
 # where clang or its libFuzzer runtime is missing.
-. tests/suite_lib.sh
+. tests/lib/suite_lib.sh
 secs=${FACET_FUZZ_SECONDS:-20}
 dir=build/fuzz
 mkdir -p $dir

@@ -7,8 +7,8 @@
 # build/tests/test_bench, run by the compiler suites.  Timing figures are
 # not judged.  A quick report (below) replaces the bench part a full one
 # left, and loads in Chromium without a missing image or a script error
-# (tests/report_browser.sh; screenshot build/report-screenshot.png).
-. tests/suite_lib.sh
+# (tests/report/report_browser.sh; screenshot build/report-screenshot.png).
+. tests/lib/suite_lib.sh
 pass=0 fail=0
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAIL bench: $*"; }
@@ -127,7 +127,7 @@ fi
 # drew its titles from stack garbage), and whose image-space table has the
 # f32, fixed-point and model rows
 # It runs over the directory a full `make report` leaves: accuracy.md (the
-# part tests/report.sh writes; a fixture here) and report.md = accuracy.md +
+# part tests/report/report.sh writes; a fixture here) and report.md = accuracy.md +
 # that run's bench part.  A quick run used to append a second Benchmarks
 # section to index.html and to leave report.md as it was, unlabelled as
 # quick: now both are accuracy.md + this run's bench part, labelled.
@@ -148,7 +148,7 @@ n=$(grep -c '^<h1>Benchmarks (bench/)' $r/index.html)
 [ "$(grep -c '^<h1>facet report' $r/index.html)" -eq 1 ] && ok || bad "index.html lacks the accuracy part"
 cmp -s $r/report.md $r/report.md.full && bad "report.md not rewritten by the quick run" || ok
 # the accuracy part's head (title, machine) opens the report, its tables close it
-{ awk '/^## /{exit} {print}' $r/accuracy.md; cat $r/bench.md; printf '\n# Accuracy (tests/report.sh)\n\n'
+{ awk '/^## /{exit} {print}' $r/accuracy.md; cat $r/bench.md; printf '\n# Accuracy (tests/report/report.sh)\n\n'
   awk 'f || /^## /{f = 1; print}' $r/accuracy.md; } | cmp -s - $r/report.md && ok ||
     bad "report.md is not accuracy.md's head + this run's bench.md + accuracy.md's tables"
 # the page opens with the chooser: it comes before every other section
@@ -219,5 +219,5 @@ grep -qE '^\| lambert \| any \| 1\.000[0-9] \| 1\.000[0-9] \| 1\.000[0-9] \|' $r
     bad "white furnace: Lambert's albedo is not 1"
 grep -qE '^\| diffuse_hammon \| 0\.3 \| ' $r/bench.md && ok || bad "white furnace: no diffuse_hammon row"
 # the report in a browser: no missing image, no script error; screenshot
-run_one report-browser sh tests/report_browser.sh $r
+run_one report-browser sh tests/report/report_browser.sh $r
 echo "bench: $pass passed, $fail failed, 0 skipped"

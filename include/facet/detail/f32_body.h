@@ -84,7 +84,7 @@
  * keep_ord(r, a, b) (an unordered compare of two inputs and a mask) per two
  * inputs.  The kernel itself runs on the clamped inputs (NaN clamps to the
  * low end below), so nothing traps and no NaN reaches the result; the mask
- * then replaces it.  tests/test_f32_bad_input.c and tests/test_f32_ports.c
+ * then replaces it.  tests/f32/test_f32_bad_input.c and tests/f32/test_f32_ports.c
  * check it from the kernel list for every kernel, input position, NaN class
  * and port, so a kernel without it fails. */
 #define NAN0_(...) NAN0_SEL_(__VA_ARGS__, NAN0_8_, NAN0_7_, NAN0_6_, NAN0_5_, NAN0_4_, NAN0_3_, \
@@ -134,7 +134,7 @@ FACET_INLINE V_ X_SQRT_(V_ w) { return MUL_(w, RSQRT_(w)); }
  * polynomials.  Used by the exponential D terms and the GTR kernels here and
  * by the samplers (f32_sample_body.h).  Errors with the float coefficients
  * and exact arithmetic (fitted and checked in long double); the tests
- * (tests/test_sample_prims.c, tests/test_f32_accuracy.c) measure them with
+ * (tests/sample/test_sample_prims.c, tests/f32/test_f32_accuracy.c) measure them with
  * the roundings of each port.
  *
  * E(y) = (2^y - 1) / y (E(0) = ln 2), the relative form of 2^y - 1, for
@@ -548,7 +548,7 @@ FACET_INLINE V_ FACET_K(smith_vis_hammon)(V_ nol, V_ nov, V_ alpha)
 }
 
 /* ---- Smith G1 for GTR (Dimov) ----------------------------------------------
- * The closed forms at gamma = 0 .. 4 in N.V (derivation: src/oracle.c and
+ * The closed forms at gamma = 0 .. 4 in N.V (derivation: src/oracle/oracle.c and
  * facet.h), with s2 = 1 - n^2 = (1 - n)(1 + n) and W = sqrt(n^2 + alpha^2 s2)
  * (smith_g1's radicand), then the monotone cubic (Fritsch-Carlson) in gamma
  * through the five values.  The interpolation works on differences of the

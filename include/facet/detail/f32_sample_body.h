@@ -76,7 +76,7 @@ FACET_INLINE V_ S_SQRT0_(V_ x) { return MUL_(x, RSQRT_(MAX_(x, C_(7.88860905e-31
  * degree 3 and C of degree 4: interpolants at Chebyshev nodes (near
  * minimax) fitted in long double, coefficients rounded to float; with
  * those float coefficients and exact arithmetic the relative error is
- * below 3.6e-8 (S) and 9.5e-9 (C).  Tested: tests/test_sample_prims.c. */
+ * below 3.6e-8 (S) and 9.5e-9 (C).  Tested: tests/sample/test_sample_prims.c. */
 FACET_INLINE void FACET_K(sincos_2pi)(V_ *sin_out, V_ *cos_out, V_ u)
 {
     V_ x = S_U_(u);
@@ -205,7 +205,7 @@ FACET_INLINE V_ FACET_K(ggx_pdf_d_aniso)(V_ hx, V_ hy, V_ hz, V_ alpha_x, V_ alp
  * used for cos phi' < -1/2 only, the plain one elsewhere), with
  * (sin, cos)(phi'/2) = sincos_2pi(u2 / 2); then h = normalize(ax H.x, ay H.y,
  * H.z).  4 rsqrt and 2 rcp, against Heitz's 6 rsqrt; the distributions are
- * equal (derivation above; tests/test_sample_chi2.c checks this form and,
+ * equal (derivation above; tests/sample/test_sample_chi2.c checks this form and,
  * in double, Heitz's).
  * v: components clamped to [-1, 1] (NaN -> -1), v.z raised to 0 (below the
  * horizon: the view from the horizon at the same azimuth); only v's

@@ -1,0 +1,78 @@
+/* port.h - what a port gives the dispatcher (src/core/dispatch.c): a batch
+ * function per kernel and format.  Private to the library.
+ * Names generated here from src/core/kernels.def: the members of
+ * facet_f32_port and facet_fx_port. */
+#ifndef FACET_PORT_H
+#define FACET_PORT_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "kernel_list.h"
+
+#define FACET_F32_PARAM_(q) const float *x##q
+#define FACET_FX_PARAM_(q) const int32_t *x##q
+
+/* The streams of an RGB batch (src/f32/f32_rgb_batch_body.h): each a pointer and an
+ * element stride, 1 = planar, 3 = interleaved, 0 = one uniform value. */
+typedef struct facet_rgb_io {
+    float *out[3];
+    ptrdiff_t out_stride;
+    const float *alpha;
+    ptrdiff_t alpha_stride;
+    const float *f0[3], *albedo[3];
+    ptrdiff_t material_stride;
+} facet_rgb_io;
+
+/* f32: out[i] = facet_<name>_f32(x0[i], ...), any n, out may be an input */
+typedef struct facet_f32_port {
+    const char *name;
+    int lanes;
+#define FACET_KERNEL(name, NAME, n, fx_type, ...) \
+    void (*name)(float *out, FACET_EACH_INPUT(n, FACET_F32_PARAM_), size_t count);
+#include "kernels.def"
+#undef FACET_KERNEL
+    /* brdf_hammon with RGB f0 and albedo, the geometry once per sample */
+    void (*brdf_hammon_rgb)(const facet_rgb_io *io, const float *nol, const float *nov,
+                            const float *lov, size_t count);
+} facet_f32_port;
+
+/* fx: bit-identical to the scalar specification (src/fx/fx_kernels.c).  A
+ * NULL member means the port has no code of its own for that kernel (none
+ * measured faster than the scalar loop): the dispatcher runs the scalar
+ * port's loop.  One member per fixed-point kernel in both tiers' tables; a
+ * kernel with the fast tier only (kernels.def fx_code fast) is NULL in
+ * every precise table (no facet_<name>_fx_batch calls it). */
+typedef struct facet_fx_port {
+    const char *name;
+    int lanes;
+#define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type, \
+    void (*name)(fx_type *out, FACET_EACH_INPUT(n, FACET_FX_PARAM_), size_t count);)
+#include "kernels.def"
+#undef FACET_KERNEL
+} facet_fx_port;
+
+/* f32 ports, one table per tier: src/f32/f32_batch_scalar.c, ports/<isa>/f32_<isa>.c */
+extern const facet_f32_port facet_port_scalar_f32, facet_port_scalar_f32_fast;
+extern const facet_f32_port facet_port_sse2_f32, facet_port_sse2_f32_fast;
+extern const facet_f32_port facet_port_avx2_f32, facet_port_avx2_f32_fast;
+extern const facet_f32_port facet_port_avx512_f32, facet_port_avx512_f32_fast;
+extern const facet_f32_port facet_port_neon_f32, facet_port_neon_f32_fast;
+extern const facet_f32_port facet_port_helium_f32, facet_port_helium_f32_fast;
+extern const facet_f32_port facet_port_rvv_f32, facet_port_rvv_f32_fast;
+/* the rvv port's lanes, VLMAX (run time: the port is vector-length agnostic) */
+int facet_rvv_lanes(void);
+/* fx ports, one table per tier: src/fx/fx_kernels.c and src/fx/fx_fast.c (every
+ * kernel, the scalar loops), ports/<isa>/fx_<isa>.c */
+extern const facet_fx_port facet_fx_port_scalar, facet_fx_fast_port_scalar;
+extern const facet_fx_port facet_fx_port_avx2, facet_fx_fast_port_avx2;
+extern const facet_fx_port facet_fx_port_neon, facet_fx_fast_port_neon;
+extern const facet_fx_port facet_fx_port_helium, facet_fx_fast_port_helium;
+extern const facet_fx_port facet_fx_fast_port_rvv; /* fx_fast only */
+
+
+/* the fx port of the active port for a tier (0: fx, 1: fx_fast), never
+ * NULL: src/core/dispatch.c (a build without the dispatcher, firmware, has no
+ * port table at all: src/fx/fx_firmware_batch.c) */
+const facet_fx_port *facet_fx_active_port(int fast);
+
+#endif

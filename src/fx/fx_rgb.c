@@ -1,0 +1,52 @@
+/* fx_rgb.c - the fixed-point RGB batches of brdf_hammon, both tiers
+ * (facet/fx.h): the scalar loop over facet_brdf_hammon_rgb_fx[_fast], which
+ * share the geometry across channels (src/fx/fx_kernels.c, src/fx/fx_fast_body.h)
+ * and give each channel the per-channel kernel's bits.  brdf_hammon runs the
+ * scalar loop on every port (kernels.def: fx_code scalar), so these are the
+ * same on every port; part of the firmware sources (make fx-sources). */
+#include <stddef.h>
+#include "facet/fx.h"
+
+#define RGB_FX_(tier)                                                                          \
+    void facet_brdf_hammon_rgb_##tier##_batch(uint64_t *const out[3], const int32_t *nol,       \
+                                              const int32_t *nov, const int32_t *lov,           \
+                                              const int32_t *alpha, const int32_t *const f0[3], \
+                                              const int32_t *const albedo[3], size_t n)         \
+    {                                                                                           \
+        size_t i;                                                                               \
+        for (i = 0; i < n; i++) {                                                               \
+            int32_t f[3], a[3];                                                                 \
+            uint64_t o[3];                                                                      \
+            int c;                                                                              \
+            for (c = 0; c < 3; c++) {                                                           \
+                f[c] = f0[c][i];                                                                \
+                a[c] = albedo[c][i];                                                            \
+            }                                                                                   \
+            facet_brdf_hammon_rgb_##tier(o, nol[i], nov[i], lov[i], alpha[i], f, a);            \
+            for (c = 0; c < 3; c++)                                                             \
+                out[c][i] = o[c];                                                               \
+        }                                                                                       \
+    }                                                                                           \
+    void facet_brdf_hammon_rgb_##tier##_batch_interleaved(uint64_t *out, const int32_t *nol,    \
+                                                          const int32_t *nov,                   \
+                                                          const int32_t *lov,                   \
+                                                          const int32_t *alpha,                 \
+                                                          const int32_t *f0,                    \
+                                                          const int32_t *albedo, size_t n)      \
+    {                                                                                           \
+        size_t i;                                                                               \
+        for (i = 0; i < n; i++) {                                                               \
+            int32_t f[3], a[3];                                                                 \
+            uint64_t o[3];                                                                      \
+            int c;                                                                              \
+            for (c = 0; c < 3; c++) {                                                           \
+                f[c] = f0[3 * i + c];                                                           \
+                a[c] = albedo[3 * i + c];                                                       \
+            }                                                                                   \
+            facet_brdf_hammon_rgb_##tier(o, nol[i], nov[i], lov[i], alpha[i], f, a);            \
+            for (c = 0; c < 3; c++)                                                             \
+                out[3 * i + c] = o[c];                                                          \
+        }                                                                                       \
+    }
+RGB_FX_(fx)
+RGB_FX_(fx_fast)
