@@ -43,7 +43,7 @@ TEST_SRC := $(wildcard tests/*/test_*.c)
 TEST_BIN := $(addprefix $(BUILD)/tests/,$(notdir $(TEST_SRC:.c=)))
 TEST_DIRS := $(sort $(dir $(wildcard tests/*/*.c)))
 vpath %.c $(TEST_DIRS)
-HEADERS  := $(wildcard include/*.h include/facet/*.h include/facet/detail/*.h) src/core/kernels.def src/core/sample_kernels.def
+HEADERS  := $(wildcard include/*.h include/facet/*.h include/facet/detail/*.h src/core/*.def)
 SRC_HDRS := $(wildcard src/*/*.h)
 # The fixed-point kernels on their own (firmware): the kernels of both tiers,
 # their batch API as plain loops (no port table, no dispatcher: with
