@@ -53,9 +53,13 @@ FX_SOURCES := src/fx/fx_prims.c src/fx/fx_kernels.c src/fx/fx_fast.c src/fx/fx_t
               src/fx/fx_firmware_batch.c
 
 # Parts add their own rules here (ports/<isa>/port.mk, tests/*/*.mk, bench/*.mk);
-# they may append to LIB_OBJ, CLI_OBJ, TEST_BIN and EXTRA_TESTS.
+# they may append to LIB_OBJ, CLI_OBJ, TEST_BIN and EXTRA_TESTS.  The ports
+# first: each adds its name to FACET_PORTS (and its ISA flags,
+# PORT_FLAGS_<name>), which the others read.
 EXTRA_TESTS :=
--include $(sort $(wildcard ports/*/port.mk tests/*/*.mk bench/*.mk))
+FACET_PORTS :=
+-include $(sort $(wildcard ports/*/port.mk))
+-include $(sort $(wildcard tests/*/*.mk bench/*.mk))
 
 .PHONY: all lib tests check report install uninstall clean fx-sources
 all: lib $(BUILD)/facet

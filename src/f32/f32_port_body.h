@@ -33,6 +33,7 @@
  * alignment takes the same code.  All of a block's inputs are loaded
  * before its outputs are stored: an output may be the very same array as
  * an input. */
+#include "../core/platform.h"
 #include "../core/port.h"
 #include "../core/sample_port.h"
 
@@ -41,6 +42,14 @@
 #define BATCH_CAT_(a, b, c) a##b##c
 #define BATCH_CAT(a, b, c) BATCH_CAT_(a, b, c)
 #define BATCH_OP(op) BATCH_CAT(facet_, BATCH_PORT, _##op)
+
+/* the port is a line of src/core/ports.def whose guard holds on this
+ * target (else the dispatcher would never run these tables): an undeclared
+ * batch_listed_<port> below says it is not */
+#define FACET_PORT(name, guard, ...) FACET_PORT_IF(guard, enum { batch_listed_##name = 1 };)
+#include "../core/ports.def"
+#undef FACET_PORT
+typedef char BATCH_CAT(batch_listed_, BATCH_PORT, _check_)[BATCH_CAT(batch_listed_, BATCH_PORT, )];
 
 #ifndef BATCH_STEP
 #define BATCH_STEP BATCH_W
