@@ -8,4 +8,7 @@
 #define BATCH_W 8
 #define BATCH_LOAD(p) _mm256_loadu_ps(p)
 #define BATCH_STORE(p, v) _mm256_storeu_ps((p), (v))
+/* the tail by masked loads and stores (facet/avx2.h), no staged copy */
+#define BATCH_LOAD_N(p, r) facet_avx2_load_n((p), (r))
+#define BATCH_STORE_N(p, v, r) facet_avx2_store_n((p), (v), (r))
 #include "../../src/f32/f32_port_body.h"

@@ -11,6 +11,26 @@
 #define BATCH_LOAD_AT_(q) BATCH_LOAD(x##q + i)
 #define BATCH_LOAD_N_AT_(q) BATCH_LOAD_N(x##q + i, count - i)
 
+/* the tail of kernel `name` (n inputs) at i < count: through the port's
+ * partial loads and stores, or staged: every input copied with the pad in
+ * one loop (one compare per lane for all inputs, not one per input) */
+#ifdef BATCH_STAGED
+#define BATCH_PAD_COPY_(q) pad_[q][j] = j < r ? x##q[i + j] : BATCH_PAD
+#define BATCH_PAD_LOAD_(q) BATCH_LOAD(pad_[q])
+#define BATCH_TAIL_(name, n)                                                       \
+    {                                                                              \
+        float pad_[n][BATCH_W];                                                    \
+        size_t j, r = count - i;                                                   \
+        for (j = 0; j < BATCH_W; j++) {                                            \
+            FACET_EACH_INPUT(n, BATCH_PAD_COPY_);                                  \
+        }                                                                          \
+        BATCH_STORE_N(out + i, BATCH_KERNEL(name)(FACET_EACH_INPUT(n, BATCH_PAD_LOAD_)), r); \
+    }
+#else
+#define BATCH_TAIL_(name, n) \
+    BATCH_STORE_N(out + i, BATCH_KERNEL(name)(FACET_EACH_INPUT(n, BATCH_LOAD_N_AT_)), count - i);
+#endif
+
 /* whole vectors, then the tail */
 #define FACET_KERNEL(name, NAME, n, ...)                                                    \
     static void BATCH_FN(name)(float *out, FACET_EACH_INPUT(n, BATCH_PARAM_), size_t count) \
@@ -20,7 +40,7 @@
         for (; i + w_ <= count; i += w_)                                                    \
             BATCH_STORE(out + i, BATCH_KERNEL(name)(FACET_EACH_INPUT(n, BATCH_LOAD_AT_)));  \
         if (i < count)                                                                      \
-            BATCH_STORE_N(out + i, BATCH_KERNEL(name)(FACET_EACH_INPUT(n, BATCH_LOAD_N_AT_)), count - i); \
+            BATCH_TAIL_(name, n)                                                            \
     }
 #include "../core/kernels.def"
 #undef FACET_KERNEL
@@ -38,3 +58,4 @@ const facet_f32_port BATCH_CAT(facet_port_, BATCH_PORT, BATCH_CAT(_, BATCH_TIER,
 
 #undef BATCH_FN
 #undef BATCH_KERNEL
+#undef BATCH_TAIL_

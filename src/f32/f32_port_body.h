@@ -19,9 +19,10 @@
  *   BATCH_LOAD_N(p, r), BATCH_STORE_N(p, v, r)   the tail: the first
  *                           r < BATCH_STEP floats, nothing read or written
  *                           past p + r; the other lanes may hold any value
- *                           (their results are dropped).  Default: the
- *                           header's facet_<port>_load_n / _store_n (a
- *                           staged copy, a mask, a predicate)
+ *                           (their results are dropped).  Default: a copy
+ *                           staged through a BATCH_W-float buffer; a port
+ *                           with masked or predicated loads names its own
+ *                           (e.g. facet_<port>_load_n)
  *   BATCH_SET(x)            x in every lane (default facet_<port>_set)
  *   BATCH_LOAD_S(p, s, i, r), BATCH_STORE_S(p, s, i, r, v)   r <= BATCH_STEP
  *                           elements from element i of a stream of element
@@ -57,10 +58,6 @@ typedef char BATCH_CAT(batch_listed_, BATCH_PORT, _check_)[BATCH_CAT(batch_liste
 #ifndef BATCH_LANES_FN
 #define BATCH_LANES_FN NULL
 #endif
-#ifndef BATCH_LOAD_N
-#define BATCH_LOAD_N(p, r) BATCH_OP(load_n)((p), (r))
-#define BATCH_STORE_N(p, v, r) BATCH_OP(store_n)((p), (v), (r))
-#endif
 #ifndef BATCH_SET
 #define BATCH_SET(x) BATCH_OP(set)(x)
 #endif
@@ -68,6 +65,31 @@ typedef char BATCH_CAT(batch_listed_, BATCH_PORT, _check_)[BATCH_CAT(batch_liste
 /* pad value of the staged copies: any value works (kernels clamp), 0.5 is
  * inside every domain */
 #define BATCH_PAD 0.5f
+
+#ifndef BATCH_LOAD_N
+/* the staged tail: the r floats and the pad through a BATCH_W-float buffer
+ * (the kernels' batches stage all their inputs in one loop instead:
+ * BATCH_STAGED, src/f32/f32_batch_body.h) */
+#define BATCH_STAGED 1
+FACET_INLINE BATCH_V batch_load_n_(const float *p, size_t r)
+{
+    float t[BATCH_W];
+    size_t j;
+    for (j = 0; j < BATCH_W; j++)
+        t[j] = j < r ? p[j] : BATCH_PAD;
+    return BATCH_LOAD(t);
+}
+FACET_INLINE void batch_store_n_(float *p, BATCH_V v, size_t r)
+{
+    float t[BATCH_W];
+    size_t j;
+    BATCH_STORE(t, v);
+    for (j = 0; j < r; j++)
+        p[j] = t[j];
+}
+#define BATCH_LOAD_N(p, r) batch_load_n_((p), (r))
+#define BATCH_STORE_N(p, v, r) batch_store_n_((p), (v), (r))
+#endif
 
 #ifndef BATCH_LOAD_S
 /* r elements of stream p (element stride s) from element i */
