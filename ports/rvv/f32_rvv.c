@@ -7,8 +7,9 @@
  * Built with clang (RVV_CC, ports/rvv/port.mk). */
 #include "facet/rvv.h"
 
-/* the lanes of one vector (VLMAX): facet_port_at's "lanes" */
-int facet_rvv_lanes(void) { return (int)facet_rvv_vlmax(); }
+/* the lanes of one vector (VLMAX): facet_port_at's "lanes" (the tables'
+ * lanes_fn, asked only where the CPU has V: vsetvli traps elsewhere) */
+static int facet_rvv_lanes(void) { return (int)facet_rvv_vlmax(); }
 
 /* a stream of element stride s (1 planar, 3 interleaved: the RGB batch),
  * r elements from element i: unit stride by vle32 / vse32, others by the

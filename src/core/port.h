@@ -67,9 +67,6 @@ typedef struct facet_fx_port {
     extern const facet_fx_port facet_fx_port_##fx, facet_fx_fast_port_##fx_fast;
 #include "ports.def"
 #undef FACET_PORT
-/* the rvv port's lanes, VLMAX (run time: the port is vector-length
- * agnostic; its tables' lanes_fn) */
-int facet_rvv_lanes(void);
 
 /* the fx port of the active port for a tier (0: fx, 1: fx_fast), never
  * NULL: src/core/dispatch.c (a build without the dispatcher, firmware, has no
