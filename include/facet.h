@@ -597,7 +597,9 @@ float facet_lambert_f32(float albedo);
  * other overlap (out shifted against an input gives results that depend on
  * the port's vector width).  Runs on
  * the best port for this CPU, chosen once and thread-safely on first use:
- * avx512 > avx2 > sse2 on x86, neon on ARM, else scalar.  Every port meets the
+ * avx512 > avx2 > sse2 on x86, neon on aarch64 / armv7 Linux, helium on
+ * Armv8.1-M with MVE floating point, rvv on riscv64 Linux with V, else
+ * scalar (facet_port_at lists them).  Every port meets the
  * bounds above (tests/f32/test_f32_accuracy.c runs each kernel on each port);
  * results may differ between ports by rounding, within those bounds. */
 void facet_noh_from_dots_f32_batch(float *out, const float *nol, const float *nov,
@@ -881,7 +883,8 @@ void facet_brdf_hammon_f32_fast_batch(float *out, const float *nol, const float 
 void facet_lambert_f32_fast_batch(float *out, const float *albedo, size_t n);
 
 /* Ports.  facet_set_port(name) forces one for all batch calls in the process:
- * "scalar", "sse2", "avx2", "avx512", "neon", or "auto" (the automatic choice).  Returns
+ * "scalar", "sse2", "avx2", "avx512", "neon", "helium", "rvv", or "auto"
+ * (the automatic choice).  Returns
  * 0 on success, 1 for a name not compiled into this build, 2 for a port this
  * CPU cannot run (the active port is then unchanged).  The environment
  * variable FACET_PORT names the initial choice the same way; an unknown or
