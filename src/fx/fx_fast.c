@@ -11,10 +11,10 @@
  * every kernel with a fixed-point version. */
 #define PARAM_(q) int32_t x##q
 #define ARG_(q) x##q
-#define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type,           \
-    fx_type facet_##name##_fx_fast(FACET_EACH_INPUT(n, PARAM_))                  \
-    {                                                                            \
-        return (fx_type)fxq_##name(FACET_EACH_INPUT(n, ARG_));              \
+#define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type, \
+    fx_type facet_##name##_fx_fast(FACET_EACH_INPUT(n, PARAM_))        \
+    {                                                                  \
+        return (fx_type)fxq_##name(FACET_EACH_INPUT(n, ARG_));         \
     })
 #include "../core/kernels.def"
 #undef FACET_KERNEL

@@ -27,7 +27,7 @@
 #ifndef FACET_FX_FAST_BODY_H
 #define FACET_FX_FAST_BODY_H
 
-#include "fx_body.h" /* the exact kernels both tiers share */
+#include "fx_body.h" /* the exact kernels and the formulas' constants both tiers share */
 
 /* the bodies are meant to be one straight-line sequence per kernel */
 #if defined(__GNUC__)
@@ -222,7 +222,6 @@ FXQ_INLINE fxv_u32 fxq_fresnel_schlick(fxv_i32 f0_in, fxv_i32 cos_in)
  * exact [<= 2^60, >= a^2 2^60 >= 2^40]; its top 32 bits dt (fxq_top, d =
  * dt 2^-(28 + e)); pi d^2 = pd 2^-(22 + 2e), pd = hi(hi(dt, dt), pi 2^30)
  * [>= 2^29.6]; D 2^13 = A^2 / pd 2^(5 + 2e), one fxq_div. */
-#define FXQ_PI_30 3373259426u /* round(pi 2^30) */
 
 FXQ_INLINE fxv_u32 fxq_ggx_d(fxv_i32 noh, fxv_i32 alpha)
 {
@@ -231,7 +230,7 @@ FXQ_INLINE fxv_u32 fxq_ggx_d(fxv_i32 noh, fxv_i32 alpha)
                                      fxv_k32(1u << 30)),
                             fxv_mulw(na, na));
     fxv_u32 dt = fxq_top(d60, &e);
-    fxv_u32 pd = fxq_mulhi(fxq_mulhi(dt, dt), fxv_k32(FXQ_PI_30));
+    fxv_u32 pd = fxq_mulhi(fxq_mulhi(dt, dt), fxv_k32(FXB_PI_M));
     return fxq_divb(fxv_mul32(a, a), pd, fxv_sub32(fxv_k32(90), fxv_shl(e, 1)), FACET_FX_MAX_D);
 }
 
@@ -284,7 +283,7 @@ FXQ_INLINE fxv_u32 fxq_ggx_aniso_d(fxv_i32 noh, fxv_i32 toh, fxv_i32 boh, fxv_i3
     /* K < floor: hi below, or hi equal and lo below */
     m = fxv_or(fxv_lt(kh, fh), fxv_and(fxv_not(fxv_lt(fh, kh)), fxv_lt(kl, fl)));
     kt = fxq_norm_hl(fxv_sel(m, fh, kh), fxv_sel(m, fl, kl), &ek);
-    pd = fxq_mulhi(fxq_mulhi(kt, kt), fxv_k32(FXQ_PI_30));
+    pd = fxq_mulhi(fxq_mulhi(kt, kt), fxv_k32(FXB_PI_M));
     kp = fxv_clz(p);
     pn = fxv_shlv(p, kp);
     p3 = fxq_mulhi(fxq_mulhi(pn, pn), pn);
@@ -412,7 +411,7 @@ FXQ_INLINE fxv_u32 fxq_gtr_d(fxv_i32 noh, fxv_i32 alpha, fxv_i32 gamma)
     tn = fxq_top(fxv_mulw(nM, dL), &en);
     td = fxq_top(fxv_mulw(dM, nL), &ed);
     nn = fxq_mulhi(fxq_exp2f30(fxv_shl(z, 8)), tn);
-    dd = fxq_mulhi(td, fxv_k32(FXQ_PI_30));
+    dd = fxq_mulhi(td, fxv_k32(FXB_PI_M));
     return fxq_divb(nn, dd, fxv_sub32(fxv_add32(fxv_k32(146), en), fxv_add32(fxv_shr(z, 24), ed)), FACET_FX_MAX_D);
 }
 
@@ -823,10 +822,6 @@ FXQ_INLINE fxv_u32 fxq_g_kelemen(fxv_i32 nol, fxv_i32 nov, fxv_i32 voh)
  *   64 bits [c Q29, c^2 Q29 = hi(4 c, 2 c) <= 2.56 2^29, constants Q30:
  *   each sum < 2^63], their top words, one fxq_div: G1 Q15 =
  *   nt / dt 2^(15 + ed - en), saturated at 1. */
-#define FXQ_WALTER_A 3795677348u /* round(3.535 2^30) */
-#define FXQ_WALTER_B 2341830918u /* round(2.181 2^30) */
-#define FXQ_WALTER_C 2443836391u /* round(2.276 2^30) */
-#define FXQ_WALTER_D 2767032680u /* round(2.577 2^30) */
 FXQ_INLINE fxv_u32 fxq_smith_g1_beckmann(fxv_i32 nov, fxv_i32 alpha)
 {
     fxv_u32 n = fxv_unit(nov), a = fxv_alpha(alpha);
@@ -838,9 +833,9 @@ FXQ_INLINE fxv_u32 fxq_smith_g1_beckmann(fxv_i32 nov, fxv_i32 alpha)
     fxv_u32 c = fxq_divb(n, pm, fxv_sub32(fxv_k32(50), rh), 858993459u); /* 1.6 2^29 */
     fxv_u32 cc = fxq_mulhi(fxv_shl(c, 2), fxv_shl(c, 1));
     fxv_u32 en, ed, nt, dt, g;
-    nt = fxq_top(fxv_add64(fxv_mulw(c, fxv_k32(FXQ_WALTER_A)), fxv_mulw(cc, fxv_k32(FXQ_WALTER_B))), &en);
-    dt = fxq_top(fxv_add64(fxv_add64(fxv_mulw(fxv_k32(1u << 29), fxv_k32(1u << 30)), fxv_mulw(c, fxv_k32(FXQ_WALTER_C))),
-                           fxv_mulw(cc, fxv_k32(FXQ_WALTER_D))), &ed);
+    nt = fxq_top(fxv_add64(fxv_mulw(c, fxv_k32(FXB_WALTER_A)), fxv_mulw(cc, fxv_k32(FXB_WALTER_B))), &en);
+    dt = fxq_top(fxv_add64(fxv_add64(fxv_mulw(fxv_k32(1u << 29), fxv_k32(1u << 30)), fxv_mulw(c, fxv_k32(FXB_WALTER_C))),
+                           fxv_mulw(cc, fxv_k32(FXB_WALTER_D))), &ed);
     g = fxq_divb(nt, dt, fxv_sub32(fxv_add32(fxv_k32(80), en), ed), FACET_FX_ONE);
     return fxv_sel(branch, g, fxv_k32(FACET_FX_ONE));
 }
@@ -849,11 +844,10 @@ FXQ_INLINE fxv_u32 fxq_smith_g1_beckmann(fxv_i32 nov, fxv_i32 alpha)
  * 2^32)) [<= 0.8 2^31]; den Q46 = N (2^31 - k) + k 2^15 exact in 64 bits
  * [< 2^47, >= k 2^15 >= 2^36], its top word dt (den ~ dt 2^(32 - e)); G1
  * Q15 = N 2^46 / den = N / dt 2^(14 + e). */
-#define FXQ_SQRT_2_PI 3426888095u /* round(sqrt(2/pi) 2^32) */
 FXQ_INLINE fxv_u32 fxq_smith_g1_schlick_beckmann(fxv_i32 nov, fxv_i32 alpha)
 {
     fxv_u32 n = fxv_unit(nov), e;
-    fxv_u32 k = fxq_mulhi(fxv_shl(fxv_alpha(alpha), 16), fxv_k32(FXQ_SQRT_2_PI));
+    fxv_u32 k = fxq_mulhi(fxv_shl(fxv_alpha(alpha), 16), fxv_k32(FXB_SQRT_2_PI_32));
     fxv_u32 dt = fxq_top(fxv_add64(fxv_mulw(n, fxv_sub32(fxv_k32(1u << 31), k)), fxv_mulw(k, fxv_k32(1u << 15))), &e);
     return fxq_divb(n, dt, fxv_sub32(fxv_k32(81), e), FACET_FX_ONE);
 }
@@ -874,13 +868,6 @@ FXQ_INLINE fxv_u32 fxq_smith_vis_joint_approx(fxv_i32 nol, fxv_i32 nov, fxv_i32 
  *   >= K1 a >= 2^21: truncations <= 2^-19 relative];
  *   den Q45 = NV R(NL) + NL R(NV) in 64 bits [< 2^48, >= 2^29], its top
  *   word dt: Vis 2^16 = 2^61 / den45 = 2^31 / dt 2^(e - 2). */
-#define FXQ_VFIT_K1 2215746816u /* the float constants of facet/detail/vis_fit.h, exact in Q30 */
-#define FXQ_VFIT_K2 648049856u
-#define FXQ_VFIT_K3 2104759296u
-#define FXQ_VFIT_K4 1724301312u
-#define FXQ_VFIT_K5 1380932736u
-#define FXQ_VFIT_C1 82209328u
-#define FXQ_VFIT_C2 779814784u /* |C2| (C2 < 0) */
 FXQ_INLINE fxv_u32 fxq_by_q15(fxv_u32 v, fxv_u32 y16) { return fxv_shl(fxq_mulhi(v, y16), 1); }
 
 FXQ_INLINE fxv_u32 fxq_vis_fit_r(fxv_u32 x, fxv_u32 ka1, fxv_u32 ka2, fxv_u32 ka4, fxv_u32 s3, fxv_u32 s5)
@@ -892,12 +879,12 @@ FXQ_INLINE fxv_u32 fxq_vis_fit_r(fxv_u32 x, fxv_u32 ka1, fxv_u32 ka2, fxv_u32 ka
 FXQ_INLINE fxv_u32 fxq_smith_vis_fit(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
 {
     fxv_u32 nl = fxv_cosine(nol), nv = fxv_cosine(nov), a16 = fxv_shl(fxv_alpha(alpha), 16), e;
-    fxv_u32 c2a = fxq_by_q15(fxv_k32(FXQ_VFIT_C2), a16);
-    fxv_u32 sg = fxv_sub32(fxv_add32(fxv_k32(1u << 30), fxq_by_q15(fxv_k32(FXQ_VFIT_C1), a16)), fxq_by_q15(c2a, a16));
-    fxv_u32 ka1 = fxq_by_q15(fxv_k32(FXQ_VFIT_K1), a16), ka2 = fxq_by_q15(fxv_k32(FXQ_VFIT_K2), a16);
-    fxv_u32 ka4 = fxq_by_q15(fxv_k32(FXQ_VFIT_K4), a16);
-    fxv_u32 s3 = fxq_mulhi(fxv_k32(2 * FXQ_VFIT_K3), fxv_shl(sg, 1));
-    fxv_u32 s5 = fxq_mulhi(fxv_k32(2 * FXQ_VFIT_K5), fxv_shl(sg, 1));
+    fxv_u32 c2a = fxq_by_q15(fxv_k32(FXB_VFIT_C2), a16);
+    fxv_u32 sg = fxv_sub32(fxv_add32(fxv_k32(1u << 30), fxq_by_q15(fxv_k32(FXB_VFIT_C1), a16)), fxq_by_q15(c2a, a16));
+    fxv_u32 ka1 = fxq_by_q15(fxv_k32(FXB_VFIT_K1), a16), ka2 = fxq_by_q15(fxv_k32(FXB_VFIT_K2), a16);
+    fxv_u32 ka4 = fxq_by_q15(fxv_k32(FXB_VFIT_K4), a16);
+    fxv_u32 s3 = fxq_mulhi(fxv_k32(2 * FXB_VFIT_K3), fxv_shl(sg, 1));
+    fxv_u32 s5 = fxq_mulhi(fxv_k32(2 * FXB_VFIT_K5), fxv_shl(sg, 1));
     fxv_u32 rl = fxq_vis_fit_r(nl, ka1, ka2, ka4, s3, s5), rv = fxq_vis_fit_r(nv, ka1, ka2, ka4, s3, s5);
     fxv_u32 dt = fxq_top(fxv_add64(fxv_mulw(nv, rl), fxv_mulw(nl, rv)), &e);
     return fxq_divb(fxv_k32(1u << 31), dt, fxv_sub32(fxv_k32(97), e), FACET_FX_MAX_VIS);

@@ -100,10 +100,12 @@ FXV_INLINE fxv_u64 fxv_shrv64(fxv_u64 a, fxv_u32 n) { return fxp_shr64(a, (int)n
 FXV_INLINE fxv_u64 fxv_shlv64(fxv_u64 a, fxv_u32 n) { return fxp_shl64(a, (int)n); }
 FXV_INLINE fxv_u64 fxv_and64(fxv_u64 a, uint64_t c) { return a & c; }
 FXV_INLINE fxv_u32 fxv_lt64(fxv_u64 a, fxv_u64 b) { return a < b ? 0xFFFFFFFFu : 0u; }
+/* by words (a 64-bit mask m 0x100000001 is a multiply on Thumb-1) */
 FXV_INLINE fxv_u64 fxv_sel64(fxv_u32 m, fxv_u64 a, fxv_u64 b)
 {
-    uint64_t w = 0 - (uint64_t)(m & 1u); /* the mask on 64 bits (not m 0x100000001: a multiply on Thumb-1) */
-    return (a & w) | (b & ~w);
+    uint32_t lo = ((uint32_t)a & m) | ((uint32_t)b & ~m);
+    uint32_t hi = ((uint32_t)(a >> 32) & m) | ((uint32_t)(b >> 32) & ~m);
+    return ((uint64_t)hi << 32) | lo;
 }
 FXV_INLINE fxv_u32 fxv_div64(fxv_u32 u1, fxv_u32 u0, fxv_u32 d, fxv_u32 *r) { return fxp_div64(u1, u0, d, r); }
 FXV_INLINE fxv_u32 fxv_isqrt64(fxv_u64 x, fxv_u64 *rem) { return facet_fx_isqrt64_rem(x, rem); }
