@@ -52,15 +52,21 @@
  * square root, the exact 2-by-1 division of Moller-Granlund.  Every
  * quotient is exact, so a core with a divide instruction may compute it
  * with that instead (Cortex-M3/M4/M7/M33: two 32-bit UDIV digits; 64-bit
- * hosts: the native division) with the same bits (src/fx/fx_prims.h fx_div64).
+ * hosts: the native division) with the same bits (src/fx/fx_prims.h fxp_div64).
  *
  * Each kernel's contract (formula, output format and maximum, error, cost)
  * is beside its declaration below; the error is the FACET_FX_ERR_* bound,
  * enforced by tests/fx/test_fx_accuracy.c.  The intermediates and the overflow
- * argument of each step are beside its code (src/fx/fx_kernels.c,
- * src/fx/fx_body.h).  Cost: operations of the scalar specification (mul =
+ * argument of each step are beside its code (src/fx/fx_body.h, every
+ * kernel written once over lanes, branch-free; its pseudo-float
+ * src/fx/fx_pfloat.h).  Cost: operations of the scalar specification (mul =
  * 32x32->32, mul64 = 32x32->64, division = one exact 64/32 quotient, sqrt
- * = one exact integer root, fxf = one 32-bit-mantissa float step).
+ * = one exact integer root, fxe = one 32-bit-mantissa float step).  The
+ * bodies do not branch on their inputs (the exact division and root keep
+ * their fix-up steps, and a compiler may turn a select into a branch):
+ * over 48 inputs of every class a call's executed instructions vary by at
+ * most 1.37x on Cortex-M4, 1.33x on Cortex-M0, but loh_from_dots (the
+ * root of 0 at L.V = -1 returns early).
  */
 #ifndef FACET_FX_H
 #define FACET_FX_H
@@ -116,12 +122,11 @@ int32_t facet_noh_from_dots_fx(int32_t nol, int32_t nov, int32_t lov);
 int32_t facet_loh_from_dots_fx(int32_t lov);
 /* Schlick: f0 + (1 - f0)(1 - cos)^5; f0, cos [0, 1].  Q15, max 1;
  * F(f0, 1) = f0, F(f0, 0) = 1 exactly.  Error: 0 LSB (correctly rounded).
- * Cost: 2 mul, 3 mul64 (written over lanes: AVX2 and aarch64 NEON run it
- * vectorised in the batch). */
+ * Cost: 2 mul, 3 mul64. */
 int32_t facet_fresnel_schlick_fx(int32_t f0, int32_t cos_theta);
 /* GGX D = alpha^2 / (pi (1 - N.H^2 (1 - alpha^2))^2); noh [0, 1], alpha
  * [2^-10, 1].  UQ19.13, max 2^20/pi = 333772.1 (N.H = 1, alpha = 2^-10).
- * Error: FACET_FX_ERR_GGX_D LSB.  Cost: 1 division, 3 fxf, 2 mul64. */
+ * Error: FACET_FX_ERR_GGX_D LSB.  Cost: 1 division, 3 fxe, 2 mul64. */
 uint32_t facet_ggx_d_fx(int32_t noh, int32_t alpha);
 /* Anisotropic GGX D = (ax ay)^3 / (pi K^2), K = (T.H ay)^2 + (B.H ax)^2 +
  * (N.H ax ay)^2 (facet.h); noh [0, 1], toh, boh [-1, 1] (Q15 signed, the
@@ -131,27 +136,27 @@ uint32_t facet_ggx_d_fx(int32_t noh, int32_t alpha);
  * K floored at (ax ay)^2 / 2 (facet.h), so D <= 4/(pi ax ay), which
  * saturates at FACET_FX_MAX_D where ax ay < 2^-19.4.  Intermediates: P = AX
  * AY Q30, T AY and B AX Q30 (each <= 2^30, exact), K Q90 exact in 96 bits
- * [K <= 3], then one fxf rounding (src/fx/fx_kernels.c).
+ * [K <= 3], then one fxe rounding (src/fx/fx_body.h).
  * Error: FACET_FX_ERR_GGX_ANISO_D LSB: 5 roundings of <= 2^-32 relative
  * (K, P/K, square, times P, times 1/pi) plus the final half LSB, which is
  * more than 1 LSB only where raw > 2^29.7 (ax ay < 2^-17, at or near the
  * peak); measured max 3 LSB (3.09 real) at raw 2^31.5, (129, 32, 1, 33,
  * 32), relative 2^-29.9.  The exact peak (N.H = 1, T.H = B.H = 0) is
  * correctly rounded, as ggx_d's.
- * Cost: 1 division (the peak), 1 fxf division, 3 fxf mul, ~8 mul64. */
+ * Cost: 1 division (P / K, or the peak's), 3 fxe mul, ~8 mul64. */
 uint32_t facet_ggx_aniso_d_fx(int32_t noh, int32_t toh, int32_t boh, int32_t alpha_x, int32_t alpha_y);
 /* Smith G1 (GGX, exact) = 2 n / (n + sqrt(alpha^2 + (1 - alpha^2) n^2));
  * nov [0, 1], alpha [2^-10, 1].  Q15, max 1; G1(0) = 0, G1(1) = 1.
- * Error: FACET_FX_ERR_SMITH_G1 LSB.  Cost: 1 sqrt, 1 division, 1 fxf, 3 mul. */
+ * Error: FACET_FX_ERR_SMITH_G1 LSB.  Cost: 1 sqrt, 1 division, 1 fxe, 3 mul. */
 int32_t facet_smith_g1_fx(int32_t nov, int32_t alpha);
 /* Smith G2, height-correlated = 2 nl nv / (nv r(nl) + nl r(nv)),
  * r(x) = sqrt(alpha^2 + (1 - alpha^2) x^2); nol, nov [2^-8, 1], alpha
  * [2^-10, 1].  Q15, max 1.  Error: FACET_FX_ERR_SMITH_G2 LSB.
- * Cost: 2 sqrt, 1 division, 3 fxf, ~8 mul. */
+ * Cost: 2 sqrt, 1 division, 3 fxe, ~8 mul. */
 int32_t facet_smith_g2_fx(int32_t nol, int32_t nov, int32_t alpha);
 /* G1(N.L) G1(N.V); domains as smith_g2.  Q15, max 1.
  * Error: FACET_FX_ERR_SMITH_G2_UNCORRELATED LSB.  Cost: 2 sqrt, 1 division,
- * 3 fxf, ~8 mul. */
+ * 3 fxe, ~8 mul. */
 int32_t facet_smith_g2_uncorrelated_fx(int32_t nol, int32_t nov, int32_t alpha);
 /* Vis = G2 / (4 nl nv) = 0.5 / (nv r(nl) + nl r(nv)); domains as smith_g2.
  * UQ16.16, max 15894.3 (nl = nv = 2^-8, alpha = 2^-10).
@@ -176,7 +181,7 @@ uint32_t facet_smith_vis_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
  * Outputs: the G terms Q15 (max 1: every one is capped at 1 or a product
  * or minimum of [0, 1] values); the Vis terms UQ16.16 (smith_vis_joint_approx
  * max 13117 as smith_vis_hammon; smith_vis_fit max 15521, both at
- * N.L = N.V = 2^-8, alpha = 2^-10 [raw < 2^30]).  Scaling (src/fx/fx_kernels.c
+ * N.L = N.V = 2^-8, alpha = 2^-10 [raw < 2^30]).  Scaling (src/fx/fx_body.h
  * and src/fx/fx_fast_body.h give each step's Q format and bound):
  *   g_implicit  N.L N.V Q30 exact [<= 2^30], rounded once to Q15;
  *   g_neumann   min(N.L, N.V) exact;
@@ -187,7 +192,7 @@ uint32_t facet_smith_vis_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
  *   smith_g1_beckmann  the branch c < 1.6 as 25 N^2 2^24 < A^2 (1 - n^2)
  *               Q60 exact (fast: from the high words; misjudged only within
  *               2^-20 of c = 1.6, where both pieces are 1); the rational in
- *               fxf (fast: in c Q29, c^2 Q29, the sums Q59 in 64 bits
+ *               fxe (fast: in c Q29, c^2 Q29, the sums Q59 in 64 bits
  *               [< 2^63]); sqrt(1 - n^2) by the exact root (fast: the table);
  *   smith_g1_schlick_beckmann  k = a round(sqrt(2/pi) 2^32); the
  *               denominator N (1 - k) + k exact in 64 bits [< 2^63];
@@ -195,9 +200,9 @@ uint32_t facet_smith_vis_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
  *               smith_vis_hammon in each tier: the same bits);
  *   smith_vis_fit  the float constants exact in Q30; sigma exact in Q60
  *               (fast: Q30 stages, every value < 2^32, R >= 2^21); the
- *               denominator in fxf (fast: exact in 64 bits [< 2^48]).
+ *               denominator in fxe (fast: exact in 64 bits [< 2^48]).
  * Errors: FACET_FX_ERR_* in LSB (precise; measured: correctly rounded, 0
- * LSB, but for the two Vis terms, 1 LSB: fxf's 32-bit rounding of the
+ * LSB, but for the two Vis terms, 1 LSB: fxe's 32-bit rounding of the
  * denominator), FACET_FX_FAST_ERR_* in the fast tier's measure (its
  * maximum over tests/fx/test_fx_fast.c's sweep, 0.8 M to 2 M tuples per
  * kernel, and its quick variant under FACET_TEST_QUICK; e, LSB < 1K, rel >= 1K, argmax):
@@ -235,13 +240,13 @@ int32_t facet_g_cook_torrance_fx(int32_t nol, int32_t nov, int32_t noh, int32_t 
 /* min(1, N.L N.V / V.H^2); Q15.  Cost: 1 division, 2 mul. */
 int32_t facet_g_kelemen_fx(int32_t nol, int32_t nov, int32_t voh);
 /* Walter's Beckmann G1 (facet.h); Q15, G1(0) = 0, G1(1) = 1.
- * Cost: 1 sqrt, 1 division, ~8 fxf. */
+ * Cost: 1 sqrt, 1 division, ~8 fxe. */
 int32_t facet_smith_g1_beckmann_fx(int32_t nov, int32_t alpha);
 /* N.V / (N.V (1 - k) + k), k = alpha sqrt(2/pi); Q15.  Cost: 1 division, 3 mul64. */
 int32_t facet_smith_g1_schlick_beckmann_fx(int32_t nov, int32_t alpha);
 /* The joint approximation = Hammon's Vis; UQ16.16.  Cost: as smith_vis_hammon. */
 uint32_t facet_smith_vis_joint_approx_fx(int32_t nol, int32_t nov, int32_t alpha);
-/* The fitted visibility (facet.h); UQ16.16, max 15521.  Cost: 1 division, ~14 fxf. */
+/* The fitted visibility (facet.h); UQ16.16, max 15521.  Cost: 1 division, ~14 fxe. */
 uint32_t facet_smith_vis_fit_fx(int32_t nol, int32_t nov, int32_t alpha);
 int32_t facet_g_implicit_fx_fast(int32_t nol, int32_t nov);
 int32_t facet_g_neumann_fx_fast(int32_t nol, int32_t nov);
@@ -283,14 +288,14 @@ void facet_smith_vis_fit_fx_fast_batch(uint32_t *out, const int32_t *nol, const 
  * (N.L + N.V)^2 / 2); nol, nov [2^-8, 1], lov [-1, 1], alpha [2^-10, 1],
  * albedo [0, 1].  UQ8.24, max 20.65 (nl = nv = 2^-8, L.V = 1, alpha =
  * albedo = 1).  Error: FACET_FX_ERR_DIFFUSE_HAMMON LSB.  Cost: 1 sqrt,
- * 1 division, ~12 fxf, ~10 mul64. */
+ * 1 division, ~12 fxe, ~10 mul64. */
 uint32_t facet_diffuse_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                  int32_t albedo);
 /* The whole model: D Vis_hammon F(f0, L.H) + diffuse, from the dots (N.H
  * never formed; the peak's cancellation exact); domains as diffuse_hammon,
  * f0 [0, 1].  UQ40.24, max 4.38e9 (D 333772 x Vis 13117 at the grazing
  * peak).  Error: FACET_FX_ERR_BRDF_HAMMON LSB.  Cost: 2 sqrt, 3 division,
- * ~30 fxf. */
+ * ~30 fxe. */
 uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                               int32_t f0, int32_t albedo);
 
@@ -304,9 +309,9 @@ uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alp
 void facet_brdf_hammon_rgb_fx(uint64_t out[3], int32_t nol, int32_t nov, int32_t lov,
                               int32_t alpha, const int32_t f0[3], const int32_t albedo[3]);
 /* batches of it: planar (out[c][i], f0[c][i], albedo[c][i]) and interleaved
- * (out[3i + c], f0[3i + c], albedo[3i + c]); the scalar loop on every port
- * (as brdf_hammon's fx batch); out must not overlap an input (64-bit
- * outputs).  The fast tier: facet_brdf_hammon_rgb_fx_fast[_batch...] below. */
+ * (out[3i + c], f0[3i + c], albedo[3i + c]); the scalar loop on every port;
+ * out must not overlap an input (64-bit outputs).  The fast tier:
+ * facet_brdf_hammon_rgb_fx_fast[_batch...] below. */
 void facet_brdf_hammon_rgb_fx_batch(uint64_t *const out[3], const int32_t *nol, const int32_t *nov,
                                     const int32_t *lov, const int32_t *alpha,
                                     const int32_t *const f0[3], const int32_t *const albedo[3],
@@ -322,17 +327,18 @@ void facet_brdf_hammon_rgb_fx_batch_interleaved(uint64_t *out, const int32_t *no
  * Dispatched with the f32 batches (facet_port_name(), facet_set_port(),
  * FACET_PORT: one choice for both formats): the active port's own
  * fixed-point code where it has some, the scalar loop elsewhere;
- * facet_fx_port_name() names the port whose code that is.  Vector code
- * exists only where it was measured faster than the scalar loop, which
- * divides and takes roots with one hardware instruction where the core has
- * one: fresnel_schlick on avx2 / avx512 (AVX2 lanes) and on aarch64 neon.
- * Everything else, and everything on sse2, armv7 neon and scalar, runs the
- * scalar loop.  A firmware build (`make fx-sources`: src/fx_only/
- * fx_batch_scalar.c instead of the dispatcher) has no ports: each batch is
- * its own scalar loop, facet_fx_port_name() is "scalar", and --gc-sections
- * keeps only the kernels called.  out may be the very same array as an
- * input (32-bit outputs); no other overlap. */
-const char *facet_fx_port_name(void); /* "avx2", "neon" or "scalar" */
+ * facet_fx_port_name() names the port whose code that is.  Which kernels
+ * of which tier a port runs on its vector lanes is its own measured choice
+ * (where they beat the scalar loop, which divides and takes roots with one
+ * hardware instruction where the core has one), stated in
+ * ports/<isa>/fx_<isa>.c: avx2 / avx512 (AVX2 lanes), aarch64 neon, helium,
+ * rvv; everything else, and everything on sse2, armv7 neon and scalar,
+ * runs the scalar loop.  A firmware build (`make fx-sources`:
+ * src/fx/fx_firmware_batch.c instead of the dispatcher) has no ports: each
+ * batch is its own scalar loop, facet_fx_port_name() is "scalar", and
+ * --gc-sections keeps only the kernels called.  out may be the very same
+ * array as an input (32-bit outputs); no other overlap. */
+const char *facet_fx_port_name(void); /* "avx2", "neon", "helium" or "scalar" */
 void facet_noh_from_dots_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
                                   const int32_t *lov, size_t n);
 void facet_loh_from_dots_fx_batch(int32_t *out, const int32_t *lov, size_t n);
@@ -377,7 +383,7 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
  * RV32IMC), bit-exact on every target (pinned hashes, tests/lib/fx_hash.h);
  * written once over the lane op layer (src/fx/fx_fast_body.h), so a SIMD port
  * instantiates the same body.  Cost: executed instructions per call on
- * Cortex-M4 / Cortex-M0 (qemu trace, mean of bench/cortexm_main.c's 4
+ * Cortex-M4 / Cortex-M0 (qemu trace, mean of bench/cortexm/cortexm_main.c's 4
  * inputs; arm-none-eabi-gcc 12.2 -O2), the precise tier's in brackets.
  *
  * Datapath (a specification a fixed-function pipeline can implement):
@@ -463,10 +469,10 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
 
 /* N.H = s / sqrt(2t) (1 at or past N.H = 1); domain and Q15 output as
  * facet_noh_from_dots_fx.  One sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_NOH_FROM_DOTS.  Cost: 73 / 147 (181 / 1076). */
+ * Error: FACET_FX_FAST_ERR_NOH_FROM_DOTS.  Cost: 73 / 147 (214 / 1109). */
 int32_t facet_noh_from_dots_fx_fast(int32_t nol, int32_t nov, int32_t lov);
 /* L.H = sqrt((1 + L.V) / 2), Q15 (L.V = -1 gives 0).  One sqrt.
- * Error: FACET_FX_FAST_ERR_LOH_FROM_DOTS.  Cost: 37 / 58 (84 / 416). */
+ * Error: FACET_FX_FAST_ERR_LOH_FROM_DOTS.  Cost: 37 / 58 (84 / 411). */
 int32_t facet_loh_from_dots_fx_fast(int32_t lov);
 /* Schlick f0 + (1 - f0)(1 - cos)^5, Q15; F(f0, 1) = f0, F(f0, 0) = 1
  * exactly.  1 mul, 3 high-word products; the error is the final rounding.
@@ -474,7 +480,7 @@ int32_t facet_loh_from_dots_fx_fast(int32_t lov);
 int32_t facet_fresnel_schlick_fx_fast(int32_t f0, int32_t cos_theta);
 /* GGX D = alpha^2 / (pi d^2), d = (1 - n)(1 + n) + (n alpha)^2 exact in
  * 64 bits; UQ19.13, max 2^20/pi.  One 1/x.
- * Error: FACET_FX_FAST_ERR_GGX_D.  Cost: 73 / 217 (109 / 652). */
+ * Error: FACET_FX_FAST_ERR_GGX_D.  Cost: 73 / 217 (157 / 788). */
 uint32_t facet_ggx_d_fx_fast(int32_t noh, int32_t alpha);
 /* The exponential D terms, the fast tier only (kernels.def fx_code fast).
  * Format argument: each is 2^-y times a prefactor whose maximum over N.H
@@ -517,7 +523,7 @@ uint32_t facet_beckmann_d_fx_fast(int32_t noh, int32_t alpha);
  * product; one 1/x.
  * Error: FACET_FX_FAST_ERR_GGX_ANISO_D (measured 0.514; 0.512 over 3e6
  * unit half vectors; relative 2^-15.0 above 2^15 LSB).
- * Cost: 159 / 569 (194 / 937). */
+ * Cost: 159 / 569 (352 / 1242). */
 uint32_t facet_ggx_aniso_d_fx_fast(int32_t noh, int32_t toh, int32_t boh, int32_t alpha_x, int32_t alpha_y);
 /* GTR D = c / d^gamma (facet.h), the fast tier only (kernels.def fx_code
  * fast); noh [0, 1], alpha [2^-10, 1], gamma [0, 4] (raw Q15 [0, 4 2^15],
@@ -547,16 +553,16 @@ uint32_t facet_ggx_aniso_d_fx_fast(int32_t noh, int32_t toh, int32_t boh, int32_
 uint32_t facet_gtr_d_fx_fast(int32_t noh, int32_t alpha, int32_t gamma);
 /* Smith G1 (exact GGX) = 2n / (n + sqrt(a^2 + (1 - a^2) n^2)), Q15.
  * w exact in 64 bits, one sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_G1.  Cost: 91 / 229 (198 / 1063). */
+ * Error: FACET_FX_FAST_ERR_SMITH_G1.  Cost: 91 / 229 (210 / 1138). */
 int32_t facet_smith_g1_fx_fast(int32_t nov, int32_t alpha);
 /* Smith G2 height-correlated, Q15.  Two sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_G2.  Cost: 136 / 418 (352 / 1715). */
+ * Error: FACET_FX_FAST_ERR_SMITH_G2.  Cost: 136 / 418 (352 / 1766). */
 int32_t facet_smith_g2_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 /* G1(N.L) G1(N.V), Q15.  Two sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED.  Cost: 131 / 420 (366 / 1727). */
+ * Error: FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED.  Cost: 131 / 420 (378 / 1792). */
 int32_t facet_smith_g2_uncorrelated_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 /* Vis = 0.5 / (nv r(nl) + nl r(nv)), UQ16.16.  Two sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_VIS.  Cost: 115 / 374 (340 / 1674). */
+ * Error: FACET_FX_FAST_ERR_SMITH_VIS.  Cost: 115 / 374 (331 / 1740). */
 uint32_t facet_smith_vis_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 /* Smith G1 for GTR (Dimov; facet.h's closed forms at gamma = 0 .. 4 and
  * the monotone cubic in gamma between them), the fast tier only (kernels.def
@@ -581,18 +587,18 @@ uint32_t facet_smith_vis_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
  * kernel of the tier). */
 int32_t facet_smith_g1_gtr_fx_fast(int32_t nov, int32_t alpha, int32_t gamma);
 /* Hammon G1 = 2n / (n (2 - a) + a), the denominator exact; Q15.  One 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_G1_HAMMON.  Cost: 54 / 115 (62 / 508). */
+ * Error: FACET_FX_FAST_ERR_SMITH_G1_HAMMON.  Cost: 54 / 115 (68 / 514). */
 int32_t facet_smith_g1_hammon_fx_fast(int32_t nov, int32_t alpha);
 /* Hammon G2 = 2 nl nv / m, m exact in 64 bits; Q15.  One 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_G2_HAMMON.  Cost: 77 / 180 (101 / 600). */
+ * Error: FACET_FX_FAST_ERR_SMITH_G2_HAMMON.  Cost: 77 / 180 (128 / 648). */
 int32_t facet_smith_g2_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 /* Hammon Vis = 0.5 / m; UQ16.16, max 13117.  One 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_VIS_HAMMON.  Cost: 66 / 143 (87 / 558). */
+ * Error: FACET_FX_FAST_ERR_SMITH_VIS_HAMMON.  Cost: 66 / 143 (115 / 610). */
 uint32_t facet_smith_vis_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 /* Hammon's diffuse (facet.h's formula and raise); UQ8.24, max 20.65.
  * 32-bit stages: P(x) = x (1 + y + ... + y^4), the sum from a table; the
  * bracket in Q25 [< 2^31.02], times albedo / pi; one sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON.  Cost: 121 / 414 (494 / 1960). */
+ * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON.  Cost: 121 / 414 (686 / 2290). */
 uint32_t facet_diffuse_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                       int32_t albedo);
 /* The whole model D Vis_hammon F(f0, L.H) + diffuse from the dots (N.H
@@ -600,7 +606,7 @@ uint32_t facet_diffuse_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int
  * sqrt, three 1/x, 26 high-word products; spec and diffuse added in Q29
  * (64 bits) and rounded once.
  * Error: FACET_FX_FAST_ERR_BRDF_HAMMON (relative 2^-13.2 above 2^15 LSB).
- * Cost: 275 / 1060 (1051 / 4221). */
+ * Cost: 275 / 1060 (1476 / 4919). */
 uint64_t facet_brdf_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                    int32_t f0, int32_t albedo);
 /* the RGB form and its batches, as facet_brdf_hammon_rgb_fx above: each
@@ -725,9 +731,8 @@ void facet_diffuse_hammon_cheap_fx_fast_batch(uint32_t *out, const int32_t *nol,
 
 /* ---- fast tier batches: out[i] = facet_<kernel>_fx_fast(in1[i], ...) ---
  * Dispatched like the precise batches (one port choice for every format):
- * the active port's code (avx2 and avx512: AVX2 lanes; aarch64 neon: NEON
- * lanes; the fast body, src/fx/fx_fast_body.h, instantiated on each), the
- * scalar loop elsewhere.  Bit-identical to the scalar kernels for every
+ * the active port's lanes for the kernels its file lists (the fast body,
+ * src/fx/fx_fast_body.h, instantiated on each), the scalar loop elsewhere.  Bit-identical to the scalar kernels for every
  * int32 input, n, alignment and tail; out may be the very same array as an
  * input (32-bit outputs); no other overlap. */
 void facet_noh_from_dots_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
