@@ -24,13 +24,14 @@
 #include "raster/raster.h"
 #include "samplers.h"
 #include "facet_bench.h"
+#include "data.h"
 
 #define PI_REPORT 3.14159265358979323846
 
 static const char *outdir;
 static FILE *md, *html;
 static int quick;
-static double tpc = 1.0;
+static report_data D;
 
 static void say(const char *fmt, ...)
 {
@@ -283,160 +284,6 @@ static void picture(const pic *p, const char *name)
     free(buf);
 }
 
-/* ---- results ----------------------------------------------------------------- */
-
-typedef struct row {
-    bench_row r;
-    char kernel[32], format[16], port[32], path[16];
-} row;
-
-static row *rows;
-static int n_rows, cap_rows;
-
-static void collect(const bench_row *r, void *ctx)
-{
-    row *x;
-    (void)ctx;
-    if (n_rows == cap_rows) {
-        cap_rows = cap_rows ? 2 * cap_rows : 64;
-        rows = realloc(rows, (size_t)cap_rows * sizeof *rows);
-    }
-    x = &rows[n_rows++];
-    x->r = *r;
-    snprintf(x->kernel, sizeof x->kernel, "%s", r->kernel);
-    snprintf(x->format, sizeof x->format, "%s", r->format);
-    snprintf(x->port, sizeof x->port, "%s", r->port);
-    snprintf(x->path, sizeof x->path, "%s", r->path);
-    x->r.kernel = x->kernel;
-    x->r.format = x->format;
-    x->r.port = x->port;
-    x->r.path = x->path;
-}
-
-static const row *find_row(const char *kernel, const char *format, const char *port, const char *path)
-{
-    int i;
-    for (i = 0; i < n_rows; i++)
-        if (!strcmp(rows[i].kernel, kernel) && !strcmp(rows[i].format, format) &&
-            !strcmp(rows[i].port, port) && !strcmp(rows[i].path, path))
-            return &rows[i];
-    return NULL;
-}
-
-static double est(double ticks) { return ticks / tpc; }
-
-/* find_row for samplers.c */
-static const bench_row *find_bench_row(const char *kernel, const char *format, const char *port, const char *path)
-{
-    const row *x = find_row(kernel, format, port, path);
-    return x ? &x->r : NULL;
-}
-
-/* ---- modelled cycles and sizes from report.sh --------------------------- */
-
-/* a row of a .tsv: three names and a value (and a source), or with a
- * leading format column (mca.tsv) four names */
-typedef struct tsv { char f[32], a[32], b[32], c[32]; double v; char src[64]; } tsv;
-static tsv *mca, *sizes, *arm, *armvec;
-static int n_mca, n_sizes, n_arm, n_armvec;
-
-static tsv *read_tsv(const char *name, int *n, int with_format)
-{
-    char path[1024], line[512];
-    FILE *f;
-    tsv *t = NULL;
-    int cap = 0;
-    *n = 0;
-    snprintf(path, sizeof path, "%s/%s", outdir, name);
-    f = fopen(path, "r");
-    if (!f)
-        return NULL;
-    while (fgets(line, sizeof line, f)) {
-        tsv x;
-        memset(&x, 0, sizeof x);
-        if (line[0] == '#')
-            continue;
-        if (with_format ? sscanf(line, "%31s %31s %31s %31s %lf", x.f, x.a, x.b, x.c, &x.v) < 5
-                        : sscanf(line, "%31s %31s %31s %lf %63s", x.a, x.b, x.c, &x.v, x.src) < 4)
-            continue;
-        if (*n == cap) {
-            cap = cap ? 2 * cap : 64;
-            t = realloc(t, (size_t)cap * sizeof *t);
-        }
-        t[(*n)++] = x;
-    }
-    fclose(f);
-    return t;
-}
-
-/* mca.tsv: format port kernel cpu cycles_per_sample.  Only the f32 tiers'
- * batch loops are modelled: a fixed-point row has none (-1). */
-static double mca_of(const char *format, const char *port, const char *kernel, const char *cpu)
-{
-    int i;
-    for (i = 0; i < n_mca; i++)
-        if (!strcmp(mca[i].f, format) && !strcmp(mca[i].a, port) && !strcmp(mca[i].b, kernel) &&
-            !strcmp(mca[i].c, cpu))
-            return mca[i].v;
-    return -1;
-}
-
-/* size.tsv: format port kernel bytes */
-static double size_of(const char *format, const char *port, const char *kernel)
-{
-    int i;
-    for (i = 0; i < n_sizes; i++)
-        if (!strcmp(sizes[i].a, format) && !strcmp(sizes[i].b, port) && !strcmp(sizes[i].c, kernel))
-            return sizes[i].v;
-    return -1;
-}
-
-/* arm.tsv: what(fx|f32soft) kernel cpu cycles_per_sample source */
-static const tsv *arm_of(const char *what, const char *kernel, const char *cpu)
-{
-    int i;
-    for (i = 0; i < n_arm; i++)
-        if (!strcmp(arm[i].a, what) && !strcmp(arm[i].b, kernel) && !strcmp(arm[i].c, cpu))
-            return &arm[i];
-    return NULL;
-}
-
-/* arm_vec.tsv (bench/report/arm_targets.sh): format port kernel measure
- * value, the NEON and Helium ports' costs per sample; -1 if absent */
-static double armvec_of(const char *format, const char *port, const char *kernel, const char *measure)
-{
-    int i;
-    for (i = 0; i < n_armvec; i++)
-        if (!strcmp(armvec[i].f, format) && !strcmp(armvec[i].a, port) && !strcmp(armvec[i].b, kernel) &&
-            !strcmp(armvec[i].c, measure))
-            return armvec[i].v;
-    return -1;
-}
-
-/* arm_vec.status: "PORT ok HOW" or "PORT skipped WHY"; the line for port
- * (without the port's name) into b, or why there is none */
-static int armvec_status(const char *port, char *b, size_t n)
-{
-    char path[1024], line[512];
-    size_t k = strlen(port);
-    FILE *f;
-    snprintf(path, sizeof path, "%s/arm_vec.status", outdir);
-    f = fopen(path, "r");
-    snprintf(b, n, "skipped: no arm_vec.status (a facet-bench report run without bench/report/report.sh, "
-                   "which runs bench/report/arm_targets.sh)");
-    if (!f)
-        return 0;
-    while (fgets(line, sizeof line, f))
-        if (!strncmp(line, port, k) && line[k] == ' ') {
-            line[strcspn(line, "\n")] = 0;
-            snprintf(b, n, "%s", line + k + 1);
-            fclose(f);
-            return !strncmp(line + k + 1, "ok", 2);
-        }
-    fclose(f);
-    return 0;
-}
-
 /* ---- model error of the approximations -------------------------------------
  * Table-driven: one line per (approximation, exact reference, domain).  An
  * entry names the two double oracles as functions of its axes' values x[]
@@ -586,18 +433,6 @@ static void sweep_tradeoffs(void)
     }
 }
 
-/* best (lowest median) f32 batch row of a kernel, any port */
-static const row *best_batch(const char *kernel)
-{
-    const row *b = NULL;
-    int i;
-    for (i = 0; i < n_rows; i++)
-        if (!strcmp(rows[i].kernel, kernel) && !strcmp(rows[i].format, "f32") &&
-            !strcmp(rows[i].path, "batch") && (!b || rows[i].r.thr.median < b->r.thr.median))
-            b = &rows[i];
-    return b;
-}
-
 /* ---- SVG Pareto plot -------------------------------------------------------------- */
 
 /* a Pareto point: cost on this machine and the two errors, kept apart */
@@ -733,13 +568,13 @@ static void section_clock(void)
          "'!' where spread > 5%%. Latency: a dependent chain (the first input of call i+1 is "
          "in[i+1] + out[i] * 0), minus the same chain with no kernel; per call (a call is 8 samples "
          "for AVX2, 4 for SSE2).",
-         cyc_source(), cyc_is_cycles() ? "measured core cycles" : "time-stamp counter ticks, NOT core cycles",
-         cyc_is_cycles() ? "" : "perf_event_open(PERF_COUNT_HW_CPU_CYCLES) is not available here (a VM without a virtual PMU), so "
+         D.clock.source, D.clock.is_cycles ? "measured core cycles" : "time-stamp counter ticks, NOT core cycles",
+         D.clock.is_cycles ? "" : "perf_event_open(PERF_COUNT_HW_CPU_CYCLES) is not available here (a VM without a virtual PMU), so "
          "'est. cycles' = ticks / ticks-per-cycle, the ratio measured with a dependent chain of 1-cycle integer adds "
          "(it assumes the core clock does not change between that calibration and the kernel).",
-         cyc_cpu(), quick ? "256" : "1024");
-    if (!cyc_is_cycles())
-        para("Measured ticks per core cycle: %.4f (core clock about %.2f x the TSC rate).", tpc, 1 / tpc);
+         D.clock.cpu, quick ? "256" : "1024");
+    if (!D.clock.is_cycles)
+        para("Measured ticks per core cycle: %.4f (core clock about %.2f x the TSC rate).", D.clock.tpc, 1 / D.clock.tpc);
 }
 
 static void section_kernels(void)
@@ -755,14 +590,14 @@ static void section_kernels(void)
          "facet_KERNEL_fx_batch with facet_set_port(port) active (identical timings across ports mean the "
          "build routes every port to the same fx loop), path call = facet_KERNEL_fx per sample. Throughput in %s per sample (median), est. cycles per "
          "sample, latency in est. cycles per call. mca: llvm-mca cycles per sample for the port's batch "
-         "loop (modelled, not measured). size: bytes of the batch function.", cyc_unit());
+         "loop (modelled, not measured). size: bytes of the batch function.", D.clock.unit);
     thead(13, "kernel", "fmt", "port", "path", "max err", "argmax input", "mean err", "bound",
           "thr (med)", "est. cyc/sample", "latency cyc/call", "mca znver3 / skylake", "size B");
     for (ki = 0; ki < facet_kernel_count(); ki++) {
         const facet_kernel *k = facet_kernel_at(ki);
         int i, j;
-        for (i = 0; i < n_rows; i++) {
-            const row *x = &rows[i];
+        for (i = 0; i < D.n_rows; i++) {
+            const bench_row *x = &D.rows[i].r;
             char c[13][160], *p;
             const char *cells[13];
             double m1, m2, sz;
@@ -772,39 +607,39 @@ static void section_kernels(void)
             snprintf(c[1], sizeof c[1], "%s", x->format);
             snprintf(c[2], sizeof c[2], "%s", x->port);
             snprintf(c[3], sizeof c[3], "%s", x->path);
-            if (x->r.err.has_lsb)
-                fmt(c[4], sizeof c[4], "%.0f LSB%s", x->r.err.max_lsb,
-                    x->r.err.big_rel >= 0 ? fmt(c[12], 64, " (brdf >= 16: %.2g rel)", x->r.err.big_rel) : "");
+            if (x->err.has_lsb)
+                fmt(c[4], sizeof c[4], "%.0f LSB%s", x->err.max_lsb,
+                    x->err.big_rel >= 0 ? fmt(c[12], 64, " (brdf >= 16: %.2g rel)", x->err.big_rel) : "");
             else
-                g3(c[4], x->r.err.max_rel);
+                g3(c[4], x->err.max_rel);
             p = c[5];
             *p = 0;
-            for (j = 0; j < x->r.n_inputs; j++)
-                p += snprintf(p, 20, "%s%.4g", j ? ", " : "", x->r.err.arg[j]);
-            if (x->r.err.has_lsb)
-                fmt(c[6], sizeof c[6], "%.2g LSB", x->r.err.mean_lsb);
+            for (j = 0; j < x->n_inputs; j++)
+                p += snprintf(p, 20, "%s%.4g", j ? ", " : "", x->err.arg[j]);
+            if (x->err.has_lsb)
+                fmt(c[6], sizeof c[6], "%.2g LSB", x->err.mean_lsb);
             else
-                g3(c[6], x->r.err.mean_rel);
-            if (x->r.bound > 0 && x->r.err.has_lsb)
-                fmt(c[7], sizeof c[7], "%.0f LSB%s %s", x->r.bound, x->r.err.big_rel >= 0 ? ", 2^-26 rel" : "",
-                    x->r.within ? "ok" : "**BAD**");
-            else if (x->r.bound > 0)
-                fmt(c[7], sizeof c[7], "%.3g %s", x->r.bound, x->r.within ? "ok" : "**BAD**");
+                g3(c[6], x->err.mean_rel);
+            if (x->bound > 0 && x->err.has_lsb)
+                fmt(c[7], sizeof c[7], "%.0f LSB%s %s", x->bound, x->err.big_rel >= 0 ? ", 2^-26 rel" : "",
+                    x->within ? "ok" : "**BAD**");
+            else if (x->bound > 0)
+                fmt(c[7], sizeof c[7], "%.3g %s", x->bound, x->within ? "ok" : "**BAD**");
             else
                 strcpy(c[7], "-");
-            fmt(c[8], sizeof c[8], "%.3f%s", x->r.thr.median, x->r.thr.noisy ? " !" : "");
-            fmt(c[9], sizeof c[9], "%.2f", est(x->r.thr.median));
-            if (x->r.has_lat)
-                fmt(c[10], sizeof c[10], "%.1f%s", est(x->r.lat.median), x->r.lat.noisy ? " !" : "");
+            fmt(c[8], sizeof c[8], "%.3f%s", x->thr.median, x->thr.noisy ? " !" : "");
+            fmt(c[9], sizeof c[9], "%.2f", data_est(&D, x->thr.median));
+            if (x->has_lat)
+                fmt(c[10], sizeof c[10], "%.1f%s", data_est(&D, x->lat.median), x->lat.noisy ? " !" : "");
             else
                 strcpy(c[10], "-");
-            m1 = mca_of(x->format, x->port, x->kernel, "znver3");
-            m2 = mca_of(x->format, x->port, x->kernel, "skylake");
+            m1 = data_mca(&D, x->format, x->port, x->kernel, "znver3");
+            m2 = data_mca(&D, x->format, x->port, x->kernel, "skylake");
             if (!strcmp(x->path, "batch") && m1 > 0)
                 fmt(c[11], sizeof c[11], "%.2f / %.2f", m1, m2);
             else
                 strcpy(c[11], "-");
-            sz = size_of(x->format, x->port, x->kernel);
+            sz = data_size(&D, x->format, x->port, x->kernel);
             if (!strcmp(x->path, "batch") && sz > 0)
                 fmt(c[12], sizeof c[12], "%.0f", sz);
             else
@@ -845,7 +680,7 @@ static void section_tradeoff(void)
           "cost approx", "cost exact");
     for (t = 0; t < N_TRADE; t++) {
         const tradeoff *x = &trades[t];
-        const row *ca = best_batch(x->cheap_kernel), *ce = x->exact_kernel[0] ? best_batch(x->exact_kernel) : NULL;
+        const bench_row *ca = data_best_batch(&D, x->cheap_kernel), *ce = x->exact_kernel[0] ? data_best_batch(&D, x->exact_kernel) : NULL;
         const char *cells[8];
         cells[0] = x->term;
         cells[1] = x->approx;
@@ -860,17 +695,17 @@ static void section_tradeoff(void)
                 q += snprintf(q, 20, "%s%s %.3g", d ? ", " : "", x->axes[d].name, x->arg[d]);
             cells[5] = b[2];
         }
-        cells[6] = ca ? fmt(b[3], sizeof b[3], "%.2f (%s)", est(ca->r.thr.median), ca->port) : "-";
+        cells[6] = ca ? fmt(b[3], sizeof b[3], "%.2f (%s)", data_est(&D, ca->thr.median), ca->port) : "-";
         if (!strcmp(x->term, "whole BRDF")) {
-            const row *p = NULL;
+            const bench_row *p = NULL;
             int i;
-            for (i = 0; i < n_rows; i++)
-                if (!strcmp(rows[i].path, "peer") && !strcmp(rows[i].kernel, "brdf_hammon") &&
-                    (!p || rows[i].r.thr.median < p->r.thr.median))
-                    p = &rows[i];
-            cells[7] = p ? fmt(b[4], sizeof b[4], "%.2f (peer %s)", est(p->r.thr.median), p->port) : "-";
+            for (i = 0; i < D.n_rows; i++)
+                if (!strcmp(D.rows[i].path, "peer") && !strcmp(D.rows[i].kernel, "brdf_hammon") &&
+                    (!p || D.rows[i].r.thr.median < p->thr.median))
+                    p = &D.rows[i].r;
+            cells[7] = p ? fmt(b[4], sizeof b[4], "%.2f (peer %s)", data_est(&D, p->thr.median), p->port) : "-";
         } else {
-            cells[7] = ce ? fmt(b[4], sizeof b[4], "%.2f (%s)", est(ce->r.thr.median), ce->port) : "-";
+            cells[7] = ce ? fmt(b[4], sizeof b[4], "%.2f (%s)", data_est(&D, ce->thr.median), ce->port) : "-";
         }
         trow(cells);
     }
@@ -930,23 +765,23 @@ static void section_pareto(void)
             const char *kn = pareto_groups[g][s2];
             double model = group_has_reference(g) ? model_of(kn) : -1;
             for (f = 0; f < 4; f++)
-                for (i = 0; i < n_rows && n < 128; i++) {
-                    const row *x = &rows[i];
+                for (i = 0; i < D.n_rows && n < 128; i++) {
+                    const bench_row *x = &D.rows[i].r;
                     if (strcmp(x->kernel, kn) || strcmp(x->format, formats[f]) || strcmp(x->path, "batch"))
                         continue;
-                    pts[n].x = est(x->r.thr.median);
-                    pts[n].yi = x->r.err.max_rel_vis;
+                    pts[n].x = data_est(&D, x->thr.median);
+                    pts[n].yi = x->err.max_rel_vis;
                     pts[n].ym = model;
                     pts[n].kind = 0;
                     snprintf(pts[n].label, sizeof pts[n].label, "%s %s %s", kn, x->format, x->port);
                     n++;
                 }
-            for (i = 0; i < n_rows && n < 128; i++) {
-                const row *x = &rows[i];
+            for (i = 0; i < D.n_rows && n < 128; i++) {
+                const bench_row *x = &D.rows[i].r;
                 if (strcmp(x->kernel, kn) || strcmp(x->path, "peer"))
                     continue;
-                pts[n].x = est(x->r.thr.median);
-                pts[n].yi = x->r.err.max_rel_vis;
+                pts[n].x = data_est(&D, x->thr.median);
+                pts[n].yi = x->err.max_rel_vis;
                 /* the brdf peers compute the exact-Vis model; single-term peers the kernel's own formula */
                 pts[n].ym = !strcmp(kn, "brdf_hammon") ? 0 : model;
                 pts[n].kind = 1;
@@ -962,8 +797,6 @@ static void section_pareto(void)
 /* ---- the chooser: per term and target, the most accurate choice within
  * each cost ------------------------------------------------------------------ */
 
-static double armv(const char *what, const char *kernel, const char *cpu);
-
 typedef struct choice { const char *kernel, *format; double cost, impl, model; } choice;
 
 /* a candidate's implementation error: measured on this machine's port (the
@@ -971,8 +804,8 @@ typedef struct choice { const char *kernel, *format; double cost, impl, model; }
  * the f32 scalar code is the same source) */
 static double impl_of(const char *kn, const char *format, const char *port)
 {
-    const row *x = find_row(kn, format, port, "batch");
-    return x ? x->r.err.max_rel_vis : -1;
+    const bench_row *x = data_row_of(&D, kn, format, port, "batch");
+    return x ? x->err.max_rel_vis : -1;
 }
 
 static double total_of(const choice *c) { return (c->model > 0 ? c->model : 0) + c->impl; }
@@ -1023,8 +856,8 @@ static void section_choose(void)
         { "Cortex-M4 with FPU", NULL, "cortex-m4", "cyc (llvm-mca)", 0, 1, NULL, NULL },
     };
     char why_neon[300], why_helium[300];
-    int ok_neon = armvec_status("neon", why_neon, sizeof why_neon);
-    int ok_helium = armvec_status("helium", why_helium, sizeof why_helium);
+    int ok_neon = data_armvec_status(&D, "neon", why_neon, sizeof why_neon);
+    int ok_helium = data_armvec_status(&D, "helium", why_helium, sizeof why_helium);
     int g, t;
     h2("Which one to use");
     para("For each term and target: the Pareto frontier of kernel variant x format x tier by cost and by error "
@@ -1059,12 +892,12 @@ static void section_choose(void)
                 for (f = 0; f < 4 && n < 64; f++) {
                     double cost = -1, impl;
                     if (tg[t].port) {
-                        const row *x = find_row(kn, fmts[f], tg[t].port, "batch");
+                        const bench_row *x = data_row_of(&D, kn, fmts[f], tg[t].port, "batch");
                         if (x)
-                            cost = est(x->r.thr.median);
+                            cost = data_est(&D, x->thr.median);
                         impl = impl_of(kn, fmts[f], tg[t].port);
                     } else if (tg[t].vec) {
-                        cost = armvec_of(fmts[f], tg[t].vec, kn, tg[t].measure);
+                        cost = data_armvec(&D, fmts[f], tg[t].vec, kn, tg[t].measure);
                         impl = impl_of(kn, fmts[f], "scalar");
                     } else {
                         const char *what = f == 0 ? (tg[t].f32fpu ? "f32fpu" : tg[t].f32soft ? "f32soft" : NULL)
@@ -1073,7 +906,7 @@ static void section_choose(void)
                         if (!what)
                             continue;
                         snprintf(key, sizeof key, "%s-%s", what, !strcmp(tg[t].cpu, "cortex-m0") ? "m0cyc" : "mca");
-                        cost = armv(key, kn, tg[t].cpu);
+                        cost = data_arm(&D, key, kn, tg[t].cpu);
                         impl = impl_of(kn, fmts[f], "scalar");
                     }
                     if (cost <= 0 || impl < 0)
@@ -1483,15 +1316,15 @@ static void section_raster(void)
         rs_diff(g, ref, img, &maxd, &meand);
         img_compare_rgb8(&ie, img, ref, g->idx, g->n);
         reps = 1;
-        s = cyc_measure(shade_work, &c, reps, (double)g->n, quick ? 11 : 11);
-        per_eval = est(s.median) / (3.0 * g->n_lights);
+        s = data_timing_of(&D, files[p], shade_work, &c, reps, (double)g->n, 11);
+        per_eval = data_est(&D, s.median) / (3.0 * g->n_lights);
         if (p == 1)
             raster_avx2_per_eval = per_eval;
         if (p == 3)
             raster_batch_per_eval = per_eval;
         cells[0] = names[p];
         cells[1] = fmt(b[0], sizeof b[0], "%.1f", s.median);
-        cells[2] = fmt(b[1], sizeof b[1], "%.1f", est(s.median));
+        cells[2] = fmt(b[1], sizeof b[1], "%.1f", data_est(&D, s.median));
         cells[3] = fmt(b[2], sizeof b[2], "%.2f", per_eval);
         cells[4] = fmt(b[3], sizeof b[3], "%.1f%%%s", 100 * s.spread, s.noisy ? " !" : "");
         cells[5] = fmt(b[4], sizeof b[4], "%d", maxd);
@@ -1525,12 +1358,6 @@ static void section_raster(void)
     rs_free(g);
 }
 
-static double armv(const char *what, const char *kernel, const char *cpu)
-{
-    const tsv *t = arm_of(what, kernel, cpu);
-    return t ? t->v : -1;
-}
-
 static const char *armcell(char *b, size_t n, double v)
 {
     if (v < 0)
@@ -1542,7 +1369,7 @@ static void section_arm(void)
 {
     size_t ki;
     h2("Cortex-M: fixed point vs soft-float f32 (qemu traces; measured counts, modelled cycles)");
-    if (!n_arm) {
+    if (!D.n_arm) {
         para("No Cortex-M figures in this build (arm.tsv empty: bench/cortexm/cortexm.sh needs arm-none-eabi-gcc "
              "with newlib and qemu-system-arm; llvm-mca for the modelled cycles).");
         return;
@@ -1570,22 +1397,22 @@ static void section_arm(void)
         const char *kn = facet_kernel_at(ki)->name;
         char b[12][96];
         const char *cells[12];
-        double fm4 = armv("fx-mca", kn, "cortex-m4"), sm4 = armv("f32soft-mca", kn, "cortex-m4");
-        double f0c = armv("fx-m0cyc", kn, "cortex-m0"), s0c = armv("f32soft-m0cyc", kn, "cortex-m0");
-        if (armv("fx-insns", kn, "cortex-m4") < 0 && armv("f32soft-insns", kn, "cortex-m4") < 0)
+        double fm4 = data_arm(&D, "fx-mca", kn, "cortex-m4"), sm4 = data_arm(&D, "f32soft-mca", kn, "cortex-m4");
+        double f0c = data_arm(&D, "fx-m0cyc", kn, "cortex-m0"), s0c = data_arm(&D, "f32soft-m0cyc", kn, "cortex-m0");
+        if (data_arm(&D, "fx-insns", kn, "cortex-m4") < 0 && data_arm(&D, "f32soft-insns", kn, "cortex-m4") < 0)
             continue;
         cells[0] = kn;
-        cells[1] = armcell(b[1], sizeof b[1], armv("fx-insns", kn, "cortex-m0"));
+        cells[1] = armcell(b[1], sizeof b[1], data_arm(&D, "fx-insns", kn, "cortex-m0"));
         cells[2] = armcell(b[2], sizeof b[2], f0c);
-        cells[3] = armcell(b[3], sizeof b[3], armv("fx-insns", kn, "cortex-m4"));
-        cells[4] = fm4 < 0 ? "-" : fmt(b[4], sizeof b[4], "%.0f / %.0f / %.0f", fm4, armv("fx-mca", kn, "cortex-m7"),
-                                       armv("fx-mca", kn, "cortex-m33"));
-        cells[5] = armcell(b[5], sizeof b[5], armv("fx-taken", kn, "cortex-m4"));
-        cells[6] = armcell(b[6], sizeof b[6], armv("f32soft-insns", kn, "cortex-m0"));
+        cells[3] = armcell(b[3], sizeof b[3], data_arm(&D, "fx-insns", kn, "cortex-m4"));
+        cells[4] = fm4 < 0 ? "-" : fmt(b[4], sizeof b[4], "%.0f / %.0f / %.0f", fm4, data_arm(&D, "fx-mca", kn, "cortex-m7"),
+                                       data_arm(&D, "fx-mca", kn, "cortex-m33"));
+        cells[5] = armcell(b[5], sizeof b[5], data_arm(&D, "fx-taken", kn, "cortex-m4"));
+        cells[6] = armcell(b[6], sizeof b[6], data_arm(&D, "f32soft-insns", kn, "cortex-m0"));
         cells[7] = armcell(b[7], sizeof b[7], s0c);
-        cells[8] = armcell(b[8], sizeof b[8], armv("f32soft-insns", kn, "cortex-m4"));
+        cells[8] = armcell(b[8], sizeof b[8], data_arm(&D, "f32soft-insns", kn, "cortex-m4"));
         cells[9] = sm4 < 0 ? "-" : fmt(b[9], sizeof b[9], "%.0f / %.0f / %.0f", sm4,
-                                       armv("f32soft-mca", kn, "cortex-m7"), armv("f32soft-mca", kn, "cortex-m33"));
+                                       data_arm(&D, "f32soft-mca", kn, "cortex-m7"), data_arm(&D, "f32soft-mca", kn, "cortex-m33"));
         cells[10] = fm4 > 0 && sm4 > 0 ? fmt(b[10], sizeof b[10], "%.1fx", sm4 / fm4) : "-";
         cells[11] = f0c > 0 && s0c > 0 ? fmt(b[11], sizeof b[11], "%.1fx", s0c / f0c) : "-";
         trow(cells);
@@ -1599,22 +1426,22 @@ static void section_arm(void)
         const char *kn = facet_kernel_at(ki)->name;
         char b[9][96];
         const char *cells[9];
-        double q4 = armv("fxfast-mca", kn, "cortex-m4"), p4 = armv("fx-mca", kn, "cortex-m4");
-        double h4 = armv("f32fpu-mca", kn, "cortex-m4");
-        if (armv("fxfast-insns", kn, "cortex-m4") < 0 && armv("f32fpu-insns", kn, "cortex-m4") < 0)
+        double q4 = data_arm(&D, "fxfast-mca", kn, "cortex-m4"), p4 = data_arm(&D, "fx-mca", kn, "cortex-m4");
+        double h4 = data_arm(&D, "f32fpu-mca", kn, "cortex-m4");
+        if (data_arm(&D, "fxfast-insns", kn, "cortex-m4") < 0 && data_arm(&D, "f32fpu-insns", kn, "cortex-m4") < 0)
             continue;
         cells[0] = kn;
-        cells[1] = armcell(b[1], sizeof b[1], armv("fxfast-insns", kn, "cortex-m0"));
-        cells[2] = armcell(b[2], sizeof b[2], armv("fxfast-m0cyc", kn, "cortex-m0"));
-        cells[3] = armcell(b[3], sizeof b[3], armv("fxfast-insns", kn, "cortex-m4"));
-        cells[4] = q4 < 0 ? "-" : fmt(b[4], sizeof b[4], "%.0f / %.0f / %.0f", q4, armv("fxfast-mca", kn, "cortex-m7"),
-                                      armv("fxfast-mca", kn, "cortex-m33"));
-        cells[5] = armcell(b[5], sizeof b[5], armv("fx-insns", kn, "cortex-m4"));
-        cells[6] = armcell(b[6], sizeof b[6], armv("f32fpu-insns", kn, "cortex-m4"));
+        cells[1] = armcell(b[1], sizeof b[1], data_arm(&D, "fxfast-insns", kn, "cortex-m0"));
+        cells[2] = armcell(b[2], sizeof b[2], data_arm(&D, "fxfast-m0cyc", kn, "cortex-m0"));
+        cells[3] = armcell(b[3], sizeof b[3], data_arm(&D, "fxfast-insns", kn, "cortex-m4"));
+        cells[4] = q4 < 0 ? "-" : fmt(b[4], sizeof b[4], "%.0f / %.0f / %.0f", q4, data_arm(&D, "fxfast-mca", kn, "cortex-m7"),
+                                      data_arm(&D, "fxfast-mca", kn, "cortex-m33"));
+        cells[5] = armcell(b[5], sizeof b[5], data_arm(&D, "fx-insns", kn, "cortex-m4"));
+        cells[6] = armcell(b[6], sizeof b[6], data_arm(&D, "f32fpu-insns", kn, "cortex-m4"));
         {
             char m7[16];
             cells[7] = h4 < 0 ? "-" : fmt(b[7], sizeof b[7], "%.0f / %s", h4,
-                                          armcell(m7, sizeof m7, armv("f32fpu-mca", kn, "cortex-m7")));
+                                          armcell(m7, sizeof m7, data_arm(&D, "f32fpu-mca", kn, "cortex-m7")));
         }
         cells[8] = q4 > 0 && p4 > 0 ? fmt(b[8], sizeof b[8], "%.1fx", p4 / q4) : "-";
         trow(cells);
@@ -1634,16 +1461,16 @@ static void target_tiers(void)
     size_t w, t;
     for (w = 0; w < 2; w++)
         for (t = 0; t < 2; t++) {
-            const row *x = find_row("brdf_hammon", tiers[t].format, widths[w], "batch"), *p;
+            const bench_row *x = data_row_of(&D, "brdf_hammon", tiers[t].format, widths[w], "batch"), *p;
             snprintf(peer, sizeof peer, "shader_%s_fm", widths[w]);
-            p = find_row("brdf_hammon", "f32", peer, "peer");
+            p = data_row_of(&D, "brdf_hammon", "f32", peer, "peer");
             cells[0] = fmt(b[0], sizeof b[0], "%s brdf_hammon %s batch >= %.1fx the fast-math shader peer at the same width",
                            widths[w], tiers[t].format, tiers[t].want);
             if (x && p) {
-                double r = p->r.thr.median / x->r.thr.median;
+                double r = p->thr.median / x->thr.median;
                 cells[1] = fmt(b[1], sizeof b[1], "%.2fx (%.2f vs %.2f est. cycles/sample); max err %.3g vs bound %.3g",
-                               r, est(x->r.thr.median), est(p->r.thr.median), x->r.err.max_rel, x->r.bound);
-                cells[2] = r >= tiers[t].want && x->r.within ? "yes" : "**no**";
+                               r, data_est(&D, x->thr.median), data_est(&D, p->thr.median), x->err.max_rel, x->bound);
+                cells[2] = r >= tiers[t].want && x->within ? "yes" : "**no**";
                 cells[3] = "ratio within one run; the peer (-march of the same width, -ffast-math) computes the "
                            "exact-Vis model from vectors, max error ~0.3 at the peak";
             } else {
@@ -1654,8 +1481,8 @@ static void target_tiers(void)
             trow(cells);
         }
     {
-        double m4 = armv("fxfast-insns", "brdf_hammon", "cortex-m4"), m0 = armv("fxfast-insns", "brdf_hammon", "cortex-m0");
-        double fpu = armv("f32fpu-insns", "brdf_hammon", "cortex-m4"), m4mca = armv("fxfast-mca", "brdf_hammon", "cortex-m4");
+        double m4 = data_arm(&D, "fxfast-insns", "brdf_hammon", "cortex-m4"), m0 = data_arm(&D, "fxfast-insns", "brdf_hammon", "cortex-m0");
+        double fpu = data_arm(&D, "f32fpu-insns", "brdf_hammon", "cortex-m4"), m4mca = data_arm(&D, "fxfast-mca", "brdf_hammon", "cortex-m4");
         cells[0] = "fx_fast brdf_hammon <= 150 executed instructions per call on Cortex-M4, <= 450 on Cortex-M0, "
                    "fewer than the f32 kernel on the M4's FPU";
         if (m4 > 0 && m0 > 0) {
@@ -1674,8 +1501,8 @@ static void target_tiers(void)
 
 static void section_targets(void)
 {
-    const row *ab = find_row("brdf_hammon", "f32", "avx2", "batch");
-    const row *fastest = NULL;
+    const bench_row *ab = data_row_of(&D, "brdf_hammon", "f32", "avx2", "batch");
+    const bench_row *fastest = NULL;
     char b[12][400];
     const char *cells[4];
     int i;
@@ -1684,15 +1511,15 @@ static void section_targets(void)
     thead(4, "target", "measured / modelled", "met?", "note");
     /* the fastest peer at AVX2's width (built -march=x86-64-v3), or the
      * width-independent textbook peer */
-    for (i = 0; i < n_rows; i++)
-        if (!strcmp(rows[i].path, "peer") && !strcmp(rows[i].kernel, "brdf_hammon") &&
-            (strstr(rows[i].port, "_avx2") || !strstr(rows[i].port, "_avx512")) &&
-            (!fastest || rows[i].r.thr.median < fastest->r.thr.median))
-            fastest = &rows[i];
+    for (i = 0; i < D.n_rows; i++)
+        if (!strcmp(D.rows[i].path, "peer") && !strcmp(D.rows[i].kernel, "brdf_hammon") &&
+            (strstr(D.rows[i].port, "_avx2") || !strstr(D.rows[i].port, "_avx512")) &&
+            (!fastest || D.rows[i].r.thr.median < fastest->thr.median))
+            fastest = &D.rows[i].r;
     cells[0] = "AVX2 brdf_hammon batch <= 3.0 core cycles/sample";
     if (ab) {
-        double c = est(ab->r.thr.median);
-        cells[1] = fmt(b[0], sizeof b[0], "%.2f %s", c, cyc_is_cycles() ? "cycles (measured)" : "est. cycles (TSC ticks / measured ratio)");
+        double c = data_est(&D, ab->thr.median);
+        cells[1] = fmt(b[0], sizeof b[0], "%.2f %s", c, D.clock.is_cycles ? "cycles (measured)" : "est. cycles (TSC ticks / measured ratio)");
         cells[2] = c <= 3.0 ? "yes" : "**no**";
     } else {
         cells[1] = "no AVX2 on this machine";
@@ -1702,10 +1529,10 @@ static void section_targets(void)
     trow(cells);
     cells[0] = "AVX2 brdf_hammon >= 1.8x faster than the fastest peer at the same width, within its bound";
     if (ab && fastest) {
-        double r = fastest->r.thr.median / ab->r.thr.median;
+        double r = fastest->thr.median / ab->thr.median;
         cells[1] = fmt(b[1], sizeof b[1], "%.2fx vs %s (%.2f est. cycles/sample); max err %.3g vs bound %.3g", r,
-                       fastest->port, est(fastest->r.thr.median), ab->r.err.max_rel, ab->r.bound);
-        cells[2] = r >= 1.8 && ab->r.within ? "yes" : "**no**";
+                       fastest->port, data_est(&D, fastest->thr.median), ab->err.max_rel, ab->bound);
+        cells[2] = r >= 1.8 && ab->within ? "yes" : "**no**";
         cells[3] = "ratio within one run; the peer computes the exact-Vis model from vectors (see peers)";
     } else {
         cells[1] = "-";
@@ -1715,37 +1542,37 @@ static void section_targets(void)
     trow(cells);
     for (ki = 0; ki < facet_kernel_count(); ki++) {
         const char *kn = facet_kernel_at(ki)->name;
-        const row *x = find_row(kn, "f32", "avx2", "batch");
-        double m = mca_of("f32", "avx2", kn, "znver3");
+        const bench_row *x = data_row_of(&D, kn, "f32", "avx2", "batch");
+        double m = data_mca(&D, "f32", "avx2", kn, "znver3");
         if (!x || m <= 0)
             continue;
         cells[0] = fmt(b[2], sizeof b[2], "AVX2 %s within 1.25x of llvm-mca znver3", kn);
         cells[1] = fmt(b[3], sizeof b[3], "%.2f est. cycles vs %.2f modelled (%.2fx); skylake model %.2f",
-                       est(x->r.thr.median), m, est(x->r.thr.median) / m, mca_of("f32", "avx2", kn, "skylake"));
-        cells[2] = est(x->r.thr.median) <= 1.25 * m ? "yes" : "**no**";
+                       data_est(&D, x->thr.median), m, data_est(&D, x->thr.median) / m, data_mca(&D, "f32", "avx2", kn, "skylake"));
+        cells[2] = data_est(&D, x->thr.median) <= 1.25 * m ? "yes" : "**no**";
         cells[3] = "this machine is not a Zen 3 (see clock)";
         trow(cells);
     }
     for (ki = 0; ki < facet_kernel_count(); ki++) { /* target: every AVX2 kernel >= 5x its scalar port */
         const char *kn = facet_kernel_at(ki)->name;
-        const row *x = find_row(kn, "f32", "avx2", "batch"), *sc = find_row(kn, "f32", "scalar", "batch");
+        const bench_row *x = data_row_of(&D, kn, "f32", "avx2", "batch"), *sc = data_row_of(&D, kn, "f32", "scalar", "batch");
         if (!x || !sc)
             continue;
         cells[0] = fmt(b[2], sizeof b[2], "AVX2 %s >= 5x its scalar port (batch)", kn);
-        cells[1] = fmt(b[3], sizeof b[3], "%.1fx (%.2f vs %.2f est. cycles/sample)", sc->r.thr.median / x->r.thr.median,
-                       est(sc->r.thr.median), est(x->r.thr.median));
-        cells[2] = sc->r.thr.median >= 5.0 * x->r.thr.median ? "yes" : "**no**";
+        cells[1] = fmt(b[3], sizeof b[3], "%.1fx (%.2f vs %.2f est. cycles/sample)", sc->thr.median / x->thr.median,
+                       data_est(&D, sc->thr.median), data_est(&D, x->thr.median));
+        cells[2] = sc->thr.median >= 5.0 * x->thr.median ? "yes" : "**no**";
         cells[3] = "ratio within one run";
         trow(cells);
     }
     {
-        double fx = armv("fx-mca", "brdf_hammon", "cortex-m4"), sf = armv("f32soft-mca", "brdf_hammon", "cortex-m4");
-        double fxi = armv("fx-insns", "brdf_hammon", "cortex-m4"), sfi = armv("f32soft-insns", "brdf_hammon", "cortex-m4");
-        double f0 = armv("fx-m0cyc", "brdf_hammon", "cortex-m0"), s0 = armv("f32soft-m0cyc", "brdf_hammon", "cortex-m0");
+        double fx = data_arm(&D, "fx-mca", "brdf_hammon", "cortex-m4"), sf = data_arm(&D, "f32soft-mca", "brdf_hammon", "cortex-m4");
+        double fxi = data_arm(&D, "fx-insns", "brdf_hammon", "cortex-m4"), sfi = data_arm(&D, "f32soft-insns", "brdf_hammon", "cortex-m4");
+        double f0 = data_arm(&D, "fx-m0cyc", "brdf_hammon", "cortex-m0"), s0 = data_arm(&D, "f32soft-m0cyc", "brdf_hammon", "cortex-m0");
         cells[0] = "fx brdf_hammon <= 150 cycles/sample on Cortex-M4 (llvm-mca)";
         cells[1] = fx > 0 ? fmt(b[4], sizeof b[4], "%.0f cycles per call, MODELLED (llvm-mca cortex-m4 on the executed "
                                                     "trace, %.0f instructions measured under qemu; + %.0f taken branches "
-                                                    "at 1-3 cycles not modelled)", fx, fxi, armv("fx-taken", "brdf_hammon", "cortex-m4"))
+                                                    "at 1-3 cycles not modelled)", fx, fxi, data_arm(&D, "fx-taken", "brdf_hammon", "cortex-m4"))
                           : "not available";
         cells[2] = fx > 0 ? (fx <= 150 ? "yes" : "**no**") : "n/a";
         cells[3] = "4 representative inputs, mean per call; see the Cortex-M section";
@@ -1767,9 +1594,9 @@ static void section_targets(void)
     }
     cells[0] = "rasterizer AVX2 shading <= 1.3x the batch benchmark's cycles/sample";
     if (ab && raster_avx2_per_eval > 0) {
-        double r = raster_avx2_per_eval / est(ab->r.thr.median);
+        double r = raster_avx2_per_eval / data_est(&D, ab->thr.median);
         cells[1] = fmt(b[6], sizeof b[6], "%.2f est. cycles per BRDF evaluation vs %.2f (%.2fx)", raster_avx2_per_eval,
-                       est(ab->r.thr.median), r);
+                       data_est(&D, ab->thr.median), r);
         cells[2] = r <= 1.3 ? "yes" : "**no**";
         cells[3] = "shading cost includes the per-pixel vectors and dots, amortised over 3 channels";
     } else {
@@ -1961,22 +1788,25 @@ int facet_bench_report(int argc, char **argv)
     char path[1024];
     int i;
     time_t t0 = time(NULL);
+    const char *replay = NULL;
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--quick"))
             quick = 1;
-        else
+        else if (!strcmp(argv[i], "--replay") && i + 1 < argc)
+            replay = argv[++i];
+        else if (argv[i][0] != '-' && !outdir)
             outdir = argv[i];
+        else
+            outdir = NULL, i = argc;
     }
     if (!outdir) {
-        fprintf(stderr, "usage: facet-bench report OUTDIR [--quick]\n");
+        fprintf(stderr, "usage: facet-bench report OUTDIR [--quick] [--replay MEASURED.tsv]\n");
         return 2;
     }
-    cyc_init();
-    tpc = cyc_ticks_per_cycle();
-    mca = read_tsv("mca.tsv", &n_mca, 1);
-    sizes = read_tsv("size.tsv", &n_sizes, 0);
-    arm = read_tsv("arm.tsv", &n_arm, 0);
-    armvec = read_tsv("arm_vec.tsv", &n_armvec, 1);
+    D.quick = quick;
+    if (data_open(&D, outdir, replay) != 0)
+        return 1;
+    quick = D.quick; /* a replay renders as its recording ran */
     snprintf(path, sizeof path, "%s/bench.md", outdir);
     md = fopen(path, "w");
     snprintf(path, sizeof path, "%s/bench.html", outdir);
@@ -1995,8 +1825,14 @@ int facet_bench_report(int argc, char **argv)
     }
     o.progress = 1;
     o.sampler_batch_only = 1; /* the samplers' table shows the batch rows */
-    say("benchmarks: every kernel x format x port x path, and the peers ...");
-    bench_run(&o, collect, NULL);
+    if (D.replayed) {
+        say("replaying the measured set %s (%d rows)", replay, D.n_rows);
+    } else {
+        cyc_init();
+        data_set_clock(&D);
+        say("benchmarks: every kernel x format x port x path, and the peers ...");
+        bench_run(&o, data_add_row, &D);
+    }
     say("model-error sweep of the approximations ...");
     sweep_tradeoffs();
 
@@ -2015,7 +1851,7 @@ int facet_bench_report(int argc, char **argv)
     {
         time_t ts = time(NULL);
         say("importance sampling: cost table, picture of sampled directions, chi-square table ...");
-        report_samplers(md, html, outdir, quick, find_bench_row, tpc);
+        report_samplers(md, html, &D);
         say("importance sampling section done in %ld s", (long)(time(NULL) - ts));
     }
     section_arm();
@@ -2026,6 +1862,10 @@ int facet_bench_report(int argc, char **argv)
     fclose(html);
     write_index();
     write_report_md();
+    snprintf(path, sizeof path, "%s/measured.tsv", outdir);
+    if (!D.replayed && data_save(&D, path) != 0)
+        say("cannot write %s", path);
+    data_close(&D);
     say("bench part done in %ld s: %s/index.html, %s/bench.md", (long)(time(NULL) - t0), outdir, outdir);
     (void)both;
     return 0;

@@ -33,7 +33,7 @@ static void cell_row(FILE *md, FILE *html, int n, char c[][64])
     fprintf(html, "</tr>\n");
 }
 
-static void cost_table(FILE *md, FILE *html, report_find_fn find, double tpc)
+static void cost_table(FILE *md, FILE *html, const report_data *d)
 {
     const char *ports[8];
     int np = 0, i, t;
@@ -66,15 +66,15 @@ static void cost_table(FILE *md, FILE *html, report_find_fn find, double tpc)
     fprintf(html, "</tr>\n");
     for (si = 0; si < facet_sampler_count(); si++) {
         const char *kn = facet_sampler_at(si)->name;
-        const bench_row *peer = find(kn, "f32", "textbook", "peer"), *best = NULL, *last = NULL;
+        const bench_row *peer = data_row_of(d, kn, "f32", "textbook", "peer"), *best = NULL, *last = NULL;
         int any = 0;
         snprintf(c[0], sizeof c[0], "%s", kn);
         for (t = 0; t < 2; t++)
             for (i = 0; i < np; i++) {
-                const bench_row *r = find(kn, t ? "f32_fast" : "f32", ports[i], "batch");
+                const bench_row *r = data_row_of(d, kn, t ? "f32_fast" : "f32", ports[i], "batch");
                 if (r) {
                     snprintf(c[1 + t * np + i], sizeof c[0], "%.2f%s (%.1f)%s", r->thr.median,
-                             r->thr.noisy ? "!" : "", r->thr.median / tpc, r->within ? "" : " **BAD**");
+                             r->thr.noisy ? "!" : "", data_est(d, r->thr.median), r->within ? "" : " **BAD**");
                     any = 1;
                 } else {
                     snprintf(c[1 + t * np + i], sizeof c[0], "-");
@@ -88,7 +88,7 @@ static void cost_table(FILE *md, FILE *html, report_find_fn find, double tpc)
             continue;
         if (peer)
             snprintf(c[1 + 2 * np], sizeof c[0], "%.2f%s (%.1f)", peer->thr.median, peer->thr.noisy ? "!" : "",
-                     peer->thr.median / tpc);
+                     data_est(d, peer->thr.median));
         else
             snprintf(c[1 + 2 * np], sizeof c[0], "-");
         if (peer && best && best->thr.median > 0)
@@ -349,8 +349,10 @@ static void chi2_table(FILE *md, FILE *html, const char *outdir)
     fclose(f);
 }
 
-void report_samplers(FILE *md, FILE *html, const char *outdir, int quick, report_find_fn find, double tpc)
+void report_samplers(FILE *md, FILE *html, const report_data *d)
 {
+    const char *outdir = d->outdir;
+    int quick = d->quick;
     char *svg;
     long n = quick ? 100000 : 1000000;
     fprintf(md, "\n## Importance sampling\n\n");
@@ -363,14 +365,14 @@ void report_samplers(FILE *md, FILE *html, const char *outdir, int quick, report
                 "(tests/lib/sample_peer.h: the direct formulas with libm, in float, -O2, one sample at a time; "
                 "no peer for the anisotropic forms, reflect and pdf_vndf_reflect). Measured in the same run as "
                 "the kernels' rows; compare ratios only. Every facet row is within its facet.h bound in the "
-                "samplers' error measure (`facet-bench bench SAMPLER` shows the errors).\n\n", cyc_unit());
+                "samplers' error measure (`facet-bench bench SAMPLER` shows the errors).\n\n", d->clock.unit);
     fprintf(html, "<p>Cost of each sampler and pdf (facet.h, \"GGX and GTR importance sampling\"): %s per sample "
                   "(median; '!' where the spread exceeds 5%%) and, in parentheses, est. core cycles, through the "
                   "batch API with facet_set_port(port) active, beside the textbook peer (tests/lib/sample_peer.h: the "
                   "direct formulas with libm, -O2); gtr_sample_d timed with gamma = 1. Same run as the kernels' "
                   "rows; compare ratios only. <code>facet-bench bench SAMPLER</code> shows the errors.</p>\n",
-            cyc_unit());
-    cost_table(md, html, find, tpc);
+            d->clock.unit);
+    cost_table(md, html, d);
     svg = sampling_svg(outdir, n);
     fprintf(html, "<figure>%s<figcaption><b>Sampled half vectors against the pdf.</b> Histograms of theta_h "
                   "(the angle of h from N) of %ld samples per panel from the f32 batch samplers on port %s, "
