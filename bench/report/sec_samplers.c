@@ -317,34 +317,32 @@ void section_samplers(report *r)
     const char *unit = r->data->clock.unit;
     report_say("importance sampling: cost table, picture of sampled directions, chi-square table ...");
     doc_heading(r->doc, 2, "Importance sampling");
-    doc_only(r->doc, DOC_MD, "Cost of each sampler and pdf (facet.h, \"GGX and GTR importance sampling\"): %s per sample "
-                "(median; '!' where the spread exceeds 5%%) and, in parentheses, est. core cycles (see the clock "
-                "section), through the batch API (facet_<sampler>_f32_batch and _f32_fast_batch) with "
-                "facet_set_port(port) active, in structure-of-arrays over the in-domain inputs of "
-                "tests/sample/test_sample_accuracy.c (gtr_sample_d with gamma = 1), beside the textbook peer "
-                "(tests/lib/sample_peer.h: the direct formulas with libm, in float, -O2, one sample at a time; "
-                "no peer for the anisotropic forms, reflect and pdf_vndf_reflect). Measured in the same run as "
-                "the kernels' rows; compare ratios only. Every facet row is within its facet.h bound in the "
-                "samplers' error measure (`facet-bench bench SAMPLER` shows the errors).\n\n", unit);
-    doc_only(r->doc, DOC_HTML, "<p>Cost of each sampler and pdf (facet.h, \"GGX and GTR importance sampling\"): %s per sample "
-                  "(median; '!' where the spread exceeds 5%%) and, in parentheses, est. core cycles, through the "
-                  "batch API with facet_set_port(port) active, beside the textbook peer (tests/lib/sample_peer.h: the "
-                  "direct formulas with libm, -O2); gtr_sample_d timed with gamma = 1. Same run as the kernels' "
-                  "rows; compare ratios only. <code>facet-bench bench SAMPLER</code> shows the errors.</p>\n",
-            unit);
+    doc_para(r->doc, "Cost of each sampler and pdf (facet.h, \"GGX and GTR importance sampling\"): %s per sample "
+                     "(median; '!' where the spread exceeds 5%%) and, in parentheses, est. core cycles (see the clock "
+                     "section), through the batch API (facet_&lt;sampler&gt;_f32_batch and _f32_fast_batch) with "
+                     "facet_set_port(port) active, in structure-of-arrays over the in-domain inputs of "
+                     "tests/sample/test_sample_accuracy.c (gtr_sample_d with gamma = 1), beside the textbook peer "
+                     "(tests/lib/sample_peer.h: the direct formulas with libm, in float, -O2, one sample at a time; "
+                     "no peer for the anisotropic forms, reflect and pdf_vndf_reflect). Measured in the same run as "
+                     "the kernels' rows; compare ratios only. Every facet row is within its facet.h bound in the "
+                     "samplers' error measure (<code>facet-bench bench SAMPLER</code> shows the errors).", unit);
     cost_table(r);
     markup = sampling_svg(r->outdir, n);
-    doc_only(r->doc, DOC_HTML, "<figure>%s<figcaption><b>Sampled half vectors against the pdf.</b> Histograms of theta_h "
-                  "(the angle of h from N) of %ld samples per panel from the f32 batch samplers on port %s, "
-                  "against the marginal density of the pdf (the oracle's, integrated over the azimuth). Top: D "
-                  "sampling at three widths; bottom: visible normals at alpha 0.5 for views at 0, 60 and 89 "
-                  "degrees from N. File: sampling.svg. The goodness of fit is tested below.</figcaption></figure>\n",
-            markup ? markup : "", n, facet_port_name());
-    doc_only(r->doc, DOC_MD, "![Sampled half vectors against the pdf](sampling.svg)\n\n*Sampled half vectors against the pdf.* "
-                "Histograms of theta_h (the angle of h from N) of %ld samples per panel from the f32 batch samplers "
-                "on port %s, against the marginal density of the pdf (the oracle's, integrated over the azimuth). "
-                "Top: D sampling at alpha 0.1, 0.5, 1; bottom: visible normals at alpha 0.5 for views at 0, 60 and "
-                "89 degrees from N.\n\n", n, facet_port_name());
+    {
+        char caption[800];
+        doc_fig f;
+        snprintf(caption, sizeof caption,
+                 "Histograms of theta_h (the angle of h from N) of %ld samples per panel from the f32 batch samplers "
+                 "on port %s, against the marginal density of the pdf (the oracle's, integrated over the azimuth). "
+                 "Top: D sampling at alpha 0.1, 0.5, 1; bottom: visible normals at alpha 0.5 for views at 0, 60 and "
+                 "89 degrees from N. File: sampling.svg. The goodness of fit is tested below.", n, facet_port_name());
+        memset(&f, 0, sizeof f);
+        f.title = "Sampled half vectors against the pdf";
+        f.caption = caption;
+        f.svg = markup;
+        f.file = "sampling.svg";
+        doc_figure(r->doc, &f);
+    }
     free(markup);
     doc_heading(r->doc, 3, "Chi-square goodness of fit (tests/sample/test_sample_chi2.c)");
     doc_para(r->doc, "Each sampler against its pdf: 16 x 16 bins in (q, phi_h), q the GGX CDF of theta_h, bins "
