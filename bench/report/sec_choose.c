@@ -6,9 +6,27 @@
 #include <string.h>
 #include "facet.h"
 #include "kernel_facts.h"
+#include "choose.h"
 #include "report.h"
 
-typedef struct choice { const char *kernel, *format; double cost, impl, model; } choice;
+static const char *const fmts[] = { "f32", "f32_fast", "fx", "fx_fast" };
+
+/* targets: a port of this machine (measured est. cycles), an Arm vector
+ * port (arm_vec.tsv: llvm-mca NEON cycles, Helium instruction counts), or a
+ * Cortex-M core (arm.tsv: TRM-modelled M0 cycles, llvm-mca M4 cycles) */
+static const choose_target targets[] = {
+    { "AVX-512 (this machine)", "avx512", NULL, "cyc", 0, 0, NULL, NULL },
+    { "AVX2 (this machine)", "avx2", NULL, "cyc", 0, 0, NULL, NULL },
+    { "SSE2 (this machine)", "sse2", NULL, "cyc", 0, 0, NULL, NULL },
+    { "NEON (aarch64, Cortex-A57 model)", NULL, NULL, "cyc (llvm-mca A57 model)", 0, 0, "neon", "mca-cortex-a57" },
+    { "Helium (Cortex-M55)", NULL, NULL, "instr (qemu count)", 0, 0, "helium", "qemu-insn" },
+    { "Cortex-M0", NULL, "cortex-m0", "cyc (TRM model)", 1, 0, NULL, NULL },
+    { "Cortex-M4", NULL, "cortex-m4", "cyc (llvm-mca)", 1, 0, NULL, NULL },
+    { "Cortex-M4 with FPU", NULL, "cortex-m4", "cyc (llvm-mca)", 0, 1, NULL, NULL },
+};
+
+int choose_target_count(void) { return (int)(sizeof targets / sizeof targets[0]); }
+const choose_target *choose_target_at(int t) { return &targets[t]; }
 
 /* a candidate's implementation error: measured on this machine's port (the
  * Cortex-M builds run the scalar C: fixed point is bit-exact everywhere,
@@ -51,22 +69,50 @@ static void frontier_cell(char *out, size_t cap, choice *c, int n, const char *u
         snprintf(out, cap, "-");
 }
 
+int choose_candidates(const report_data *D, int term, int t, choice *c, int max)
+{
+    const choose_target *tg = &targets[t];
+    const char *names[32];
+    int nk = kf_term_kernels(term, names, 32), n = 0, k, f;
+    for (k = 0; k < nk; k++) {
+        const char *kn = names[k];
+        double model = kf_model_of(kn);
+        for (f = 0; f < 4 && n < max; f++) {
+            double cost = -1, impl;
+            if (tg->port) {
+                const bench_row *x = data_row_of(D, kn, fmts[f], tg->port, "batch");
+                if (x)
+                    cost = data_est(D, x->thr.median);
+                impl = impl_of(D, kn, fmts[f], tg->port);
+            } else if (tg->vec) {
+                cost = data_armvec(D, fmts[f], tg->vec, kn, tg->measure);
+                impl = impl_of(D, kn, fmts[f], "scalar");
+            } else {
+                const char *what = f == 0 ? (tg->f32fpu ? "f32fpu" : tg->f32soft ? "f32soft" : NULL)
+                                          : f == 1 ? NULL : f == 2 ? "fx" : "fxfast";
+                char key[32];
+                if (!what)
+                    continue;
+                snprintf(key, sizeof key, "%s-%s", what, !strcmp(tg->cpu, "cortex-m0") ? "m0cyc" : "mca");
+                cost = data_arm(D, key, kn, tg->cpu);
+                impl = impl_of(D, kn, fmts[f], "scalar");
+            }
+            if (cost <= 0 || impl < 0)
+                continue;
+            c[n].kernel = kn;
+            c[n].format = fmts[f];
+            c[n].cost = cost;
+            c[n].impl = impl;
+            c[n].model = model;
+            n++;
+        }
+    }
+    return n;
+}
+
 void section_choose(report *r)
 {
     report_data *D = r->data;
-    static const char *const fmts[] = { "f32", "f32_fast", "fx", "fx_fast" };
-    /* targets: a port of this machine (measured est. cycles), or a Cortex-M
-     * core (arm.tsv: TRM-modelled M0 cycles, llvm-mca M4 cycles) */
-    static const struct { const char *name, *port, *cpu, *unit; int f32soft, f32fpu; const char *vec, *measure; } tg[] = {
-        { "AVX-512 (this machine)", "avx512", NULL, "cyc", 0, 0, NULL, NULL },
-        { "AVX2 (this machine)", "avx2", NULL, "cyc", 0, 0, NULL, NULL },
-        { "SSE2 (this machine)", "sse2", NULL, "cyc", 0, 0, NULL, NULL },
-        { "NEON (aarch64, Cortex-A57 model)", NULL, NULL, "cyc (llvm-mca A57 model)", 0, 0, "neon", "mca-cortex-a57" },
-        { "Helium (Cortex-M55)", NULL, NULL, "instr (qemu count)", 0, 0, "helium", "qemu-insn" },
-        { "Cortex-M0", NULL, "cortex-m0", "cyc (TRM model)", 1, 0, NULL, NULL },
-        { "Cortex-M4", NULL, "cortex-m4", "cyc (llvm-mca)", 1, 0, NULL, NULL },
-        { "Cortex-M4 with FPU", NULL, "cortex-m4", "cyc (llvm-mca)", 0, 1, NULL, NULL },
-    };
     char why_neon[300], why_helium[300];
     int ok_neon = data_armvec_status(D, "neon", why_neon, sizeof why_neon);
     int ok_helium = data_armvec_status(D, "helium", why_helium, sizeof why_helium);
@@ -92,56 +138,23 @@ void section_choose(report *r)
          "than an approximation): there each variant's cheapest format is listed with its cost.",
          r->quick ? "a quick" : "a full", why_neon, why_helium);
     for (g = 0; g < kf_term_count(); g++) {
-        const char *names[32];
-        int any = 0, nk = kf_term_kernels(g, names, 32);
-        for (t = 0; t < (int)(sizeof tg / sizeof tg[0]); t++) {
+        int any = 0;
+        for (t = 0; t < choose_target_count(); t++) {
             choice c[64];
-            int n = 0, s2, f;
+            int n;
             static char cell[2048];
             const char *cells[3];
-            for (s2 = 0; s2 < nk; s2++) {
-                const char *kn = names[s2];
-                double model = kf_model_of(kn);
-                for (f = 0; f < 4 && n < 64; f++) {
-                    double cost = -1, impl;
-                    if (tg[t].port) {
-                        const bench_row *x = data_row_of(D, kn, fmts[f], tg[t].port, "batch");
-                        if (x)
-                            cost = data_est(D, x->thr.median);
-                        impl = impl_of(D, kn, fmts[f], tg[t].port);
-                    } else if (tg[t].vec) {
-                        cost = data_armvec(D, fmts[f], tg[t].vec, kn, tg[t].measure);
-                        impl = impl_of(D, kn, fmts[f], "scalar");
-                    } else {
-                        const char *what = f == 0 ? (tg[t].f32fpu ? "f32fpu" : tg[t].f32soft ? "f32soft" : NULL)
-                                                  : f == 1 ? NULL : f == 2 ? "fx" : "fxfast";
-                        char key[32];
-                        if (!what)
-                            continue;
-                        snprintf(key, sizeof key, "%s-%s", what, !strcmp(tg[t].cpu, "cortex-m0") ? "m0cyc" : "mca");
-                        cost = data_arm(D, key, kn, tg[t].cpu);
-                        impl = impl_of(D, kn, fmts[f], "scalar");
-                    }
-                    if (cost <= 0 || impl < 0)
-                        continue;
-                    c[n].kernel = kn;
-                    c[n].format = fmts[f];
-                    c[n].cost = cost;
-                    c[n].impl = impl;
-                    c[n].model = model;
-                    n++;
-                }
-            }
-            if (!n && tg[t].vec && !(!strcmp(tg[t].vec, "neon") ? ok_neon : ok_helium)) {
+            n = choose_candidates(D, g, t, c, 64);
+            if (!n && targets[t].vec && !(!strcmp(targets[t].vec, "neon") ? ok_neon : ok_helium)) {
                 /* the target could not be costed here: the table says why */
                 if (!any) {
                     doc_heading(r->doc, 3, "%s", kf_term_title(g));
                     doc_table(r->doc, 3, "target", "candidates", "within this cost, the most accurate choice");
                     any = 1;
                 }
-                cells[0] = tg[t].name;
+                cells[0] = targets[t].name;
                 cells[1] = "0";
-                snprintf(cell, sizeof cell, "not costed: %s", !strcmp(tg[t].vec, "neon") ? why_neon : why_helium);
+                snprintf(cell, sizeof cell, "not costed: %s", !strcmp(targets[t].vec, "neon") ? why_neon : why_helium);
                 cells[2] = cell;
                 doc_row(r->doc, cells);
                 continue;
@@ -165,7 +178,7 @@ void section_choose(report *r)
                         c[m++] = c[i];
                     else
                         other[i - m] = c[i];
-                frontier_cell(cell, sizeof cell, c, m, tg[t].unit);
+                frontier_cell(cell, sizeof cell, c, m, targets[t].unit);
                 if (!m)
                     cell[0] = 0;
                 len = strlen(cell);
@@ -179,12 +192,12 @@ void section_choose(report *r)
                         continue;
                     len += (size_t)snprintf(cell + len, sizeof cell - len, "%s%s <b>%s %s</b>: %.3g %s (impl. error %.3g)",
                                             len ? "<br>" : "", ref ? "a different model:" : "", other[i].kernel,
-                                            other[i].format, other[i].cost, tg[t].unit, other[i].impl);
+                                            other[i].format, other[i].cost, targets[t].unit, other[i].impl);
                 }
             }
             {
                 char nb[16];
-                cells[0] = tg[t].name;
+                cells[0] = targets[t].name;
                 cells[1] = report_fmt(nb, sizeof nb, "%d", n);
                 cells[2] = cell;
                 doc_row(r->doc, cells);
