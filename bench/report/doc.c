@@ -57,14 +57,20 @@ static char *vformat(const char *fmt, va_list ap)
     return b;
 }
 
+/* t = the caller's format and arguments, formatted */
+#define FORMAT_ARGS(t, fmt)                                                                            \
+    do {                                                                                               \
+        va_list ap_;                                                                                   \
+        va_start(ap_, fmt);                                                                            \
+        t = vformat(fmt, ap_);                                                                         \
+        va_end(ap_);                                                                                   \
+    } while (0)
+
 void doc_heading(doc *d, int level, const char *fmt, ...)
 {
-    va_list ap;
     char *t;
     int i;
-    va_start(ap, fmt);
-    t = vformat(fmt, ap);
-    va_end(ap);
+    FORMAT_ARGS(t, fmt);
     for (i = 0; i < d->n; i++)
         d->w[i]->heading(d->w[i], level, t);
     free(t);
@@ -72,12 +78,9 @@ void doc_heading(doc *d, int level, const char *fmt, ...)
 
 void doc_para(doc *d, const char *fmt, ...)
 {
-    va_list ap;
     char *t;
     int i;
-    va_start(ap, fmt);
-    t = vformat(fmt, ap);
-    va_end(ap);
+    FORMAT_ARGS(t, fmt);
     for (i = 0; i < d->n; i++)
         d->w[i]->para(d->w[i], t);
     free(t);
@@ -133,12 +136,9 @@ void doc_markdown(doc *d, const char *text, size_t n)
 
 void doc_only(doc *d, int kind, const char *fmt, ...)
 {
-    va_list ap;
     char *t;
     int i;
-    va_start(ap, fmt);
-    t = vformat(fmt, ap);
-    va_end(ap);
+    FORMAT_ARGS(t, fmt);
     for (i = 0; i < d->n; i++)
         if (d->w[i]->kind == kind)
             fputs(t, d->w[i]->f);
