@@ -903,7 +903,7 @@ typedef struct facet_material_f32 {
  * channel's f0 or albedo that channel).  Runs on the active port, any n,
  * any alignment; an output may be the very same array (same layout) as an
  * input, no other overlap.  Cost per sample: one brdf_hammon geometry and
- * three channel tails (`build/facet-bench api`, README "Per-pixel use":
+ * three channel tails (measured by `build/facet-bench api`:
  * 0.48x to 0.64x the time of three brdf_hammon batches
  * on every port; the material forms 6-11% faster than planar arrays of the
  * same values; the interleaved forms gather through the stack, 1.9x to
@@ -969,7 +969,7 @@ typedef struct facet_dirs_f32 {
  * rounding is the caller's geometry), plus one rounding for the factor.
  * Cost: 15 scalar ops for the three dots, 2 compares and 3 multiplies for
  * the factor, then facet_brdf_hammon_rgb_f32 (the scalar port: measured
- * within noise of that call alone, README "Per-pixel use"). */
+ * within noise of that call alone, `build/facet-bench api`). */
 void facet_shade_hammon_rgb_f32(float out[3], const facet_dirs_f32 *dirs,
                                 const facet_material_f32 *m);
 /* the same on facet_brdf_hammon_rgb_f32_fast */
