@@ -1020,7 +1020,7 @@ size_t facet_kernel_count(void);
 const facet_kernel *facet_kernel_at(size_t i);
 const facet_kernel *facet_kernel_find(const char *name); /* NULL if unknown */
 
-/* ---- GGX and GTR importance sampling ----------------------------------------
+/* ==== GGX and GTR importance sampling ========================================
  * Samplers of half vectors h (the microfacet normal) in the shading frame
  * (N = +z) and their pdfs (per unit solid angle of h), f32 in both tiers,
  * inline in every port header (facet_<sampler>_f32_<port>(V h[3], ...),
