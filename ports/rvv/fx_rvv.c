@@ -35,9 +35,7 @@ typedef vuint64m2_t fxv_u64;
  * 14.6 to 27.2).  Precise: every kernel but loh_from_dots, whose one root is
  * lane by lane (0.96; 1.07): 1.33 (2.07) smith_g2_uncorrelated to 9.44
  * (35.5) g_kelemen, brdf_hammon 2.04 (4.73).  (Before: no precise kernel on
- * lanes.)  The precise table is facet_fx_port_rvv, which the dispatcher's
- * rvv entry has yet to name (src/core/dispatch.c runs the scalar loops
- * there until it does; tests/fx/test_fx_ports.c checks the table itself). */
+ * lanes.) */
 #define FXV_LANES_FX(X) X(noh_from_dots) X(fresnel_schlick) X(ggx_d) X(ggx_aniso_d) X(smith_g1) X(smith_g2)      \
     X(smith_g2_uncorrelated) X(smith_vis) X(smith_g1_hammon) X(smith_g2_hammon) X(smith_vis_hammon)                \
     X(g_implicit) X(g_neumann) X(g_cook_torrance) X(g_kelemen) X(smith_g1_beckmann) X(smith_g1_schlick_beckmann) \
