@@ -26,38 +26,14 @@
 
 static int fast_tier; /* 0: fx, 1: fx_fast */
 typedef void (*batch_fn)(void *out, const int32_t *const *in, size_t n);
-static batch_fn direct_; /* a port table's member instead of the entry point */
 
-/* the public batch entry point of k in the tier under test (or direct_);
+/* the public batch entry point of k in the tier under test;
  * out holds out_bits/8-byte elements */
 static void batch(const facet_fx_kernel *k, void *out, int32_t *const *in, size_t n)
 {
-    (direct_ ? direct_ : fast_tier ? k->fx_fast_batch : k->fx_batch)(out, (const int32_t *const *)in, n);
+    (fast_tier ? k->fx_fast_batch : k->fx_batch)(out, (const int32_t *const *)in, n);
 }
 
-#if defined(FACET_PORT_RVV)
-/* the rvv port's precise table, which the dispatcher does not name yet
- * (ports/rvv/fx_rvv.c): its members called directly */
-#include "../../src/core/port.h"
-extern const facet_fx_port facet_fx_port_rvv;
-#define RVV_ARG_(q) in[q]
-#define FACET_KERNEL(name, NAME, n, T, fx_frac, fx_max, fx_format, fx_code, ...) FACET_IF_PRECISE(fx_code, \
-    static void rvv_##name(void *out, const int32_t *const *in, size_t count)                          \
-    {                                                                                                  \
-        facet_fx_port_rvv.name((T *)out, FACET_EACH_INPUT(n, RVV_ARG_), count);                         \
-    })
-#include "../../src/core/kernels.def"
-#undef FACET_KERNEL
-static batch_fn rvv_precise(const char *want)
-{
-#define FACET_KERNEL(name, NAME, n, T, fx_frac, fx_max, fx_format, fx_code, ...) FACET_IF_PRECISE(fx_code, \
-    if (!strcmp(want, #name) && facet_fx_port_rvv.name)                                                \
-        return rvv_##name;)
-#include "../../src/core/kernels.def"
-#undef FACET_KERNEL
-    return NULL;
-}
-#endif
 
 static uint64_t get(const facet_fx_kernel *k, const void *out, size_t i)
 {
@@ -295,12 +271,6 @@ int main(void)
             CHECK(!strcmp(fxn, pn) || !strcmp(fxn, "scalar") || (!strcmp(pn, "avx512") && !strcmp(fxn, "avx2")),
                   "%s: fx port %s", pn, fxn);
             test_kernel_port(k, pn); /* as dispatched: the port's own code where it has some */
-#if defined(FACET_PORT_RVV)
-            if (!fast_tier && !strcmp(pn, "rvv") && (direct_ = rvv_precise(k->name)) != NULL) {
-                test_kernel_port(k, "rvv (its precise table)");
-                direct_ = NULL;
-            }
-#endif
             if (timing) {
                 double t = time_batch(k);
                 if (!strcmp(fxn, "scalar") && !strcmp(pn, "scalar"))
