@@ -7,7 +7,7 @@
 #   $(BUILD)/fx/<cpu>/fx_kernels.o, fx_fast.o Cortex-M objects for the size table
 #   $(BUILD)/fx/rv32/fx.elf                   freestanding RV32IMC link check
 #   $(BUILD)/fx/cortex-m<0|4>/fw*.elf         firmware images (tests/cortexm/fw_main.c):
-#       -Os, --gc-sections, newlib, exactly as the README's "Firmware builds"
+#       -Os, --gc-sections, newlib, exactly as src/fx/README.md's "Firmware builds"
 #       fw.elf       facet_brdf_hammon_fx_batch     fw_fast.elf  the _fx_fast_batch
 #       fw_base.elf  the same image, no facet call (the size baseline)
 #       fw_oracle.elf  also calls the oracle: the symbol check must flag it
