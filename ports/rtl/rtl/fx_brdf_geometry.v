@@ -17,11 +17,18 @@ module fx_brdf_geometry (input clk, input [31:0] nol, input [31:0] nov, input [3
                          output [5:0] g_kd, output [31:0] g_rd, output [31:0] g_shape);
     `include "fx_ops.vh"
     `include "fx_lat.vh"
-    localparam T4 = 1 + L_DOTS, T9 = T4 + L_SQRT32, T10 = T9 + 1, T14 = T10 + L_TAB20;
-    localparam T16 = T14 + L_MULHI, T22 = T16 + 3 * L_MULHI;
-    localparam TAS = T4 + L_MUL, TE = TAS + L_MULW + 2, TM = TAS + 2, TKD = TE + 2 * L_MULHI + 1;
-    localparam TRD = TKD + L_TAB20, TSH = T4 + L_SHAPE;
-    localparam LATENCY = T22;
+    // the times of the lanes: the dots, L.H, x and k, r1, ym, y5 (= G);
+    // A S, e's top word, m normalised, dm normalised, rd; the shape
+    localparam T_DOTS = 1 + L_DOTS, T_SQ = T_DOTS + L_SQRT32, T_X = T_SQ + 1, T_R1 = T_X + L_TAB20;
+    localparam T_YM = T_R1 + L_MULHI, T_Y5 = T_YM + 3 * L_MULHI;
+    localparam TAS = T_DOTS + L_MUL, TE = TAS + L_MULW + 1 + L_TOP, TM = TAS + 2, TKD = TE + 2 * L_MULHI + 1;
+    localparam TRD = TKD + L_TAB20, TSH = T_DOTS + L_SHAPE, TG2 = T_X + 2 * L_MULHI;
+    localparam LATENCY = T_Y5;
+    generate
+        if (LATENCY != L_BRDF_GEOM) begin : g_check
+            fx_latency_mismatch_L_BRDF_GEOM error ();
+        end
+    endgenerate
     reg [15:0] nl, nv, a, oma;
     reg [31:0] lov1, x, m1, uu, un, mt0, mt;
     reg [5:0] ku, em, kd;
@@ -42,16 +49,16 @@ module fx_brdf_geometry (input clk, input [31:0] nol, input [31:0] nov, input [3
         a <= f_alpha(alpha);
         oma <= 32'd32768 - f_alpha(alpha);
         lov1 <= lov;
-        // T10: k, x, and (1 + L.H) Q31 for the reciprocal
+        // T_X: k, x, and (1 + L.H) Q31 for the reciprocal
         k <= {h, 1'b0};
         x <= c9 << {h, 1'b0};
         m1 <= 32'h80000000 + (ls << (4'd11 - h));
-        // T5, T6: u normalised
+        // T_DOTS + 1, + 2: u normalised
         uu <= f_max(u, 32'd1);
         ku <= f_clz(uu);
         un <= uu << f_clz(uu);
         k5 <= {ku, 2'b00} + ku;
-        // T2: A normalised
+        // 2: A normalised
         ka <= f_clz(a);
         an <= {16'd0, a} << f_clz(a);
         // e^2 m
@@ -62,26 +69,26 @@ module fx_brdf_geometry (input clk, input [31:0] nol, input [31:0] nov, input [3
         kd <= f_clz(dm);
         dn <= dm << f_clz(dm);
     end
-    fx_dots dots (clk, nl, nv, lov1, s, u, w, c);                         // at T4
-    fx_sqrt32 sq (clk, c, ls, h);                                         // at T9
+    fx_dots dots (clk, nl, nv, lov1, s, u, w, c);                         // at T_DOTS
+    fx_sqrt32 sq (clk, c, ls, h);                                         // at T_SQ
     fx_delay #(32, L_SQRT32) dc (clk, c, c9);
     // Fresnel's y^5
-    fx_tab20 #(0) rcp1 (clk, m1, r1);                                     // at T14
-    fx_delay #(32, T14 - (T4 + 2)) dun (clk, un, und);
-    fx_mulhi #(32, 20, 12) mym (clk, und, r1, ym);                        // at T16
+    fx_tab20 #(0) rcp1 (clk, m1, r1);                                     // at T_R1
+    fx_delay #(32, T_R1 - (T_DOTS + 2)) dun (clk, un, und);
+    fx_mulhi #(32, 20, 12) mym (clk, und, r1, ym);                        // at T_YM
     fx_mulhi #(32, 32, 0) my2 (clk, ym, ym, y2);
     fx_mulhi #(32, 32, 0) my4 (clk, y2, y2, y4);
     fx_delay #(32, 2 * L_MULHI) dym (clk, ym, ymd);
-    fx_mulhi #(32, 32, 0) my5 (clk, y4, ymd, y5);                         // at T22
+    fx_mulhi #(32, 32, 0) my5 (clk, y4, ymd, y5);                         // at T_Y5
     // (a 2t)^2
-    fx_delay #(32, T10 - 2) dan (clk, an, an10);
+    fx_delay #(32, T_X - 2) dan (clk, an, an10);
     fx_mulhi #(32, 32, 0) ma2 (clk, an10, x, a2t);
-    fx_mulhi #(32, 32, 0) mg2 (clk, a2t, a2t, g2);                        // at T10 + 4
+    fx_mulhi #(32, 32, 0) mg2 (clk, a2t, a2t, g2);                        // at TG2
     // e^2 m
     fx_delay #(16, L_DOTS) da4 (clk, a, a4);
     fx_mul #(16, 17) mas (clk, {16'd0, a4}, {15'd0, s}, as);              // A S at TAS
     fx_mulw #(32, 32) mee (clk, as, as, asq);
-    fx_delay #(32, TAS + L_MULW - T4) dw (clk, w, wd);
+    fx_delay #(32, TAS + L_MULW - T_DOTS) dw (clk, w, wd);
     fx_top tp (clk, e60, et, ee);                                         // at TE
     fx_mul #(16, 16) mnn (clk, {16'd0, nl}, {16'd0, nv}, nn);
     fx_delay #(16, 1) doma (clk, oma, omad);
@@ -97,10 +104,10 @@ module fx_brdf_geometry (input clk, input [31:0] nol, input [31:0] nov, input [3
     // every lane to G
     fx_delay #(16, LATENCY - 1) o1 (clk, a, g_a);
     assign g_y5 = y5;
-    fx_delay #(8, LATENCY - (T4 + 3)) o2 (clk, k5, g_k5);
+    fx_delay #(8, LATENCY - (T_DOTS + 3)) o2 (clk, k5, g_k5);
     fx_delay #(5, LATENCY - 2) o3 (clk, ka, g_ka);
-    fx_delay #(5, LATENCY - T10) o4 (clk, k, g_k);
-    fx_delay #(32, LATENCY - (T10 + 2 * L_MULHI)) o5 (clk, g2, g_g2);
+    fx_delay #(5, LATENCY - T_X) o4 (clk, k, g_k);
+    fx_delay #(32, LATENCY - TG2) o5 (clk, g2, g_g2);
     fx_delay #(6, LATENCY - TE) o6 (clk, ee, g_ee);
     fx_delay #(6, LATENCY - TM) o7 (clk, em + 6'd17, g_em);
     fx_delay #(6, LATENCY - (TKD)) o8 (clk, kd, g_kd);

@@ -5,7 +5,8 @@ module fx_brdf_hammon (input clk, input rst, input in_valid, input [31:0] nol, i
                        input [31:0] lov, input [31:0] alpha, input [31:0] f0_in, input [31:0] albedo,
                        output out_valid, output [63:0] y);
     `include "fx_ops.vh"
-    localparam G = 22, LATENCY = G + 16;
+    `include "fx_lat.vh"
+    localparam G = L_BRDF_GEOM, LATENCY = G + L_BRDF_CHAN;
     reg [15:0] f0, omf, alb;
     wire [15:0] f0d, omfd, albd, g_a;
     wire [31:0] g_y5, g_g2, g_rd, g_shape;

@@ -7,7 +7,8 @@ module fx_brdf_hammon_rgb (input clk, input rst, input in_valid, input [31:0] no
                            input [31:0] f0_g, input [31:0] albedo_g, input [31:0] f0_b, input [31:0] albedo_b,
                            output out_valid, output [63:0] y_r, output [63:0] y_g, output [63:0] y_b);
     `include "fx_ops.vh"
-    localparam G = 22, LATENCY = G + 16;
+    `include "fx_lat.vh"
+    localparam G = L_BRDF_GEOM, LATENCY = G + L_BRDF_CHAN;
     wire [15:0] g_a;
     wire [31:0] g_y5, g_g2, g_rd, g_shape;
     wire [7:0] g_k5;

@@ -10,8 +10,8 @@ module fx_ggx_d (input clk, input rst, input in_valid, input [31:0] noh, input [
     `include "fx_ops.vh"
     `include "fx_lat.vh"
     `include "fx_consts.vh"
-    localparam T2 = 1 + L_MUL, T4 = T2 + L_MULW, T6 = T4 + 2, T10 = T6 + 2 * L_MULHI;
-    localparam LATENCY = T10 + L_DIVB;
+    localparam T_MUL = 1 + L_MUL, T_SQ = T_MUL + L_MULW, T_TOP = T_SQ + 1 + L_TOP, T_PD = T_TOP + 2 * L_MULHI;
+    localparam LATENCY = T_PD + L_DIVB;
     reg [15:0] n, a, omn;
     reg [16:0] opn;
     reg [63:0] d60;
@@ -32,11 +32,11 @@ module fx_ggx_d (input clk, input rst, input in_valid, input [31:0] noh, input [
     fx_mul #(16, 16) m3 (clk, {16'd0, a}, {16'd0, a}, aa);
     fx_mulw #(31, 31) m4 (clk, na, na, nn);
     fx_delay #(32, L_MULW) d1 (clk, w1, w1d);
-    fx_top tp (clk, d60, dt, e);                                   // at T6
+    fx_top tp (clk, d60, dt, e);                                   // at T_TOP
     fx_mulhi #(32, 32, 0) m5 (clk, dt, dt, t2);
-    fx_mulhi #(32, 32, 0) m6 (clk, t2, K_PI_30, pd);               // at T10
-    fx_delay #(32, T10 - T2) d2 (clk, aa, aad);
-    fx_delay #(32, T10 - T6 - 1) d3 (clk, b7, b10);
+    fx_mulhi #(32, 32, 0) m6 (clk, t2, K_PI_30, pd);               // at T_PD
+    fx_delay #(32, T_PD - T_MUL) d2 (clk, aa, aad);
+    fx_delay #(32, T_PD - T_TOP - 1) d3 (clk, b7, b10);
     fx_divb #(K_MAX_D) dv (clk, aad, pd, b10, y);
     fx_valid #(LATENCY) v (clk, rst, in_valid, out_valid);
 endmodule

@@ -1,7 +1,7 @@
 // fx_hammon_m: Hammon's Smith denominator m = (1 - a) 2 nl nv + a (nl + nv)
 // as m45 = 2 NL NV (2^15 - A) + A S 2^15 exact in 64 bits, and its top word
 // (the body's hammon_m): m45 ~ mt 2^(32 - e).  nl, nv, a and p = NL NV at
-// T; mt, e at T + 5.  Shared by smith_g2_hammon and smith_vis_hammon.
+// T; mt, e at T + L_HAMMON_M.  Shared by smith_g2_hammon and smith_vis_hammon.
 module fx_hammon_m (input clk, input [15:0] nl, input [15:0] nv, input [15:0] a, input [31:0] p,
                     output [31:0] mt, output [5:0] e);
     `include "fx_lat.vh"

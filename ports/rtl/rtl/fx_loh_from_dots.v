@@ -7,10 +7,11 @@ module fx_loh_from_dots (input clk, input rst, input in_valid, input [31:0] lov,
                          output reg [31:0] y);
     `include "fx_ops.vh"
     `include "fx_lat.vh"
-    localparam LATENCY = 2 + L_SQRT32 + 1;
+    localparam LATENCY = 2 + L_SQRT32 + 2;
     reg [16:0] t;
     reg [31:0] c;
-    reg tz;
+    reg tz, tz2;
+    reg [31:0] vs;
     wire [31:0] rs;
     wire [3:0] rh;
     wire tzd;
@@ -21,7 +22,11 @@ module fx_loh_from_dots (input clk, input rst, input in_valid, input [31:0] lov,
     end
     fx_sqrt32 sq (clk, c, rs, rh);
     fx_delay #(1, L_SQRT32) dz (clk, tz, tzd);
-    wire [31:0] v = (rs >> ({1'b0, rh} + 5'd4)) + 32'd1;
-    always @(posedge clk) y <= tzd ? 32'd0 : {1'b0, v[31:1]};
+    wire [31:0] v = vs + 32'd1;
+    always @(posedge clk) begin
+        vs <= rs >> ({1'b0, rh} + 5'd4);                          // round(s / 2^(5 + h)): the shift,
+        tz2 <= tzd;
+        y <= tz2 ? 32'd0 : {1'b0, v[31:1]};                        // the rounding, T = 0
+    end
     fx_valid #(LATENCY) vv (clk, rst, in_valid, out_valid);
 endmodule

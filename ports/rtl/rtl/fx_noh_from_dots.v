@@ -10,29 +10,35 @@ module fx_noh_from_dots (input clk, input rst, input in_valid, input [31:0] nol,
                          input [31:0] lov, output out_valid, output reg [31:0] y);
     `include "fx_ops.vh"
     `include "fx_lat.vh"
-    localparam T4 = 1 + L_DOTS, T9 = T4 + L_SQRT32, T13 = T9 + L_TAB20, T15 = T13 + L_MULHI;
-    localparam LATENCY = T15 + 1;
+    localparam T_DOTS = 1 + L_DOTS, T_SQ = T_DOTS + L_SQRT32, T_R = T_SQ + L_TAB20, T_X = T_R + L_MULHI;
+    localparam LATENCY = T_X + 3;
     reg [15:0] nl, nv;
     reg [31:0] lov1;
-    reg wz5;
+    reg wz5, wz2;
+    reg [31:0] xs, v2;
+    wire wzd;
     wire [16:0] s, sd;
     wire [31:0] u, w, c, rs, r, x;
     wire [3:0] rh, rhd;
-    wire wzd;
     always @(posedge clk) begin
         nl <= f_cos(nol);
         nv <= f_cos(nov);
         lov1 <= lov;
-        wz5 <= w == 32'd0;
+        wz5 <= w == 32'd0;                                         // at T_DOTS + 1
     end
-    fx_dots dots (clk, nl, nv, lov1, s, u, w, c);                  // at T4
-    fx_sqrt32 sq (clk, c, rs, rh);                                 // at T9
-    fx_tab20 #(0) rcp (clk, rs << 12, r);                          // at T13
-    fx_delay #(17, T13 - T4) ds (clk, s, sd);
-    fx_mulhi #(17, 20, 27) mx (clk, {15'd0, sd}, r, x);            // at T15
-    fx_delay #(4, T15 - T9) dh (clk, rh, rhd);
-    fx_delay #(1, T15 - T4 - 1) dw (clk, wz5, wzd);
-    wire [31:0] xs = (x >> (5'd14 - {1'b0, rhd})) + 32'd1;
-    always @(posedge clk) y <= wzd ? 32'd32768 : f_min({1'b0, xs[31:1]}, 32'd32768);
+    fx_dots dots (clk, nl, nv, lov1, s, u, w, c);                  // at T_DOTS
+    fx_sqrt32 sq (clk, c, rs, rh);                                 // at T_SQ
+    fx_tab20 #(0) rcp (clk, rs << 12, r);                          // at T_R
+    fx_delay #(17, T_R - T_DOTS) ds (clk, s, sd);
+    fx_mulhi #(17, 20, 27) mx (clk, {15'd0, sd}, r, x);            // at T_X
+    fx_delay #(4, T_X - T_SQ) dh (clk, rh, rhd);
+    fx_delay #(1, T_X - T_DOTS) dw (clk, wz5, wzd);
+    wire [31:0] xr = xs + 32'd1;
+    always @(posedge clk) begin
+        xs <= x >> (5'd14 - {1'b0, rhd});                          // round(x / 2^(15 - h)): the shift,
+        v2 <= {1'b0, xr[31:1]};                                    // the rounding,
+        wz2 <= wzd;
+        y <= wz2 ? 32'd32768 : f_min(v2, 32'd32768);               // the saturation and N.H = 1
+    end
     fx_valid #(LATENCY) v (clk, rst, in_valid, out_valid);
 endmodule

@@ -9,8 +9,8 @@ module fx_smith_g1_schlick_beckmann (input clk, input rst, input in_valid, input
     `include "fx_ops.vh"
     `include "fx_lat.vh"
     `include "fx_consts.vh"
-    localparam T3 = 1 + L_MULHI, T4 = T3 + 1, T6 = T4 + L_MULW, T8 = T6 + 2;
-    localparam LATENCY = T8 + L_DIVB;
+    localparam T_K = 1 + L_MULHI, T_OMK = T_K + 1, T_MW = T_OMK + L_MULW, T_TOP = T_MW + 1 + L_TOP;
+    localparam LATENCY = T_TOP + L_DIVB;
     reg [15:0] n, a;
     reg [31:0] omk, k4;
     reg [63:0] den;
@@ -25,12 +25,12 @@ module fx_smith_g1_schlick_beckmann (input clk, input rst, input in_valid, input
         k4 <= k;
         den <= mw + {17'd0, kd, 15'd0};
     end
-    fx_mulhi #(16, 32, 16) mk (clk, {16'd0, a}, K_SQRT_2_PI, k);      // at T3
-    fx_delay #(16, T4 - 1) dn (clk, n, n4);
-    fx_mulw #(16, 32) mw1 (clk, {16'd0, n4}, omk, mw);                // at T6
+    fx_mulhi #(16, 32, 16) mk (clk, {16'd0, a}, K_SQRT_2_PI, k);      // at T_K
+    fx_delay #(16, T_OMK - 1) dn (clk, n, n4);
+    fx_mulw #(16, 32) mw1 (clk, {16'd0, n4}, omk, mw);                // at T_MW
     fx_delay #(32, L_MULW) dk (clk, k4, kd);
-    fx_top tp (clk, den, dt, e);                                      // at T8
-    fx_delay #(16, T8 - T4) dn2 (clk, n4, n8);
+    fx_top tp (clk, den, dt, e);                                      // at T_TOP
+    fx_delay #(16, T_TOP - T_OMK) dn2 (clk, n4, n8);
     fx_divb #(32768) dv (clk, {16'd0, n8}, dt, 32'd81 - e, y);
     fx_valid #(LATENCY) v (clk, rst, in_valid, out_valid);
 endmodule

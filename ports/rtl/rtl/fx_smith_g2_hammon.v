@@ -5,7 +5,7 @@ module fx_smith_g2_hammon (input clk, input rst, input in_valid, input [31:0] no
                            input [31:0] alpha, output out_valid, output [31:0] y);
     `include "fx_ops.vh"
     `include "fx_lat.vh"
-    localparam LATENCY = 1 + L_MUL + 5 + L_DIVB;
+    localparam LATENCY = 1 + L_MUL + L_HAMMON_M + L_DIVB;
     reg [15:0] nl, nv, a;
     wire [15:0] nld, nvd, ad;
     wire [31:0] p, pd, mt;
@@ -18,7 +18,7 @@ module fx_smith_g2_hammon (input clk, input rst, input in_valid, input [31:0] no
     fx_mul #(16, 16) mp (clk, {16'd0, nl}, {16'd0, nv}, p);
     fx_delay #(48, L_MUL) d (clk, {nl, nv, a}, {nld, nvd, ad});
     fx_hammon_m hm (clk, nld, nvd, ad, p, mt, e);
-    fx_delay #(32, 5) dp (clk, p, pd);
+    fx_delay #(32, L_HAMMON_M) dp (clk, p, pd);
     fx_divb #(32768) dv (clk, pd, mt, 32'd96 - e, y);
     fx_valid #(LATENCY) v (clk, rst, in_valid, out_valid);
 endmodule

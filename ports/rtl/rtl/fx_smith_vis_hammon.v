@@ -6,7 +6,7 @@ module fx_smith_vis_hammon (input clk, input rst, input in_valid, input [31:0] n
     `include "fx_ops.vh"
     `include "fx_lat.vh"
     `include "fx_consts.vh"
-    localparam LATENCY = 1 + L_MUL + 5 + L_DIVB;
+    localparam LATENCY = 1 + L_MUL + L_HAMMON_M + L_DIVB;
     reg [15:0] nl, nv, a;
     wire [15:0] nld, nvd, ad;
     wire [31:0] p, mt;

@@ -66,7 +66,9 @@ module fx_mul #(parameter AW = 16, parameter BW = 16) (input clk, input [31:0] a
 endmodule
 
 // the exact 64-bit product (the op layer's widening product), as 16x16
-// partial products (one DSP block each) registered, then their sum
+// partial products (one DSP block each) registered; the two middle ones
+// summed; then the total, {hh, ll} + mid 2^16 (hh and ll do not overlap: one
+// carry chain)
 module fx_mulw #(parameter AW = 32, parameter BW = 32) (input clk, input [31:0] a, input [31:0] b,
                                                         output reg [63:0] y);
     localparam AL = AW > 16 ? 16 : AW, BL = BW > 16 ? 16 : BW;
@@ -75,6 +77,8 @@ module fx_mulw #(parameter AW = 32, parameter BW = 32) (input clk, input [31:0] 
     wire [AH+BL-1:0] p_hl;
     wire [AL+BH-1:0] p_lh;
     wire [AH+BH-1:0] p_hh;
+    reg [63:0] ends2;
+    reg [33:0] mid2;
     always @(posedge clk) p_ll <= a[AL-1:0] * b[BL-1:0];
     generate
         if (AW > 16) begin : g_hl
@@ -99,9 +103,11 @@ module fx_mulw #(parameter AW = 32, parameter BW = 32) (input clk, input [31:0] 
             assign p_hh = 0;
         end
     endgenerate
-    always @(posedge clk)
-        y <= {{(64-AL-BL){1'b0}}, p_ll} + ({{(64-AH-BL){1'b0}}, p_hl} << 16) +
-             ({{(64-AL-BH){1'b0}}, p_lh} << 16) + ({{(64-AH-BH){1'b0}}, p_hh} << 32);
+    always @(posedge clk) begin
+        ends2 <= ({{(64-AH-BH){1'b0}}, p_hh} << 32) | {{(64-AL-BL){1'b0}}, p_ll};
+        mid2 <= {{(34-AH-BL){1'b0}}, p_hl} + {{(34-AL-BH){1'b0}}, p_lh};
+        y <= ends2 + ({30'd0, mid2} << 16);
+    end
     fx_fits #(AW) fa (clk, {32'd0, a});
     fx_fits #(BW) fb (clk, {32'd0, b});
 endmodule
@@ -125,13 +131,14 @@ endmodule
 //   SQRT = 1: s ~ 2^20 sqrt(x / 2^32) for x in [2^30, 2^32): index x[31:25] -
 //             32, fraction x[24:10]; s = S[j] + (((S[j+1] - S[j]) f + 2^14) >> 15)
 // Stages: ROM read; the step (< 2^13, checked by the generator); the
-// 13x15 product; the rounded correction.
+// 13x15 product; the rounded correction; the interpolated value.
 module fx_tab20 #(parameter SQRT = 0) (input clk, input [31:0] x, output reg [31:0] y);
     wire [39:0] q;
     reg [14:0] f1, f2;
-    reg [19:0] t2, t3;
+    reg [19:0] t2, t3, t4;
     reg [12:0] d2;
     reg [27:0] p3;
+    reg [12:0] c4;
     generate
         if (SQRT) begin : g_sqrt
             fx_rom_sqrt rom (clk, x[31:25] - 7'd32, q);
@@ -146,7 +153,9 @@ module fx_tab20 #(parameter SQRT = 0) (input clk, input [31:0] x, output reg [31
         d2 <= SQRT ? q[39:20] - q[19:0] : q[19:0] - q[39:20];
         t3 <= t2;
         p3 <= d2 * f2;
-        y <= SQRT ? {12'd0, t3} + ((p3 + 28'd16384) >> 15) : {12'd0, t3} - ((p3 + 28'd16384) >> 15);
+        t4 <= t3;
+        c4 <= (p3 + 28'd16384) >> 15;
+        y <= SQRT ? {12'd0, t4} + {19'd0, c4} : {12'd0, t4} - {19'd0, c4};
     end
 `ifndef SYNTHESIS
     always @(posedge clk)
@@ -190,40 +199,58 @@ endmodule
 // round(n / d 2^s) (ties up), saturated at MAX, s given biased as the lane
 // b = 95 - s (the body's fxr_divb; n < 2^32, 0 gives 0; d >= 1):
 //   1: kn = min(clz n, 31), kd = clz d; both normalised
-//   2-5: r = rcp20(d 2^kd); sb = b + kn - kd
-//   6-7: q = hi(n 2^kn, r 2^12)
-//   8: kq = 1 - q[31], q 2^kq in [2^31, 2^32); srb = sb + kq (sr + 64)
-//   9: the rounded right shift by sr, saturation for sr < 0, 0 past 32
+//   r = rcp20(d 2^kd); q = hi(n 2^kn, r 2^12)
+//   meanwhile sb = b + kn - kd, and for both kq = 0 and 1 the shift of the
+//     rounding, sr = min(max(srb, 65) - 65, 31) of srb = sb + kq, and the
+//     flags srb < 65, < 64, < 97 (the C forms srb after q; the same values)
+//   Q1: kq = 1 - q[31], q 2^kq in [2^31, 2^32); its sr and flags selected
+//   Q2: t = q >> sr;  Q3: the rounding (t + 1) / 2 for sr >= 0 (srb > 64),
+//     saturation for sr < 0, 0 past 32;  Q4: min(v, MAX)
 module fx_divb #(parameter [31:0] MAX = 32'hFFFFFFFF) (input clk, input [31:0] n, input [31:0] d,
                                                        input [31:0] b, output reg [31:0] y);
     `include "fx_ops.vh"
     `include "fx_lat.vh"
-    reg [31:0] nn1, dn1, b1, sb2, srb8, q8;
+    localparam TQ = 1 + L_TAB20 + L_MULHI;            // q
+    reg [31:0] nn1, dn1, b1, sb2, srb0, srb1, q1, t2, v3;
     reg [5:0] kn1, kd1;
-    wire [31:0] r5, nn5, sb7, q7;
+    reg [4:0] sr0, sr1, sr;
+    reg [2:0] fl0, fl1, fl, fl2;                      // {srb < 97, srb < 64, srb < 65}
+    wire [31:0] rs, nnd, q;
+    wire [4:0] sr0d, sr1d;
+    wire [2:0] fl0d, fl1d;
+    wire [31:0] t2p = t2 + 32'd1;                     // 32-bit: wraps as the C's add
+    wire [31:0] e0 = srb0 - 32'd65, e1 = srb1 - 32'd65;
     always @(posedge clk) begin
         kn1 <= f_clz31(n);
         kd1 <= f_clz(d);
         nn1 <= n << f_clz31(n);
         dn1 <= d << f_clz(d);
         b1 <= b;
-        sb2 <= b1 + kn1 - kd1;
+        sb2 <= b1 + kn1 - kd1;                        // 2
+        srb0 <= sb2;                                  // 3
+        srb1 <= sb2 + 32'd1;
+        // 4: the shift min(max(srb, 65) - 65, 31), 0 below 65 (exact: a
+        // difference past 31 has a bit set above bit 4)
+        sr0 <= srb0 < 32'd65 ? 5'd0 : |e0[31:5] ? 5'd31 : e0[4:0];
+        sr1 <= srb1 < 32'd65 ? 5'd0 : |e1[31:5] ? 5'd31 : e1[4:0];
+        fl0 <= {srb0 < 32'd97, srb0 < 32'd64, srb0 < 32'd65};
+        fl1 <= {srb1 < 32'd97, srb1 < 32'd64, srb1 < 32'd65};
+        // Q1 .. Q4
+        q1 <= q << !q[31];
+        sr <= q[31] ? sr0d : sr1d;
+        fl <= q[31] ? fl0d : fl1d;
+        t2 <= q1 >> sr;
+        fl2 <= fl;
+        v3 <= fl2[1] ? MAX : !fl2[2] ? 32'd0 : fl2[0] ? t2 : {1'b0, t2p[31:1]};
+        y <= f_min(v3, MAX);
     end
-    fx_tab20 #(0) rcp (clk, dn1, r5);
-    fx_delay #(32, L_TAB20) dn (clk, nn1, nn5);
-    fx_delay #(32, L_TAB20 + L_MULHI - 1) ds (clk, sb2, sb7);
-    fx_mulhi #(32, 20, 12) mq (clk, nn5, r5, q7);
-    wire kq7 = !q7[31];
-    wire [31:0] sr8 = f_min(f_max(srb8, 32'd65) - 32'd65, 32'd31);
-    wire [31:0] t8 = q8 >> sr8[4:0];
-    wire [31:0] t8r = t8 + 32'd1;
-    wire [31:0] v8 = srb8 < 32'd65 ? t8 : {1'b0, t8r[31:1]};
-    wire [31:0] w8 = srb8 < 32'd64 ? MAX : srb8 < 32'd97 ? v8 : 32'd0;
-    always @(posedge clk) begin
-        srb8 <= sb7 + {31'd0, kq7};
-        q8 <= q7 << kq7;
-        y <= f_min(w8, MAX);
-    end
+    fx_tab20 #(0) rcp (clk, dn1, rs);
+    fx_delay #(32, L_TAB20) dn (clk, nn1, nnd);
+    fx_mulhi #(32, 20, 12) mq (clk, nnd, rs, q);      // at TQ
+    fx_delay #(5, TQ - 4) ds0 (clk, sr0, sr0d);
+    fx_delay #(5, TQ - 4) ds1 (clk, sr1, sr1d);
+    fx_delay #(3, TQ - 4) df0 (clk, fl0, fl0d);
+    fx_delay #(3, TQ - 4) df1 (clk, fl1, fl1d);
 endmodule
 
 // ---- the pieces several kernels share ---------------------------------------
@@ -248,7 +275,7 @@ module fx_dots (input clk, input [15:0] nl, input [15:0] nv, input [31:0] lov, o
         s2 <= s1;
         q2 <= q1;
         u <= f_min(p2, q2);
-        w <= p2 - f_min(p2, q2);
+        w <= p2 < q2 ? 32'd0 : p2 - q2;        // P - min(P, Q), the compare beside the subtract
         c <= ~f_min(p2, q2);
     end
     fx_mul #(16, 18) mp (clk, {16'd0, sm1}, {14'd0, sp1}, p2);
