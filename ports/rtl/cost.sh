@@ -11,8 +11,9 @@
 #            cells between flip-flops (`ltp -noff`): the deepest stage
 #   iCE40    `synth_ice40` of the module alone (LUT4, DSP, EBR, flip-flops):
 #            with its 16x16 products on SB_MAC16 for the UP5K (8 DSPs, 5280
-#            LCs; ports/rtl/fit.txt may move named products to LUTs so a
-#            module fits), else all in LUTs for the HX8K (7680 LCs); where it
+#            LCs; a partial product with an operand of 4 bits or fewer stays
+#            in LUTs, and ports/rtl/fit.txt may move named products to LUTs so
+#            a module fits), else all in LUTs for the HX8K (7680 LCs); where it
 #            fits, nextpnr-ice40 (seed 1) places and routes it inside a
 #            wrapper that feeds the inputs from a serial shift register and
 #            folds the outputs into one pin by a pipelined XOR (so nothing is
@@ -84,7 +85,11 @@ EOF
 }
 
 # ice40 K TOP DSP DEMOTE OUT: synth_ice40 of TOP (fx_K or pnr_top) into OUT.json / OUT.log;
-# DSP = -dsp or empty; DEMOTE = instance paths inside fx_K whose products stay in LUTs
+# DSP = -dsp or empty; DEMOTE = instance paths inside fx_K whose products stay
+# in LUTs.  With -dsp the coarse step is spelled out (synth_ice40's own, with
+# the demotions before the DSP mapping); Yosys 0.23's ice40_dsp (which packs
+# registers into the DSP blocks) crashes on some modules: there the step is
+# run without it, the DSP blocks' registers in the fabric, and OUT.nopack says so.
 ice40() {
     k=$1 top=$2 dsp=$3 demote=$4 out=$5
     pre=""
@@ -96,8 +101,25 @@ ice40() {
     done
     extra=""
     [ "$top" = pnr_top ] && extra="$c/$k.wrap.v"
-    yosys -q -l "$out.log" -p "read_verilog $inc $srcs $extra; synth_ice40 $dsp -top $top -run :coarse; $sel
-        synth_ice40 $dsp -top $top -run coarse: -json $out.json; stat" > /dev/null 2>&1
+    rm -f "$out.nopack" "$out.json" "$out.log"
+    if [ -z "$dsp" ]; then
+        yosys -q -l "$out.log" -p "read_verilog $inc $srcs $extra; synth_ice40 -top $top -json $out.json; stat" \
+            > /dev/null 2>&1
+        return
+    fi
+    for pack in ice40_dsp ""; do
+        if yosys -q -l "$out.log" -p "read_verilog $inc $srcs $extra; synth_ice40 -dsp -top $top -run :coarse; $sel
+            opt_expr; opt_clean; check; opt -nodffe -nosdff; fsm; opt; wreduce; peepopt; opt_clean; share;
+            techmap -map +/cmp2lut.v -D LUT_WIDTH=4; opt_expr; opt_clean; memory_dff; wreduce t:\$mul;
+            techmap -map +/mul2dsp.v -map +/ice40/dsp_map.v -D DSP_A_MAXWIDTH=16 -D DSP_B_MAXWIDTH=16 -D DSP_A_MINWIDTH=5 -D DSP_B_MINWIDTH=5 -D DSP_Y_MINWIDTH=11 -D DSP_NAME=\$__MUL16X16;
+            select a:mul2dsp; setattr -unset mul2dsp; opt_expr -fine; wreduce; select -clear; $pack
+            chtype -set \$mul t:\$__soft_mul; alumacc; opt; memory -nomap; opt_clean;
+            synth_ice40 -dsp -top $top -run map_ram: -json $out.json; stat" > /dev/null 2>&1; then
+            [ -z "$pack" ] && echo "ice40_dsp crashed: DSP registers in the fabric" > "$out.nopack"
+            return 0
+        fi
+    done
+    return 1
 }
 
 awk '!/^#/ && NF { print $1, $2, $3, $4, $5 }' $dir/kernels.txt | while read -r k nin bits outs lat; do
@@ -115,7 +137,7 @@ awk '!/^#/ && NF { print $1, $2, $3, $4, $5 }' $dir/kernels.txt | while read -r 
     awk -v m="$k" '$1 ~ /^\$_/ { printf "%s\t%s\t%s\n", m, $1, $2 }' "$c/$k.stat" >> "$cells_tsv.tmp"
     # ---- iCE40: the UP5K with DSPs (and this module's fit demotions), else the HX8K in LUTs
     demote=$(awk -v k="$k" '$1 == k && $2 == "up5k" { for (i = 3; i <= NF; i++) printf "%s ", $i }' $dir/fit.txt)
-    ice40 "$k" "fx_$k" -dsp "$demote" "$c/$k.up5k"
+    ice40 "$k" "fx_$k" -dsp "$demote" "$c/$k.up5k" || echo "ERROR rtl cost: synth_ice40 -dsp failed on $k"
     luts=$(stat_of "$c/$k.up5k.log" SB_LUT4)
     dsps=$(stat_of "$c/$k.up5k.log" SB_MAC16)
     ebr=$(stat_of "$c/$k.up5k.log" SB_RAM40_4K)
@@ -123,7 +145,8 @@ awk '!/^#/ && NF { print $1, $2, $3, $4, $5 }' $dir/kernels.txt | while read -r 
     device=none fmax=- lcs=-
     wrapper "$k" "$nin" "$bits" "$outs" > "$c/$k.wrap.v"
     try_pnr() { # try_pnr DEVICE PACKAGE DSP DEMOTE NAME
-        ice40 "$k" pnr_top "$3" "$4" "$c/$k.$5.wrap"
+        rm -f "$c/$k.$5.pnr.log" "$c/$k.$5.asc"
+        ice40 "$k" pnr_top "$3" "$4" "$c/$k.$5.wrap" || return 1
         if nextpnr-ice40 --$1 --package $2 --json "$c/$k.$5.wrap.json" --pcf-allow-unconstrained --freq 12 \
                 --seed 1 --asc "$c/$k.$5.asc" > "$c/$k.$5.pnr.log" 2>&1; then
             device=$1
@@ -136,7 +159,7 @@ awk '!/^#/ && NF { print $1, $2, $3, $4, $5 }' $dir/kernels.txt | while read -r 
     if [ "$dsps" -le 8 ] && [ "$luts" -le 5000 ] && [ "$ebr" -le 30 ] && try_pnr up5k sg48 -dsp "$demote" up5k; then
         :
     else
-        ice40 "$k" "fx_$k" "" "" "$c/$k.hx8k"
+        ice40 "$k" "fx_$k" "" "" "$c/$k.hx8k" || echo "ERROR rtl cost: synth_ice40 failed on $k"
         nluts=$(stat_of "$c/$k.hx8k.log" SB_LUT4)
         nebr=$(stat_of "$c/$k.hx8k.log" SB_RAM40_4K)
         nffs=$(awk '/Printing statistics/ { n = 0 } $1 ~ /^SB_DFF/ { n += $2 } END { print n + 0 }' "$c/$k.hx8k.log")

@@ -14,6 +14,8 @@ localparam L_P5     = 5;                      // fx_p5: x (1 + y + ... + y^4) by
 localparam L_Y5     = L_MUL + 2 * L_MULHI;    // fx_y5: (1 - x)^5 by three products
 localparam L_DOTS   = 3;                      // fx_dots: the dot triple s, u, w, c
 localparam L_HAMMON_M = 1 + L_MULW + 1 + L_TOP; // fx_hammon_m: Hammon's Smith denominator, top word
+localparam L_R30    = L_MUL + L_MULW + 3 + L_TAB20 + 1; // fx_smith_r30: Smith's root r(x)
+localparam L_SDEN   = L_R30 + L_MULW + 1 + L_TOP; // fx_smith_den: nv r(nl) + nl r(nv), top word
 // Hammon's diffuse pieces: inputs at two or three times (see each unit)
 localparam L_ROUGH  = L_SQRT32 + 2 + 3 * L_MULHI; // fx_rough: from a, s, c to the rough term
 localparam L_SHAPE  = L_ROUGH + 1;            // fx_shape: from nl, nv, a, s, c to the shape
