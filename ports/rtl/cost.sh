@@ -107,7 +107,10 @@ ice40() {
             > /dev/null 2>&1
         return
     fi
-    for pack in ice40_dsp ""; do
+    packs='ice40_dsp ""'
+    [ -n "$nopack_known" ] && packs='""'
+    for pack in $packs; do
+        [ "$pack" = '""' ] && pack=""
         if yosys -q -l "$out.log" -p "read_verilog $inc $srcs $extra; synth_ice40 -dsp -top $top -run :coarse; $sel
             opt_expr; opt_clean; check; opt -nodffe -nosdff; fsm; opt; wreduce; peepopt; opt_clean; share;
             techmap -map +/cmp2lut.v -D LUT_WIDTH=4; opt_expr; opt_clean; memory_dff; wreduce t:\$mul;
@@ -137,7 +140,9 @@ awk '!/^#/ && NF { print $1, $2, $3, $4, $5 }' $dir/kernels.txt | while read -r 
     awk -v m="$k" '$1 ~ /^\$_/ { printf "%s\t%s\t%s\n", m, $1, $2 }' "$c/$k.stat" >> "$cells_tsv.tmp"
     # ---- iCE40: the UP5K with DSPs (and this module's fit demotions), else the HX8K in LUTs
     demote=$(awk -v k="$k" '$1 == k && $2 == "up5k" { for (i = 3; i <= NF; i++) printf "%s ", $i }' $dir/fit.txt)
+    nopack_known=""
     ice40 "$k" "fx_$k" -dsp "$demote" "$c/$k.up5k" || echo "ERROR rtl cost: synth_ice40 -dsp failed on $k"
+    [ -f "$c/$k.up5k.nopack" ] && nopack_known=1
     luts=$(stat_of "$c/$k.up5k.log" SB_LUT4)
     dsps=$(stat_of "$c/$k.up5k.log" SB_MAC16)
     ebr=$(stat_of "$c/$k.up5k.log" SB_RAM40_4K)
@@ -159,6 +164,12 @@ awk '!/^#/ && NF { print $1, $2, $3, $4, $5 }' $dir/kernels.txt | while read -r 
     if [ "$dsps" -le 8 ] && [ "$luts" -le 5000 ] && [ "$ebr" -le 30 ] && try_pnr up5k sg48 -dsp "$demote" up5k; then
         :
     else
+        if [ "$luts" -gt 7400 ]; then
+            echo "rtl cost: $k does not fit: $luts LUT4 + $dsps DSP16 with DSPs (all-LUT mapping not run)"
+            printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$k" "$lat" "$cells" "$ge" "$depth" "$luts" \
+                "$dsps" - none - "$ebr" "$ffs" >> "$tsv.tmp"
+            continue
+        fi
         ice40 "$k" "fx_$k" "" "" "$c/$k.hx8k" || echo "ERROR rtl cost: synth_ice40 failed on $k"
         nluts=$(stat_of "$c/$k.hx8k.log" SB_LUT4)
         nebr=$(stat_of "$c/$k.hx8k.log" SB_RAM40_4K)
@@ -174,7 +185,18 @@ awk '!/^#/ && NF { print $1, $2, $3, $4, $5 }' $dir/kernels.txt | while read -r 
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$k" "$lat" "$cells" "$ge" "$depth" "$luts" "$dsps" \
         "$fmax" "$device" "$lcs" "$ebr" "$ffs" >> "$tsv.tmp"
 done
-mv "$tsv.tmp" "$tsv"
-mv "$cells_tsv.tmp" "$cells_tsv"
+# a run on some kernels keeps the other kernels' rows of the last run
+if [ -n "$only" ] && [ -f "$tsv" ]; then
+    awk -F'\t' -v only=" $only " 'FNR == 1 { next } index(only, " " $1 " ") == 0 { print }' "$tsv" >> "$tsv.tmp"
+    awk -F'\t' -v only=" $only " 'FNR == 1 { next } index(only, " " $1 " ") == 0 { print }' "$cells_tsv" >> "$cells_tsv.tmp"
+fi
+# rows in kernels.txt order
+order=$(awk '!/^#/ && NF { printf "%s ", $1 }' $dir/kernels.txt)
+for f in "$tsv" "$cells_tsv"; do
+    { head -n 1 "$f.tmp"
+      for k in $order; do awk -F'\t' -v k="$k" 'FNR > 1 && $1 == k' "$f.tmp"; done
+    } > "$f"
+    rm -f "$f.tmp"
+done
 sh $dir/cost_md.sh "$b" > "$b/cost.md"
 echo "rtl cost: wrote $tsv, $cells_tsv, $b/cost.md"
