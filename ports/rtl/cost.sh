@@ -36,6 +36,11 @@ done
 srcs="$b/gen/fx_tables.v $(ls $dir/rtl/*.v | tr '\n' ' ')"
 inc="-DSYNTHESIS -I$dir/rtl -I$b/gen"
 only="$*"
+# the HX8K is tried up to this many LUT4 (of its 7680: nextpnr's router does
+# not converge on these multiplier-dense netlists much above it); each
+# place-and-route gets at most RTL_PNR_TIMEOUT seconds
+hx8k_luts=${RTL_HX8K_LUTS:-5600}
+pnr_timeout=${RTL_PNR_TIMEOUT:-1200}
 tsv=$b/cost.tsv
 cells_tsv=$b/cost_cells.tsv
 printf 'module\tlatency\tcells\tgate_equivalents\tdepth\tluts\tdsps\tfmax_mhz\tdevice\tlcs\tebr\tffs\n' > "$tsv.tmp"
@@ -152,19 +157,22 @@ awk '!/^#/ && NF { print $1, $2, $3, $4, $5 }' $dir/kernels.txt | while read -r 
     try_pnr() { # try_pnr DEVICE PACKAGE DSP DEMOTE NAME
         rm -f "$c/$k.$5.pnr.log" "$c/$k.$5.asc"
         ice40 "$k" pnr_top "$3" "$4" "$c/$k.$5.wrap" || return 1
-        if nextpnr-ice40 --$1 --package $2 --json "$c/$k.$5.wrap.json" --pcf-allow-unconstrained --freq 12 \
-                --seed 1 --asc "$c/$k.$5.asc" > "$c/$k.$5.pnr.log" 2>&1; then
+        if timeout "$pnr_timeout" nextpnr-ice40 --$1 --package $2 --json "$c/$k.$5.wrap.json" \
+                --pcf-allow-unconstrained --freq 12 --seed 1 --asc "$c/$k.$5.asc" > "$c/$k.$5.pnr.log" 2>&1; then
             device=$1
             fmax=$(sed -n "s/.*Max frequency for clock '[^']*': \([0-9.]*\) MHz.*/\1/p" "$c/$k.$5.pnr.log" | tail -n 1)
             lcs=$(sed -n 's/.*ICESTORM_LC: *\([0-9]*\)\/.*/\1/p' "$c/$k.$5.pnr.log" | tail -n 1)
             return 0
         fi
+        grep -q 'ERROR' "$c/$k.$5.pnr.log" || echo "rtl cost: $k: nextpnr-ice40 --$1 stopped after $pnr_timeout s"
         return 1
     }
     if [ "$dsps" -le 8 ] && [ "$luts" -le 5000 ] && [ "$ebr" -le 30 ] && try_pnr up5k sg48 -dsp "$demote" up5k; then
         :
     else
-        if [ "$luts" -gt 7400 ]; then
+        # a 16x16 product in LUTs is some 500 LUT4 here: past the HX8K by that
+        # estimate, the (slow) all-LUT mapping is not run
+        if [ $((luts + 500 * dsps)) -gt "$hx8k_luts" ]; then
             echo "rtl cost: $k does not fit: $luts LUT4 + $dsps DSP16 with DSPs (all-LUT mapping not run)"
             printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$k" "$lat" "$cells" "$ge" "$depth" "$luts" \
                 "$dsps" - none - "$ebr" "$ffs" >> "$tsv.tmp"
@@ -174,9 +182,9 @@ awk '!/^#/ && NF { print $1, $2, $3, $4, $5 }' $dir/kernels.txt | while read -r 
         nluts=$(stat_of "$c/$k.hx8k.log" SB_LUT4)
         nebr=$(stat_of "$c/$k.hx8k.log" SB_RAM40_4K)
         nffs=$(awk '/Printing statistics/ { n = 0 } $1 ~ /^SB_DFF/ { n += $2 } END { print n + 0 }' "$c/$k.hx8k.log")
-        if [ "$nluts" -le 7400 ] && [ "$nebr" -le 32 ] && try_pnr hx8k ct256 "" "" hx8k; then
+        if [ "$nluts" -le "$hx8k_luts" ] && [ "$nebr" -le 32 ] && try_pnr hx8k ct256 "" "" hx8k; then
             luts=$nluts dsps=0 ebr=$nebr ffs=$nffs
-        elif [ "$dsps" -gt 8 ] || [ "$luts" -gt 5000 ]; then
+        else
             # no fit: the needs, with DSPs (luts, dsps) and without (in the log)
             echo "rtl cost: $k does not fit: $luts LUT4 + $dsps DSP16 with DSPs, or $nluts LUT4 without"
             echo "$k	$nluts" > "$c/$k.nodsp"

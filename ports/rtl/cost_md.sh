@@ -19,6 +19,17 @@ echo
 echo "Comparisons across processes and libraries are rough: the anchor is a gate count and clock in its own 2002 ASIC"
 echo "process; the figures here are a generic CMOS estimate and a small FPGA."
 echo
+echo "Modules that fit neither device, and what they need (iCE40 mapping of the module alone):"
+echo
+awk -F'\t' 'NR > 1 && $9 == "none" { print $1, $6, $7 }' "$d/cost.tsv" | while read -r k luts dsps; do
+    if [ -f "$d/cost/$k.nodsp" ]; then
+        alt="or $(cut -f2 "$d/cost/$k.nodsp") LUT4 with every product in LUTs"
+    else
+        alt="(the all-LUT mapping not run: some 500 LUT4 per DSP16 is past the HX8K)"
+    fi
+    echo "- $k: $luts LUT4 + $dsps DSP16 with the products on DSPs, $alt"
+done
+echo
 echo "Cells by type (generic mapping):"
 echo
 awk -F'\t' 'NR > 1 { t = $2; sub(/^\$_/, "", t); sub(/_$/, "", t); c[$1] = c[$1] (c[$1] == "" ? "" : ", ") t " " $3
