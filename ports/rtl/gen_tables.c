@@ -3,7 +3,7 @@
  *   gen_tables consts  > fx_consts.vh   localparams (the fast tier's constants)
  *   gen_tables tables  > fx_tables.v    the ROM modules (the interpolated tables)
  * This is the ONLY file of ports/rtl that names the C's internal helpers,
- * tables and macros (src/fx/fx_fast_body.h); a rename there is adapted here
+ * tables and macros (src/fx/fx_fast_body.h, fx_body.h); a rename there is adapted here
  * and nowhere else.  The ROMs hold each entry with its successor, {T[i+1],
  * T[i]}: the body's two reads of one interpolation (T[i], T[i + 1]) are one
  * read of one word.  The step |T[i+1] - T[i]| bounds the width of the
@@ -85,26 +85,26 @@ static int consts(void)
     k32("K_MAX_Q15", FACET_FX_MAX_Q15, "Q15 saturation");
     k32("K_MAX_D", FACET_FX_MAX_D, "UQ19.13 saturation");
     k32("K_MAX_VIS", FACET_FX_MAX_VIS, "UQ16.16 saturation");
-    printf("// the fast tier's constants (src/fx/fx_fast_body.h)\n");
-    k32("K_PI_30", FXF_PI_30, "pi Q30 (ggx_d's pi d^2)");
-    k32("K_C105", FXW_C105, "1.05 Q15 (Hammon's smooth term)");
-    k32("K_TENTH", FXW_TENTH, "2^20 / 10 (Hammon's rough term)");
-    k32("K_MULTI", FXW_MULTI, "0.1159 pi Q32 (Hammon's multi-scatter term)");
-    k32("K_INV_PI", FXW_INV_PI, "2^18 / pi (albedo / pi)");
-    k32("K_INV_2PI", FXW_INV_2PI, "2^32 / (2 pi) (the specular term)");
-    k32("K_SQRT_2_PI", FXW_SQRT_2_PI, "sqrt(2/pi) Q32 (Schlick-Beckmann k)");
-    k32("K_VFIT_K1", FXW_VFIT_K1, "the fitted visibility's constants, Q30");
-    k32("K_VFIT_K2", FXW_VFIT_K2, "");
-    k32("K_VFIT_K3", FXW_VFIT_K3, "");
-    k32("K_VFIT_K4", FXW_VFIT_K4, "");
-    k32("K_VFIT_K5", FXW_VFIT_K5, "");
-    k32("K_VFIT_C1", FXW_VFIT_C1, "");
-    k32("K_VFIT_C2", FXW_VFIT_C2, "|C2|");
-    k32("K_SG_K1", FXM_SG_K1, "Schlick's spherical-Gaussian power, Q29");
-    k32("K_SG_K2", FXM_SG_K2, "");
-    k32("K_ON_033", FXM_ON_033, "Oren-Nayar 0.33 Q32");
-    k32("K_ON_009", FXM_ON_009, "Oren-Nayar 0.09 Q32");
-    k32("K_ON_045", FXM_ON_045, "Oren-Nayar 0.45 Q32");
+    printf("// the fast tier's constants (src/fx/fx_fast_body.h, some shared from fx_body.h)\n");
+    k32("K_PI_30", FXB_PI_M, "pi Q30 (ggx_d's pi d^2)");
+    k32("K_C105", FXQ_C105, "1.05 Q15 (Hammon's smooth term)");
+    k32("K_TENTH", FXQ_TENTH, "2^20 / 10 (Hammon's rough term)");
+    k32("K_MULTI", FXQ_MULTI, "0.1159 pi Q32 (Hammon's multi-scatter term)");
+    k32("K_INV_PI", FXQ_INV_PI, "2^18 / pi (albedo / pi)");
+    k32("K_INV_2PI", FXQ_INV_2PI, "2^32 / (2 pi) (the specular term)");
+    k32("K_SQRT_2_PI", FXB_SQRT_2_PI_32, "sqrt(2/pi) Q32 (Schlick-Beckmann k)");
+    k32("K_VFIT_K1", FXB_VFIT_K1, "the fitted visibility's constants, Q30");
+    k32("K_VFIT_K2", FXB_VFIT_K2, "");
+    k32("K_VFIT_K3", FXB_VFIT_K3, "");
+    k32("K_VFIT_K4", FXB_VFIT_K4, "");
+    k32("K_VFIT_K5", FXB_VFIT_K5, "");
+    k32("K_VFIT_C1", FXB_VFIT_C1, "");
+    k32("K_VFIT_C2", FXB_VFIT_C2, "|C2|");
+    k32("K_SG_K1", FXQ_SG_K1, "Schlick's spherical-Gaussian power, Q29");
+    k32("K_SG_K2", FXQ_SG_K2, "");
+    k32("K_ON_033", FXQ_ON_033, "Oren-Nayar 0.33 Q32");
+    k32("K_ON_009", FXQ_ON_009, "Oren-Nayar 0.09 Q32");
+    k32("K_ON_045", FXQ_ON_045, "Oren-Nayar 0.45 Q32");
     return 0;
 }
 
@@ -115,16 +115,16 @@ static int tables(void)
     printf("// The interpolated tables of the fast tier as synchronous-read ROMs of\n");
     printf("// {T[i+1], T[i]} (one read per interpolation; block RAM on an FPGA).\n\n");
     /* 1/x on [1, 2): index (m >> 24) - 128 for m in [2^31, 2^32) */
-    bad |= rom_pairs("fx_rom_rcp", "1/x on [1, 2), Q20, 129 entries", fxf_rcp_tab, N_OF(fxf_rcp_tab), 128, 7, 20,
+    bad |= rom_pairs("fx_rom_rcp", "1/x on [1, 2), Q20, 129 entries", fxq_rcp_tab, N_OF(fxq_rcp_tab), 128, 7, 20,
                      13);
     /* sqrt on [1/4, 1]: index (x >> 25) - 32 for x in [2^30, 2^32) */
-    bad |= rom_pairs("fx_rom_sqrt", "sqrt on [1/4, 1], Q20, 97 entries", fxf_sqrt_tab, N_OF(fxf_sqrt_tab), 96, 7,
+    bad |= rom_pairs("fx_rom_sqrt", "sqrt on [1/4, 1], Q20, 97 entries", fxq_sqrt_tab, N_OF(fxq_sqrt_tab), 96, 7,
                      20, 13);
     /* 1 + y + ... + y^4 on x = i/256: index x >> 7 for x in [0, 2^15] */
-    bad |= rom_pairs("fx_rom_p5", "1 + y + y^2 + y^3 + y^4 at x = i/256, Q16, 258 entries", fxf_p5_tab,
-                     N_OF(fxf_p5_tab), 257, 9, 19, 12);
+    bad |= rom_pairs("fx_rom_p5", "1 + y + y^2 + y^3 + y^4 at x = i/256, Q16, 258 entries", fxq_p5_tab,
+                     N_OF(fxq_p5_tab), 257, 9, 19, 12);
     /* 2^(-i/256) Q31: index the top 8 bits of a Q28 fraction */
-    bad |= rom_pairs("fx_rom_exp2", "2^(-i/256), Q31, 257 entries", fxm_exp2_tab, N_OF(fxm_exp2_tab), 256, 8, 32,
+    bad |= rom_pairs("fx_rom_exp2", "2^(-i/256), Q31, 257 entries", fxq_exp2_tab, N_OF(fxq_exp2_tab), 256, 8, 32,
                      23);
     return bad;
 }
