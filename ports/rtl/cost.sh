@@ -2,7 +2,9 @@
 # cost.sh BUILD [KERNEL...] - the hardware cost of every RTL module (make
 # rtl), written to BUILD/rtl/cost.tsv (the format: ports/rtl/README.md),
 # BUILD/rtl/cost_cells.tsv (module, cell type, count) and BUILD/rtl/cost.md;
-# logs and netlists in BUILD/rtl/cost/.
+# logs and netlists in BUILD/rtl/cost/.  The two .tsv are copied to
+# ports/rtl/ (committed: the report's hardware row and section read them)
+# and cost.md's text into ports/rtl/README.md (cost_readme.sh).
 #   generic  Yosys `synth -flatten`, then `abc -g cmos` (NAND, NOR, AOI/OAI,
 #            MUX, XOR, NOT; flip-flops legalised to plain D flip-flops):
 #            cells by type, gate equivalents = Yosys's CMOS transistor
@@ -43,7 +45,7 @@ hx8k_luts=${RTL_HX8K_LUTS:-5600}
 pnr_timeout=${RTL_PNR_TIMEOUT:-1200}
 tsv=$b/cost.tsv
 cells_tsv=$b/cost_cells.tsv
-printf 'module\tlatency\tcells\tgate_equivalents\tdepth\tluts\tdsps\tfmax_mhz\tdevice\tlcs\tebr\tffs\n' > "$tsv.tmp"
+printf 'module\tlatency\tcells\tgate_equivalents\tdepth\tluts\tdsps\tfmax_mhz\tdevice\tlcs\tebr\tffs\tluts_no_dsp\n' > "$tsv.tmp"
 printf 'module\tcell\tcount\n' > "$cells_tsv.tmp"
 
 # stat_of LOG TYPE: the count of cells TYPE in the last statistics of LOG
@@ -152,7 +154,7 @@ awk '!/^#/ && NF { print $1, $2, $3, $4, $5 }' $dir/kernels.txt | while read -r 
     dsps=$(stat_of "$c/$k.up5k.log" SB_MAC16)
     ebr=$(stat_of "$c/$k.up5k.log" SB_RAM40_4K)
     ffs=$(awk '/Printing statistics/ { n = 0 } $1 ~ /^SB_DFF/ { n += $2 } END { print n + 0 }' "$c/$k.up5k.log")
-    device=none fmax=- lcs=-
+    device=none fmax=- lcs=- nodsp=-
     wrapper "$k" "$nin" "$bits" "$outs" > "$c/$k.wrap.v"
     try_pnr() { # try_pnr DEVICE PACKAGE DSP DEMOTE NAME
         rm -f "$c/$k.$5.pnr.log" "$c/$k.$5.asc"
@@ -174,8 +176,8 @@ awk '!/^#/ && NF { print $1, $2, $3, $4, $5 }' $dir/kernels.txt | while read -r 
         # estimate, the (slow) all-LUT mapping is not run
         if [ $((luts + 500 * dsps)) -gt "$hx8k_luts" ]; then
             echo "rtl cost: $k does not fit: $luts LUT4 + $dsps DSP16 with DSPs (all-LUT mapping not run)"
-            printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$k" "$lat" "$cells" "$ge" "$depth" "$luts" \
-                "$dsps" - none - "$ebr" "$ffs" >> "$tsv.tmp"
+            printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$k" "$lat" "$cells" "$ge" "$depth" "$luts" \
+                "$dsps" - none - "$ebr" "$ffs" - >> "$tsv.tmp"
             continue
         fi
         ice40 "$k" "fx_$k" "" "" "$c/$k.hx8k" || echo "ERROR rtl cost: synth_ice40 failed on $k"
@@ -183,15 +185,15 @@ awk '!/^#/ && NF { print $1, $2, $3, $4, $5 }' $dir/kernels.txt | while read -r 
         nebr=$(stat_of "$c/$k.hx8k.log" SB_RAM40_4K)
         nffs=$(awk '/Printing statistics/ { n = 0 } $1 ~ /^SB_DFF/ { n += $2 } END { print n + 0 }' "$c/$k.hx8k.log")
         if [ "$nluts" -le "$hx8k_luts" ] && [ "$nebr" -le 32 ] && try_pnr hx8k ct256 "" "" hx8k; then
-            luts=$nluts dsps=0 ebr=$nebr ffs=$nffs
+            luts=$nluts dsps=0 ebr=$nebr ffs=$nffs nodsp=$nluts
         else
             # no fit: the needs, with DSPs (luts, dsps) and without (in the log)
             echo "rtl cost: $k does not fit: $luts LUT4 + $dsps DSP16 with DSPs, or $nluts LUT4 without"
-            echo "$k	$nluts" > "$c/$k.nodsp"
+            nodsp=$nluts
         fi
     fi
-    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$k" "$lat" "$cells" "$ge" "$depth" "$luts" "$dsps" \
-        "$fmax" "$device" "$lcs" "$ebr" "$ffs" >> "$tsv.tmp"
+    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$k" "$lat" "$cells" "$ge" "$depth" "$luts" "$dsps" \
+        "$fmax" "$device" "$lcs" "$ebr" "$ffs" "$nodsp" >> "$tsv.tmp"
 done
 # a run on some kernels keeps the other kernels' rows of the last run
 if [ -n "$only" ] && [ -f "$tsv" ]; then
@@ -207,4 +209,8 @@ for f in "$tsv" "$cells_tsv"; do
     rm -f "$f.tmp"
 done
 sh $dir/cost_md.sh "$b" > "$b/cost.md"
-echo "rtl cost: wrote $tsv, $cells_tsv, $b/cost.md"
+# the committed copy the report reads (make report runs no synthesis), and
+# its text in ports/rtl/README.md between the cost markers
+cp "$tsv" "$cells_tsv" $dir/
+sh $dir/cost_readme.sh $dir > $dir/README.md.tmp && mv $dir/README.md.tmp $dir/README.md
+echo "rtl cost: wrote $tsv, $cells_tsv, $b/cost.md; $dir/cost.tsv, $dir/cost_cells.tsv and the README's table"

@@ -1,10 +1,12 @@
 #!/bin/sh
-# cost_md.sh BUILD/rtl - cost.md from cost.tsv and cost_cells.tsv (cost.sh):
-# the per-module table, the anchor, and the cells by type.
+# cost_md.sh DIR - the cost figures as Markdown from DIR/cost.tsv and
+# DIR/cost_cells.tsv (cost.sh; DIR is BUILD/rtl, or ports/rtl for the
+# committed copy): the per-module table with the anchor, what the modules
+# that fit no iCE40 need, and the cells by type.  ports/rtl/README.md holds
+# this text for the committed copy between its cost markers (cost.sh writes
+# it there; tests/suites/57-rtl.sh checks that the two agree).
 set -eu
 d=$1
-echo "## RTL: the fast fixed-point kernels in hardware (ports/rtl)"
-echo
 echo "Verilog-2005, fully pipelined (one sample per clock), bit-exact with facet_<kernel>_fx_fast."
 echo "Generic: Yosys \`synth\` + \`abc -g cmos\`; gate equivalents = CMOS transistors / 4 (NAND2 = 1, D flip-flop = 4);"
 echo "depth = the longest path in cells between flip-flops. iCE40: Yosys \`synth_ice40\`, nextpnr-ice40 (seed 1):"
@@ -19,17 +21,15 @@ echo
 echo "Comparisons across processes and libraries are rough: the anchor is a gate count and clock in its own 2002 ASIC"
 echo "process; the figures here are a generic CMOS estimate and a small FPGA."
 echo
-echo "Modules that fit neither device, and what they need (iCE40 mapping of the module alone):"
-echo
-awk -F'\t' 'NR > 1 && $9 == "none" { print $1, $6, $7 }' "$d/cost.tsv" | while read -r k luts dsps; do
-    if [ -f "$d/cost/$k.nodsp" ]; then
-        alt="or $(cut -f2 "$d/cost/$k.nodsp") LUT4 with every product in LUTs"
-    else
-        alt="(the all-LUT mapping not run: some 500 LUT4 per DSP16 is past the HX8K)"
-    fi
-    echo "- $k: $luts LUT4 + $dsps DSP16 with the products on DSPs, $alt"
-done
-echo
+if awk -F'\t' 'NR > 1 && $9 == "none" { n++ } END { exit !n }' "$d/cost.tsv"; then
+    echo "Modules that fit neither device, and what they need (iCE40 mapping of the module alone):"
+    echo
+    awk -F'\t' 'NR > 1 && $9 == "none" {
+        alt = $13 == "-" ? "(the all-LUT mapping not run: at some 500 LUT4 per DSP16 it is past the HX8K)" \
+                         : "or " $13 " LUT4 with every product in LUTs"
+        printf "- %s: %s LUT4 + %s DSP16 with the products on DSPs, %s\n", $1, $6, $7, alt }' "$d/cost.tsv"
+    echo
+fi
 echo "Cells by type (generic mapping):"
 echo
 awk -F'\t' 'NR > 1 { t = $2; sub(/^\$_/, "", t); sub(/_$/, "", t); c[$1] = c[$1] (c[$1] == "" ? "" : ", ") t " " $3

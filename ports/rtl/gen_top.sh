@@ -1,7 +1,9 @@
 #!/bin/sh
 # gen_top.sh KERNELS_TXT OUT_DIR - writes OUT_DIR/rtl_all.v (the test top:
 # every kernel of kernels.txt on one broadcast input bus x, ten 32-bit
-# words, each output in a 64-bit slot of y with its valid in ov) and
+# words, each output in a 64-bit slot of y with its valid in ov; defined
+# RTL_ONE and RTL_ONE_<kernel>, only that kernel's module, the other slots
+# tied to 0: the Icarus runs simulate one module each) and
 # OUT_DIR/rtl_kernels.h (the harness's table: RTL_K(name, inputs, bits,
 # outs, latency, first slot)).
 set -eu
@@ -22,6 +24,11 @@ END {
         for (j = 0; j < nin[i]; j++) args = args sprintf("x[%d:%d], ", 32 * j + 31, 32 * j)
         s = slot[i]
         ys = ""
+        printf "`ifdef RTL_ONE\n`ifndef RTL_ONE_%s\n`define RTL_SKIP_%s\n`endif\n`endif\n", name[i], name[i] > vout
+        printf "`ifdef RTL_SKIP_%s\n", name[i] > vout
+        printf "    assign ov[%d:%d] = %d%sd0;\n", s + outs[i] - 1, s, outs[i], "\047" > vout
+        printf "    assign y[%d:%d] = %d%sd0;\n", 64 * (s + outs[i]) - 1, 64 * s, 64 * outs[i], "\047" > vout
+        print "`else" > vout
         for (o = 0; o < outs[i]; o++) {
             if (bits[i] == 64) ys = ys sprintf(", y[%d:%d]", 64 * (s + o) + 63, 64 * (s + o))
             else {
@@ -31,6 +38,7 @@ END {
         }
         printf "    wire v%d;\n    fx_%s k%d (clk, rst, in_valid, %sv%d%s);\n", i, name[i], i, args, i, ys > vout
         for (o = 0; o < outs[i]; o++) printf "    assign ov[%d] = v%d;\n", s + o, i > vout
+        print "`endif" > vout
         printf "RTL_K(%s, %d, %d, %d, %d, %d)\n", name[i], nin[i], bits[i], outs[i], lat[i], s > hout
     }
     print "endmodule" > vout

@@ -30,7 +30,7 @@ RTL_GENERATED := $(RTL_GEN)/fx_consts.vh $(RTL_GEN)/fx_tables.v $(RTL_GEN)/rtl_a
 RTL_VFLAGS  := --default-language 1364-2005 -Wall -Wno-WIDTH -Wno-UNUSED -Wno-DECLFILENAME \
                -Wno-PINCONNECTEMPTY -Wno-VARHIDDEN --x-initial 0 -I$(RTL_DIR)/rtl -I$(RTL_GEN)
 
-.PHONY: rtl rtl-check rtl-vectors rtl-gen
+.PHONY: rtl rtl-build rtl-check rtl-vectors rtl-gen
 
 $(RTL_B)/gen_tables: $(RTL_DIR)/gen_tables.c $(HEADERS) $(SRC_HDRS)
 	@mkdir -p $(dir $@)
@@ -59,16 +59,24 @@ $(RTL_B)/obj/Vrtl_all: $(RTL_GENERATED) $(RTL_SRC) $(RTL_INC) $(RTL_DIR)/tb/tb_v
 	    $(abspath $(RTL_DIR)/tb/tb_verilator.cpp) $(abspath $(BUILD)/libfacet.a) > $(RTL_B)/verilator.log 2>&1 \
 	    || { tail -n 30 $(RTL_B)/verilator.log; exit 1; }
 
-# the Icarus Verilog testbench on the same sources
-$(RTL_B)/tb_icarus.vvp: $(RTL_GENERATED) $(RTL_SRC) $(RTL_INC) $(RTL_DIR)/tb/tb_icarus.v
+# the Icarus Verilog testbench on the same sources, one build per kernel
+# with only that kernel's module in the test top (RTL_ONE: a run simulates
+# one module, not all of them)
+RTL_ICARUS  := $(RTL_KERNELS:%=$(RTL_B)/icarus/%.vvp)
+$(RTL_B)/icarus/%.vvp: $(RTL_GENERATED) $(RTL_SRC) $(RTL_INC) $(RTL_DIR)/tb/tb_icarus.v
 	@mkdir -p $(dir $@)
 	$(IVERILOG) -g2005 -Wall -Wno-timescale -Wno-implicit-dimensions -I$(RTL_DIR)/rtl -I$(RTL_GEN) \
-	    -s tb_icarus -o $@ $(RTL_GEN)/rtl_all.v $(RTL_DIR)/tb/tb_icarus.v $(RTL_GEN)/fx_tables.v $(RTL_SRC)
+	    -DRTL_ONE -DRTL_ONE_$* -s tb_icarus -o $@ \
+	    $(RTL_GEN)/rtl_all.v $(RTL_DIR)/tb/tb_icarus.v $(RTL_GEN)/fx_tables.v $(RTL_SRC)
 
-rtl-check: $(RTL_B)/obj/Vrtl_all $(RTL_B)/tb_icarus.vvp $(BUILD)/facet
+# what run_tests.sh runs (tests/suites/57-rtl.sh builds it)
+rtl-build: $(RTL_B)/obj/Vrtl_all $(RTL_ICARUS) $(BUILD)/facet
+
+rtl-check: rtl-build
 	sh $(RTL_DIR)/run_tests.sh $(BUILD) $(RTL_RANDOM) $(RTL_SEED)
 
-rtl: $(RTL_B)/obj/Vrtl_all $(RTL_B)/tb_icarus.vvp $(BUILD)/facet
+# the long run, then the cost (one synthesis or place-and-route at a time)
+rtl: rtl-build
 	sh $(RTL_DIR)/run_tests.sh $(BUILD) $(RTL_LONG) $(RTL_SEED)
 	sh $(RTL_DIR)/cost.sh $(BUILD)
 

@@ -6,7 +6,7 @@
 #   rtl_verilator  every kernel against libfacet: the golden vectors and
 #                  RANDOM random vectors from SEED (tb/tb_verilator.cpp)
 #   rtl_icarus     every kernel's golden vectors under Icarus Verilog
-#                  (tb/tb_icarus.v)
+#                  (tb/tb_icarus.v, built per kernel: BUILD/rtl/icarus/K.vvp)
 # Any FX_WIDTH_ERROR (a width claim of the RTL broken in simulation) fails
 # its simulator's run.  Prints "<name>: N passed, N failed, N skipped" lines.
 set -u
@@ -50,7 +50,7 @@ while read -r k nin bits outs lat slot; do
     file=$dir/vectors/$k.hex
     [ "$outs" = 3 ] && { file=$dir/vectors/brdf_hammon.hex; nin=6; }
     nv=$(grep -vc '^//' "$file")
-    out=$(vvp -n "$b/tb_icarus.vvp" +vec="$file" +n="$nv" +name="$k" +slot="$slot" +nin="$nin" +bits="$bits" \
+    out=$(vvp -n "$b/icarus/$k.vvp" +vec="$file" +n="$nv" +name="$k" +slot="$slot" +nin="$nin" +bits="$bits" \
         +outs="$outs" +lat="$lat" 2>&1)
     if printf '%s\n' "$out" | grep -q "^PASS $k:" && ! printf '%s\n' "$out" | grep -q 'FAIL\|FX_WIDTH_ERROR'; then
         printf '%s\n' "$out" | grep '^PASS'
