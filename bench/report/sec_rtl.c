@@ -16,7 +16,7 @@ static const char *num(char *b, size_t n, double v, const char *fmt)
 void section_rtl(report *r)
 {
     report_data *D = r->data;
-    int i, none = 0;
+    int i, none = 0, unmeasured = 0;
     doc_heading(r->doc, 2, "%s", "Hardware: the fast fixed-point kernels as pipelined RTL (ports/rtl)");
     if (!D->n_rtl) {
         doc_para(r->doc, "No RTL cost figures: %s cannot be read (make rtl writes it; ports/rtl/README.md).", D->rtl_path);
@@ -54,6 +54,7 @@ void section_rtl(report *r)
         cells[10] = num(b[10], sizeof b[10], x->fmax_mhz, "%.1f");
         cells[11] = num(b[11], sizeof b[11], x->luts_no_dsp, "%.0f");
         none += !strcmp(x->device, "none");
+        unmeasured += !strcmp(x->device, "-");
         doc_row(r->doc, cells);
     }
     {
@@ -69,4 +70,7 @@ void section_rtl(report *r)
              "are a generic CMOS estimate and a small FPGA evaluating facet's kernels at the precision their contracts "
              "state. Comparisons across the two are rough. ports/rtl/README.md has the cells by type.",
              none, D->n_rtl);
+    if (unmeasured)
+        doc_para(r->doc, "%d modules were not measured by the last cost run (device -): make rtl measures every module.",
+                 unmeasured);
 }

@@ -21,6 +21,11 @@ echo
 echo "Comparisons across processes and libraries are rough: the anchor is a gate count and clock in its own 2002 ASIC"
 echo "process; the figures here are a generic CMOS estimate and a small FPGA."
 echo
+if awk -F'\t' 'NR > 1 && $9 == "-" { n++ } END { exit !n }' "$d/cost.tsv"; then
+    echo "Not measured (device \`-\`: the last cost run stopped before them; \`make rtl\` or \`sh ports/rtl/cost.sh build KERNEL...\`):"
+    echo "$(awk -F'\t' 'NR > 1 && $9 == "-" { printf "%s%s", n++ ? ", " : "", $1 }' "$d/cost.tsv")."
+    echo
+fi
 if awk -F'\t' 'NR > 1 && $9 == "none" { n++ } END { exit !n }' "$d/cost.tsv"; then
     echo "Modules that fit neither device, and what they need (iCE40 mapping of the module alone):"
     echo
