@@ -321,8 +321,11 @@ static void read_rtl(report_data *d)
     char line[512];
     FILE *f;
     int cap = 0, lineno = 0;
-    snprintf(d->rtl_path, sizeof d->rtl_path, "%s/rtl_cost.tsv", d->outdir);
-    f = fopen(d->rtl_path, "r");
+    char path[1024];
+    snprintf(path, sizeof path, "%s/rtl_cost.tsv", d->outdir);
+    /* named without OUTDIR, so a replay elsewhere renders the same text */
+    snprintf(d->rtl_path, sizeof d->rtl_path, "rtl_cost.tsv of the report's directory");
+    f = fopen(path, "r");
     if (!f) {
         snprintf(d->rtl_path, sizeof d->rtl_path, "ports/rtl/cost.tsv");
         f = fopen(d->rtl_path, "r");

@@ -67,7 +67,7 @@ typedef struct report_data {
     int n_mca, n_sizes, n_arm, n_armvec;
     data_rtl *rtl;
     int n_rtl;
-    char rtl_path[1024]; /* the cost file read (or looked for) */
+    char rtl_path[1024]; /* the cost file read (or looked for), as the report names it (no OUTDIR) */
 } report_data;
 
 /* Reads OUTDIR's tables; with replay (a measured.tsv path) also the

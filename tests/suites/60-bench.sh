@@ -252,7 +252,7 @@ build/facet-bench report --facts $(printf '%s\n' $kernels | sed 1d) > /dev/null 
 # (a measurement the set does not record would differ: timings vary)
 r2=build/bench-suite-replay
 rm -rf $r2 && mkdir -p $r2
-cp $r/accuracy.md $r/arm_vec.tsv $r/arm_vec.status $r2/
+cp $r/accuracy.md $r/arm_vec.tsv $r/arm_vec.status $r/rtl_cost.tsv $r2/
 if build/facet-bench report $r2 --replay $r/measured.tsv > $r2.log 2>&1; then ok; else bad "facet-bench report --replay failed (log $r2.log)"; fi
 for f in bench.md report.md index.html sampling.svg image_variants_model.png raster_oracle.png; do
     cmp -s $r/$f $r2/$f && ok || bad "the replayed report's $f differs from the recorded run's"
