@@ -1,6 +1,8 @@
 /* choose.h - the chooser's data (sec_choose.c): the targets a reader
  * chooses for, and per term and target every candidate (kernel x format x
  * tier) with its cost in that target's unit and its two errors.  The
+ * hardware target (the RTL port) costs a candidate in gate equivalents and
+ * states the clock its module reaches instead of cycles.  The
  * chooser section renders them as tables; a page that answers
  * interactively reads the same candidates. */
 #ifndef FACET_REPORT_CHOOSE_H
@@ -15,6 +17,7 @@ typedef struct choose_target {
     const char *unit;         /* the cost's unit, "cyc (llvm-mca)" */
     int f32soft, f32fpu;      /* Cortex-M: its f32 is soft-float / on the FPU */
     const char *vec, *measure; /* an Arm vector port (arm_vec.tsv) and its measure, or NULL */
+    int rtl;                  /* the RTL port (ports/rtl/cost.tsv): cost in gate equivalents, with a clock */
 } choose_target;
 
 int choose_target_count(void);
@@ -25,6 +28,8 @@ typedef struct choice {
     double cost;  /* in the target's unit */
     double impl;  /* implementation error: max rel. vs its own formula (value >= 2^-8) */
     double model; /* model error vs the term's exact form; 0 exact; < 0 a model of its own */
+    double mhz;   /* the RTL target: the clock it reaches on device, MHz; <= 0 none (does not fit) */
+    const char *device; /* the RTL target: the iCE40 it was placed on ("up5k", "hx8k"), or "none" */
 } choice;
 
 /* the candidates of term (kernel_facts.h) on target t that have a cost

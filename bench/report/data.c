@@ -310,6 +310,60 @@ static int read_measured(report_data *d, const char *path)
     return 0;
 }
 
+/* "-" (a figure the row lacks) reads as -1 */
+static double rtl_num(const char *s) { return strcmp(s, "-") ? atof(s) : -1; }
+
+/* ports/rtl/cost.tsv: a header line, then tab-separated module, latency,
+ * cells, gate_equivalents, depth, luts, dsps, fmax_mhz, device, lcs, ebr,
+ * ffs, luts_no_dsp */
+static void read_rtl(report_data *d)
+{
+    char line[512];
+    FILE *f;
+    int cap = 0, lineno = 0;
+    char path[1024];
+    snprintf(path, sizeof path, "%s/rtl_cost.tsv", d->outdir);
+    /* named without OUTDIR, so a replay elsewhere renders the same text */
+    snprintf(d->rtl_path, sizeof d->rtl_path, "rtl_cost.tsv of the report's directory");
+    f = fopen(path, "r");
+    if (!f) {
+        snprintf(d->rtl_path, sizeof d->rtl_path, "ports/rtl/cost.tsv");
+        f = fopen(d->rtl_path, "r");
+    }
+    if (!f)
+        return;
+    while (fgets(line, sizeof line, f)) {
+        char fld[13][32];
+        data_rtl x;
+        if (lineno++ == 0)
+            continue; /* the header */
+        if (sscanf(line, "%31s %31s %31s %31s %31s %31s %31s %31s %31s %31s %31s %31s %31s", fld[0], fld[1], fld[2],
+                   fld[3], fld[4], fld[5], fld[6], fld[7], fld[8], fld[9], fld[10], fld[11], fld[12]) != 13) {
+            fprintf(stderr, "facet-bench report: %s:%d: not a cost row (13 fields)\n", d->rtl_path, lineno);
+            continue;
+        }
+        memset(&x, 0, sizeof x);
+        snprintf(x.module, sizeof x.module, "%s", fld[0]);
+        snprintf(x.device, sizeof x.device, "%s", fld[8]);
+        x.latency = rtl_num(fld[1]), x.cells = rtl_num(fld[2]), x.gate_eq = rtl_num(fld[3]);
+        x.depth = rtl_num(fld[4]), x.luts = rtl_num(fld[5]), x.dsps = rtl_num(fld[6]);
+        x.fmax_mhz = rtl_num(fld[7]), x.lcs = rtl_num(fld[9]), x.ebr = rtl_num(fld[10]);
+        x.ffs = rtl_num(fld[11]), x.luts_no_dsp = rtl_num(fld[12]);
+        d->rtl = grow(d->rtl, &cap, d->n_rtl, sizeof *d->rtl);
+        d->rtl[d->n_rtl++] = x;
+    }
+    fclose(f);
+}
+
+const data_rtl *data_rtl_of(const report_data *d, const char *kernel)
+{
+    int i;
+    for (i = 0; i < d->n_rtl; i++)
+        if (!strcmp(d->rtl[i].module, kernel))
+            return &d->rtl[i];
+    return NULL;
+}
+
 int data_open(report_data *d, const char *outdir, const char *replay)
 {
     int quick = d->quick;
@@ -321,13 +375,14 @@ int data_open(report_data *d, const char *outdir, const char *replay)
     d->sizes = read_tsv(outdir, "size.tsv", &d->n_sizes, 0);
     d->arm = read_tsv(outdir, "arm.tsv", &d->n_arm, 0);
     d->armvec = read_tsv(outdir, "arm_vec.tsv", &d->n_armvec, 1);
+    read_rtl(d);
     return replay ? read_measured(d, replay) : 0;
 }
 
 void data_close(report_data *d)
 {
-    free(d->rows), free(d->timings), free(d->mca), free(d->sizes), free(d->arm), free(d->armvec);
-    d->rows = NULL, d->timings = NULL, d->mca = d->sizes = d->arm = d->armvec = NULL;
+    free(d->rows), free(d->timings), free(d->mca), free(d->sizes), free(d->arm), free(d->armvec), free(d->rtl);
+    d->rows = NULL, d->timings = NULL, d->mca = d->sizes = d->arm = d->armvec = NULL, d->rtl = NULL;
 }
 
 /* ---- lookups ------------------------------------------------------------------ */

@@ -12,7 +12,8 @@
  * cycles per sample of each port's batch loop), size.tsv (bytes of each
  * batch function), arm.tsv (Cortex-M figures, bench/cortexm/cortexm.sh),
  * arm_vec.tsv and arm_vec.status (the NEON and Helium ports' costs,
- * arm_targets.sh).  A missing table reads as empty. */
+ * arm_targets.sh).  And the RTL port's committed cost (ports/rtl/cost.tsv).
+ * A missing table reads as empty. */
 #ifndef FACET_REPORT_DATA_H
 #define FACET_REPORT_DATA_H
 
@@ -46,6 +47,14 @@ typedef struct data_timing {
     cyc_stat s;
 } data_timing;
 
+/* a row of the RTL port's cost (ports/rtl/cost.tsv, the format in
+ * ports/rtl/README.md; made by `make rtl`, committed, so the report needs
+ * no synthesis run); -1 for a figure the row does not have ("-") */
+typedef struct data_rtl {
+    char module[32], device[32];
+    double latency, cells, gate_eq, depth, luts, dsps, fmax_mhz, lcs, ebr, ffs, luts_no_dsp;
+} data_rtl;
+
 typedef struct report_data {
     const char *outdir;
     int quick, replayed;
@@ -56,6 +65,9 @@ typedef struct report_data {
     int n_timings, cap_timings;
     data_tsv *mca, *sizes, *arm, *armvec;
     int n_mca, n_sizes, n_arm, n_armvec;
+    data_rtl *rtl;
+    int n_rtl;
+    char rtl_path[1024]; /* the cost file read (or looked for), as the report names it (no OUTDIR) */
 } report_data;
 
 /* Reads OUTDIR's tables; with replay (a measured.tsv path) also the
@@ -97,6 +109,10 @@ double data_arm(const report_data *d, const char *what, const char *kernel, cons
 /* arm_vec.tsv: format port kernel measure value; -1 if absent */
 double data_armvec(const report_data *d, const char *format, const char *port, const char *kernel,
                    const char *measure);
+/* the RTL cost: OUTDIR/rtl_cost.tsv if there is one (a fixture), else the
+ * committed ports/rtl/cost.tsv (the report runs from the tree's root); the
+ * row of kernel, or NULL */
+const data_rtl *data_rtl_of(const report_data *d, const char *kernel);
 /* arm_vec.status: "PORT ok HOW" or "PORT skipped WHY": the line for port
  * (without the port's name) into b, or why there is none; 1 if ok */
 int data_armvec_status(const report_data *d, const char *port, char *b, size_t n);

@@ -12,17 +12,20 @@
 static const char *const fmts[] = { "f32", "f32_fast", "fx", "fx_fast" };
 
 /* targets: a port of this machine (measured est. cycles), an Arm vector
- * port (arm_vec.tsv: llvm-mca NEON cycles, Helium instruction counts), or a
- * Cortex-M core (arm.tsv: TRM-modelled M0 cycles, llvm-mca M4 cycles) */
+ * port (arm_vec.tsv: llvm-mca NEON cycles, Helium instruction counts), a
+ * Cortex-M core (arm.tsv: TRM-modelled M0 cycles, llvm-mca M4 cycles), or
+ * the RTL port (ports/rtl/cost.tsv: Yosys gate equivalents of the fully
+ * pipelined module, and nextpnr-ice40's clock where it fits an iCE40) */
 static const choose_target targets[] = {
-    { "AVX-512 (this machine)", "avx512", NULL, "cyc", 0, 0, NULL, NULL },
-    { "AVX2 (this machine)", "avx2", NULL, "cyc", 0, 0, NULL, NULL },
-    { "SSE2 (this machine)", "sse2", NULL, "cyc", 0, 0, NULL, NULL },
-    { "NEON (aarch64, Cortex-A57 model)", NULL, NULL, "cyc (llvm-mca A57 model)", 0, 0, "neon", "mca-cortex-a57" },
-    { "Helium (Cortex-M55)", NULL, NULL, "instr (qemu count)", 0, 0, "helium", "qemu-insn" },
-    { "Cortex-M0", NULL, "cortex-m0", "cyc (TRM model)", 1, 0, NULL, NULL },
-    { "Cortex-M4", NULL, "cortex-m4", "cyc (llvm-mca)", 1, 0, NULL, NULL },
-    { "Cortex-M4 with FPU", NULL, "cortex-m4", "cyc (llvm-mca)", 0, 1, NULL, NULL },
+    { "AVX-512 (this machine)", "avx512", NULL, "cyc", 0, 0, NULL, NULL, 0 },
+    { "AVX2 (this machine)", "avx2", NULL, "cyc", 0, 0, NULL, NULL, 0 },
+    { "SSE2 (this machine)", "sse2", NULL, "cyc", 0, 0, NULL, NULL, 0 },
+    { "NEON (aarch64, Cortex-A57 model)", NULL, NULL, "cyc (llvm-mca A57 model)", 0, 0, "neon", "mca-cortex-a57", 0 },
+    { "Helium (Cortex-M55)", NULL, NULL, "instr (qemu count)", 0, 0, "helium", "qemu-insn", 0 },
+    { "Cortex-M0", NULL, "cortex-m0", "cyc (TRM model)", 1, 0, NULL, NULL, 0 },
+    { "Cortex-M4", NULL, "cortex-m4", "cyc (llvm-mca)", 1, 0, NULL, NULL, 0 },
+    { "Cortex-M4 with FPU", NULL, "cortex-m4", "cyc (llvm-mca)", 0, 1, NULL, NULL, 0 },
+    { "Hardware (ports/rtl, one sample per clock)", NULL, NULL, "gate eq.", 0, 0, NULL, NULL, 1 },
 };
 
 int choose_target_count(void) { return (int)(sizeof targets / sizeof targets[0]); }
@@ -38,6 +41,26 @@ static double impl_of(const report_data *D, const char *kn, const char *format, 
 }
 
 static double total_of(const choice *c) { return (c->model > 0 ? c->model : 0) + c->impl; }
+
+/* the RTL target's clock beside a candidate's cost: " at 25.6 MHz (iCE40
+ * UP5K)", " (fits no iCE40)"; empty for the other targets */
+static const char *rtl_clock(char *b, size_t n, const choice *c)
+{
+    if (!c->device)
+        b[0] = 0;
+    else if (c->mhz > 0)
+        snprintf(b, n, " at %.1f MHz (iCE40 %s)", c->mhz, !strcmp(c->device, "up5k") ? "UP5K" : "HX8K");
+    else
+        snprintf(b, n, " (fits no iCE40)");
+    return b;
+}
+
+/* a candidate's cost: 3 digits; gate equivalents (the RTL target) whole */
+static const char *cost_str(char *b, size_t n, const choice *c)
+{
+    snprintf(b, n, c->device ? "%.0f" : "%.3g", c->cost);
+    return b;
+}
 
 /* the frontier of cands by cost: each candidate more accurate than every
  * cheaper one, as "<= cost: kernel format (error)" */
@@ -55,13 +78,13 @@ static void frontier_cell(char *out, size_t cap, choice *c, int n, const char *u
     out[0] = 0;
     for (i = 0; i < n; i++) {
         double e = total_of(&c[i]);
-        char eb[32];
+        char eb[32], ck[64], cb[32];
         if (e >= best * 0.999)
             continue;
         best = e;
-        len += (size_t)snprintf(out + len, len < cap ? cap - len : 0, "%s<= %.3g %s: <b>%s %s</b> (error %s%s)",
-                                len ? "<br>" : "", c[i].cost, unit, c[i].kernel, c[i].format, report_g3(eb, e),
-                                c[i].model > 0 ? ", mostly model" : "");
+        len += (size_t)snprintf(out + len, len < cap ? cap - len : 0, "%s<= %s %s: <b>%s %s</b>%s (error %s%s)",
+                                len ? "<br>" : "", cost_str(cb, sizeof cb, &c[i]), unit, c[i].kernel, c[i].format,
+                                rtl_clock(ck, sizeof ck, &c[i]), report_g3(eb, e), c[i].model > 0 ? ", mostly model" : "");
         if (len >= cap)
             break;
     }
@@ -78,8 +101,18 @@ int choose_candidates(const report_data *D, int term, int t, choice *c, int max)
         const char *kn = names[k];
         double model = kf_model_of(kn);
         for (f = 0; f < 4 && n < max; f++) {
-            double cost = -1, impl;
-            if (tg->port) {
+            double cost = -1, impl, mhz = -1;
+            const char *device = NULL;
+            if (tg->rtl) {
+                /* the RTL is the fast fixed-point tier, bit for bit */
+                const data_rtl *x = f == 3 ? data_rtl_of(D, kn) : NULL;
+                if (!x)
+                    continue;
+                cost = x->gate_eq;
+                mhz = x->fmax_mhz;
+                device = x->device;
+                impl = impl_of(D, kn, fmts[f], "scalar");
+            } else if (tg->port) {
                 const bench_row *x = data_row_of(D, kn, fmts[f], tg->port, "batch");
                 if (x)
                     cost = data_est(D, x->thr.median);
@@ -104,6 +137,8 @@ int choose_candidates(const report_data *D, int term, int t, choice *c, int max)
             c[n].cost = cost;
             c[n].impl = impl;
             c[n].model = model;
+            c[n].mhz = mhz;
+            c[n].device = device;
             n++;
         }
     }
@@ -133,10 +168,14 @@ void section_choose(report *r)
          "the scalar code's measured here (fixed point is bit-exact on every port; the ports' f32 is held to the "
          "same bounds by the 40-arm and 52-helium suites). Cortex-M in cycles per call, "
          "MODELLED from executed-instruction traces (M0: TRM timings, M4: llvm-mca; section Cortex-M). RISC-V "
-         "is not costed here. NEON: %s. Helium: %s. Details: the Pareto figures below, then the long "
+         "is not costed here. Hardware: the RTL port (ports/rtl: the fast fixed-point tier as fully pipelined "
+         "Verilog, bit-exact with the C, one sample per clock) in gate equivalents of a generic CMOS mapping (Yosys "
+         "abc -g cmos, transistors / 4), with the clock nextpnr-ice40 reports where the module fits an iCE40; from "
+         "%s (made by make rtl; section Hardware). NEON: %s. Helium: %s. Details: the Pareto figures below, then the long "
          "tables. D and diffuse have no exact reference (each variant is a model of its own, a look rather "
          "than an approximation): there each variant's cheapest format is listed with its cost.",
-         r->quick ? "a quick" : "a full", why_neon, why_helium);
+         r->quick ? "a quick" : "a full", D->n_rtl ? D->rtl_path : "no cost file (ports/rtl/cost.tsv missing)",
+         why_neon, why_helium);
     for (g = 0; g < kf_term_count(); g++) {
         int any = 0;
         for (t = 0; t < choose_target_count(); t++) {
@@ -190,9 +229,11 @@ void section_choose(report *r)
                             best = 0;
                     if (!best)
                         continue;
-                    len += (size_t)snprintf(cell + len, sizeof cell - len, "%s%s <b>%s %s</b>: %.3g %s (impl. error %.3g)",
+                    char ck[64], cb[32];
+                    len += (size_t)snprintf(cell + len, sizeof cell - len, "%s%s <b>%s %s</b>: %s %s%s (impl. error %.3g)",
                                             len ? "<br>" : "", ref ? "a different model:" : "", other[i].kernel,
-                                            other[i].format, other[i].cost, targets[t].unit, other[i].impl);
+                                            other[i].format, cost_str(cb, sizeof cb, &other[i]), targets[t].unit,
+                                            rtl_clock(ck, sizeof ck, &other[i]), other[i].impl);
                 }
             }
             {

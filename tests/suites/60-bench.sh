@@ -142,6 +142,12 @@ cp $r/report.md $r/report.md.full
   echo "f32 neon brdf_hammon mca-cortex-a57 44.50"; echo "f32_fast neon brdf_hammon mca-cortex-a57 43.25"
   echo "fx_fast neon brdf_hammon mca-cortex-a57 99.75"; echo "f32 neon brdf_hammon qemu-insn 44.9"; } > $r/arm_vec.tsv
 printf 'neon ok llvm-mca fixture\nhelium skipped: a 60-bench fixture reason\n' > $r/arm_vec.status
+# the RTL port's cost (what make rtl leaves in ports/rtl/cost.tsv): a
+# fixture with one module placed on an UP5K and one that fits no iCE40, so
+# the chooser's hardware row shows both forms of its clock
+{ printf 'module\tlatency\tcells\tgate_equivalents\tdepth\tluts\tdsps\tfmax_mhz\tdevice\tlcs\tebr\tffs\tluts_no_dsp\n'
+  printf 'fresnel_schlick\t12\t11790\t21174\t38\t792\t8\t25.59\tup5k\t1687\t0\t896\t-\n'
+  printf 'brdf_hammon\t49\t90001\t170002\t40\t9001\t40\t-\tnone\t-\t9\t5001\t-\n'; } > $r/rtl_cost.tsv
 if build/facet-bench report $r --quick > $r.log 2>&1; then ok; else bad "facet-bench report --quick failed (log $r.log)"; fi
 n=$(grep -c '^<h1>Benchmarks (bench/)' $r/index.html)
 [ "$n" -eq 1 ] && ok || bad "index.html has $n Benchmarks sections, want 1"
@@ -183,6 +189,18 @@ awk '/^### whole BRDF/ { f = 1 } f && /^\| NEON \(aarch64, Cortex-A57 model\) \|
 awk '/^### whole BRDF/ { f = 1 } f && /^\| Helium \(Cortex-M55\) \| 0 \| not costed: skipped: a 60-bench fixture reason \|/ { g = 1 } END { exit !g }' $r/bench.md &&
     ok || bad "chooser: no Helium row stating why it was not costed"
 grep -q 'Helium: skipped: a 60-bench fixture reason' $r/bench.md && ok || bad "chooser: the Helium status is not stated"
+# the chooser's hardware target: gate equivalents and the clock (or that it
+# fits no iCE40), from the RTL cost file; and the hardware section's table
+hw='| Hardware (ports/rtl, one sample per clock) | 1 |'
+awk -v hw="$hw" '/^### / { t = $0 } t == "### whole BRDF" && index($0, hw) == 1 { print; exit }' $r/bench.md |
+    grep -qF '<= 170002 gate eq.: <b>brdf_hammon fx_fast</b> (fits no iCE40)' && ok ||
+    bad "chooser: no hardware row for brdf_hammon in gate equivalents (whole BRDF table)"
+awk -v hw="$hw" '/^### / { t = $0 } t == "### Fresnel" && index($0, hw) == 1 { print; exit }' $r/bench.md |
+    grep -qF '<= 21174 gate eq.: <b>fresnel_schlick fx_fast</b> at 25.6 MHz (iCE40 UP5K)' && ok ||
+    bad "chooser: no hardware row for fresnel_schlick with its clock (Fresnel table)"
+grep -qF "| brdf_hammon | 49 | 90001 | 170002 | 40 | none | 9001 | 40 | 9 | - | - | - |" $r/bench.md &&
+    grep -qF "| anchor: log-domain Phong shading engine (Lai, Yu, Chen, ISCAS 2002) |" $r/bench.md && ok ||
+    bad "hardware section: no row for the fixture's brdf_hammon, or no anchor"
 # the menu's variants in image space: one row per variant (the variants the
 # report's per-kernel table names, bench/report/kernel_facts.c), numbers in
 # every measured cell, no inf or nan, a model error wherever the variant
@@ -234,7 +252,7 @@ build/facet-bench report --facts $(printf '%s\n' $kernels | sed 1d) > /dev/null 
 # (a measurement the set does not record would differ: timings vary)
 r2=build/bench-suite-replay
 rm -rf $r2 && mkdir -p $r2
-cp $r/accuracy.md $r/arm_vec.tsv $r/arm_vec.status $r2/
+cp $r/accuracy.md $r/arm_vec.tsv $r/arm_vec.status $r/rtl_cost.tsv $r2/
 if build/facet-bench report $r2 --replay $r/measured.tsv > $r2.log 2>&1; then ok; else bad "facet-bench report --replay failed (log $r2.log)"; fi
 for f in bench.md report.md index.html sampling.svg image_variants_model.png raster_oracle.png; do
     cmp -s $r/$f $r2/$f && ok || bad "the replayed report's $f differs from the recorded run's"
