@@ -29,7 +29,7 @@ BENCH_SHADER_PEERS := peers_shader_avx2 peers_shader_avx2_fm peers_shader_avx512
 else
 BENCH_SHADER_PEERS := peers_shader peers_shader_fm
 endif
-BENCH_HARNESS := cycles bench cli_bench api_bench loops_scalar loops_call loops_sse2 loops_avx2 loops_neon \
+BENCH_HARNESS := cycles bench cli_bench api_bench speed_bench loops_scalar loops_call loops_sse2 loops_avx2 loops_neon \
                  loops_batch loops_tables peers peers_textbook peers_sample fxhook $(BENCH_SHADER_PEERS)
 BENCH_HARNESS_OBJ := $(BENCH_HARNESS:%=$(BUILD)/bench/harness/%.o)
 BENCH_RASTER_OBJ  := $(patsubst %,$(BUILD)/bench/raster/%.o,raster raster_avx2 raster_sse2 raster_neon)
@@ -74,10 +74,11 @@ $(BUILD)/bench/harness/peers_sample.o: bench/harness/peers_sample.c bench/harnes
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude -I. $(CFLAGS) -O2 -ffp-contract=off -c $< -o $@
 
-# shader-style: -O3, errno-free sqrt and fused multiply-add so the compiler
-# vectorizes it, at the width of the facet port it is compared with; and the
-# same source with -ffast-math
-BENCH_SHADER = $(WARN) -Iinclude $(CFLAGS) -O3 -fno-math-errno -ffp-contract=fast
+# shader-style: -O3, errno-free sqrt, fused multiply-add and no trapping
+# math (clang's default; GCC needs it to if-convert the clamps' compares at
+# AVX2 width) so the compiler vectorizes it, at the width of the facet port
+# it is compared with; and the same source with -ffast-math
+BENCH_SHADER = $(WARN) -Iinclude $(CFLAGS) -O3 -fno-math-errno -fno-trapping-math -ffp-contract=fast
 BENCH_SHADER_SRC = bench/harness/peers_shader.c bench/harness/peers.h $(HEADERS)
 $(BUILD)/bench/harness/peers_shader_avx2.o $(BUILD)/bench/harness/peers_shader_avx2_fm.o: \
     BENCH_PEER = -march=x86-64-v3 -DPEER_WIDTH=avx2 -DPEER_MARCH='"-march=x86-64-v3"'

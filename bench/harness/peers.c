@@ -24,6 +24,7 @@ int peer_available(const peer_set *p) { return !p->width || facet_port_supported
 
 peer_term_fn peer_term(const peer_set *p, const char *name)
 {
+    if (!strcmp(name, "brdf_hammon")) return p->brdf_hammon;
     if (!strcmp(name, "fresnel_schlick")) return p->fresnel_schlick;
     if (!strcmp(name, "ggx_d")) return p->ggx_d;
     if (!strcmp(name, "smith_g1")) return p->smith_g1;

@@ -61,6 +61,24 @@ static void tb_brdf(float *out, const peer_brdf_in *in, size_t n)
     }
 }
 
+/* brdf_hammon's own formula as printed (same-formula peer), from the same
+ * dots as facet: N.H = (N.L + N.V) / sqrt(2 + 2 L.V), L.H = sqrt((1 + L.V) / 2),
+ * D in its tan form, Hammon's G2 / (4 N.L N.V), powf, Hammon's diffuse. */
+static void tb_brdf_hammon_b(float *out, const float *const *in, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        float nl = clampf_(in[0][i], FACET_COS_MIN, 1.0f), nv = clampf_(in[1][i], FACET_COS_MIN, 1.0f);
+        float lv = clampf_(in[2][i], -1.0f, 1.0f), a = clampf_(in[3][i], FACET_ALPHA_MIN, 1.0f);
+        float len = sqrtf(2.0f + 2.0f * lv);
+        float noh = len > 0.0f ? clampf_((nl + nv) / len, 0.0f, 1.0f) : 1.0f;
+        float loh = sqrtf((1.0f + lv) / 2.0f);
+        float g2 = 2.0f * nl * nv / ((1.0f - a) * 2.0f * nl * nv + a * (nl + nv));
+        float spec = tb_d(noh, a) * g2 * tb_fresnel(in[4][i], loh) / (4.0f * nl * nv);
+        out[i] = spec + tb_diffuse(nl, nv, lv, noh, a, in[5][i]);
+    }
+}
+
 static void tb_fresnel_b(float *out, const float *const *in, size_t n)
 {
     size_t i;
@@ -121,5 +139,5 @@ static void tb_vish_b(float *out, const float *const *in, size_t n)
 
 const peer_set peer_textbook = {
     "textbook", "-O2 (gcc/clang default fp: no contraction, math-errno)", NULL,
-    tb_brdf, tb_fresnel_b, tb_ggx_d_b, tb_g1_b, tb_g2_b, tb_vis_b, tb_g1h_b, tb_vish_b,
+    tb_brdf, tb_brdf_hammon_b, tb_fresnel_b, tb_ggx_d_b, tb_g1_b, tb_g2_b, tb_vis_b, tb_g1h_b, tb_vish_b,
 };

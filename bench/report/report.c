@@ -815,17 +815,17 @@ static void section_kernels(void)
         }
     }
     tend();
-    para("Peers (bench/harness/peers.h): <b>textbook</b> (-O2): H = normalize(L+V), powf, D in tan form, Smith "
-         "via Lambda with sqrtf, plain divisions. <b>shader</b> (-O3 -fno-math-errno "
+    para("Peers (bench/harness/peers.h): <b>textbook</b> (-O2): powf, D in tan form, Smith "
+         "via Lambda with sqrtf, plain divisions. <b>shader</b> (-O3 -fno-math-errno -fno-trapping-math "
          "-ffp-contract=fast, auto-vectorized), built for the width of the facet port it is compared with: "
          "<b>shader_avx2</b> -march=x86-64-v3, <b>shader_avx512</b> -march=x86-64-v4 (each run only where "
-         "that port runs; elsewhere one native build): a2 form of D, exact correlated Vis with two sqrtf, "
-         "pow5 by multiplication, Hammon diffuse. <b>*_fm</b>: the same source and width with -ffast-math. "
-         "Single-term "
-         "peers take the same inputs as the facet kernel. The brdf_hammon peer rows compute "
-         "D Vis_exact F + Hammon diffuse from vectors L, V in tangent space (N = z) plus alpha, f0, "
-         "albedo; facet's brdf_hammon takes (N.L, N.V, L.V) and uses Hammon's Vis (its model error is in "
-         "the tradeoff table), so a caller with vectors pays one extra 3-term dot product for L.V.");
+         "that port runs; elsewhere one native build): a2 form of D, pow5 by multiplication. "
+         "<b>*_fm</b>: the same source and width with -ffast-math. Every peer row (path peer) takes the "
+         "same inputs and computes the same formula as the facet kernel: brdf_hammon's peers take (N.L, "
+         "N.V, L.V, alpha, f0, albedo), derive N.H and L.H from one rsqrt of 2 + 2 L.V and use Hammon's "
+         "Vis, so their error is arithmetic error and their time the same work. The rows of path "
+         "peer-vectors are another model, D Vis_exact F + Hammon diffuse from vectors L, V (N = z), "
+         "judged against its own oracle.");
 }
 
 static void section_tradeoff(void)
@@ -947,8 +947,9 @@ static void section_pareto(void)
                     continue;
                 pts[n].x = est(x->r.thr.median);
                 pts[n].yi = x->r.err.max_rel_vis;
-                /* the brdf peers compute the exact-Vis model; single-term peers the kernel's own formula */
-                pts[n].ym = !strcmp(kn, "brdf_hammon") ? 0 : model;
+                /* every "peer" row computes the kernel's own formula (the exact-Vis brdf
+                 * peers are path "peer-vectors", not plotted) */
+                pts[n].ym = model;
                 pts[n].kind = 1;
                 snprintf(pts[n].label, sizeof pts[n].label, "peer %s (%s)", x->port, kn);
                 n++;
@@ -1644,8 +1645,9 @@ static void target_tiers(void)
                 cells[1] = fmt(b[1], sizeof b[1], "%.2fx (%.2f vs %.2f est. cycles/sample); max err %.3g vs bound %.3g",
                                r, est(x->r.thr.median), est(p->r.thr.median), x->r.err.max_rel, x->r.bound);
                 cells[2] = r >= tiers[t].want && x->r.within ? "yes" : "**no**";
-                cells[3] = "ratio within one run; the peer (-march of the same width, -ffast-math) computes the "
-                           "exact-Vis model from vectors, max error ~0.3 at the peak";
+                cells[3] = "ratio within one run; the peer (-march of the same width, -ffast-math) computes "
+                           "brdf_hammon's own formula from the same dots (bench/harness/peers.h), max error ~0.4 "
+                           "at the peak";
             } else {
                 cells[1] = "-";
                 cells[2] = "n/a";
@@ -1706,7 +1708,7 @@ static void section_targets(void)
         cells[1] = fmt(b[1], sizeof b[1], "%.2fx vs %s (%.2f est. cycles/sample); max err %.3g vs bound %.3g", r,
                        fastest->port, est(fastest->r.thr.median), ab->r.err.max_rel, ab->r.bound);
         cells[2] = r >= 1.8 && ab->r.within ? "yes" : "**no**";
-        cells[3] = "ratio within one run; the peer computes the exact-Vis model from vectors (see peers)";
+        cells[3] = "ratio within one run; the peer computes brdf_hammon's own formula from the same dots (see peers)";
     } else {
         cells[1] = "-";
         cells[2] = "n/a";
