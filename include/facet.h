@@ -89,13 +89,15 @@ extern "C" {
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1]; result in [0, 1].
  * Error: <= FACET_ERR_NOH_FROM_DOTS_F32 (2^-21.5); measured max 2^-22.12 (worst port,
  * 30 M samples) at (0.0587858558, 0.458401412, -0.495318681).
- * Cost: 17 ops (1 rsqrt, 0 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 7; fast: clamps 6, NaN 3, peak 0, term 7.
+ * Cost: 16 ops (1 rsqrt, 0 rcp). */
 float facet_noh_from_dots_f32(float nol, float nov, float lov);
 
 /* L.H = V.H = |L + V| / 2 = sqrt((1 + L.V) / 2), via the same rsqrt.
  * Domain: L.V in [-1, 1]; L.V = -1 gives 0.
  * Error: <= FACET_ERR_LOH_FROM_DOTS_F32 (2^-22); measured max 2^-22.64 (worst port,
  * 30 M samples) at (0.0295905489).
+ * Budget: clamps 2, NaN 2, peak 0, term 5; fast: clamps 2, NaN 2, peak 0, term 5.
  * Cost: 9 ops (1 rsqrt, 0 rcp). */
 float facet_loh_from_dots_f32(float lov);
 
@@ -103,6 +105,7 @@ float facet_loh_from_dots_f32(float lov);
  * multiplies.  Domain: f0, cos in [0, 1].  F(f0, 1) = f0, F(f0, 0) = 1.
  * Error: <= FACET_ERR_FRESNEL_SCHLICK_F32 (2^-21); measured max 2^-21.40 (worst port,
  * 30 M samples) at (2.34035488e-05, 0.494028538).
+ * Budget: clamps 4, NaN 2, peak 0, term 9; fast: clamps 4, NaN 2, peak 0, term 9.
  * Cost: 15 ops (0 rsqrt, 0 rcp). */
 float facet_fresnel_schlick_f32(float f0, float cos_theta);
 
@@ -127,6 +130,7 @@ float facet_fresnel_schlick_f32(float f0, float cos_theta);
  * both tiers are the same code with fully refined estimates.
  * Error: <= FACET_ERR_FRESNEL_COOK_TORRANCE_F32 (2^-19), both tiers; measured max
  * 2^-19.71 (worst port, 3 M samples) at (6.10115691e-08, 0.528173864).
+ * Budget: clamps 4, NaN 2, peak 0, term 37; fast: clamps 4, NaN 2, peak 0, term 37.
  * Cost: 43 ops (2 rsqrt, 1 rcp). */
 float facet_fresnel_cook_torrance_f32(float f0, float voh);
 
@@ -138,7 +142,8 @@ float facet_fresnel_cook_torrance_f32(float f0, float voh);
  * No reciprocal or rsqrt: both tiers are the same code.
  * Error: <= FACET_ERR_FRESNEL_SCHLICK_F90_F32 (2^-21); measured max 2^-21.54 (worst port,
  * 3 M samples) at (2.63928523e-08, 0.999971151, 0.499411613).
- * Cost: 25 ops (0 rsqrt, 0 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 15; fast: clamps 6, NaN 3, peak 0, term 15.
+ * Cost: 24 ops (0 rsqrt, 0 rcp). */
 float facet_fresnel_schlick_f90_f32(float f0, float f90, float voh);
 
 /* Schlick's Fresnel with the spherical-Gaussian power (Karis):
@@ -155,6 +160,7 @@ float facet_fresnel_schlick_f90_f32(float f0, float f90, float voh);
  * y's two roundings times |y| ln 2 <= 8.7, and the constants rounded to float.
  * Error: <= FACET_ERR_FRESNEL_SCHLICK_SG_F32 (2^-19.5); measured max 2^-20.03 (sse2 and
  * scalar, no FMA; 2^-20.45 with FMA), 300 k samples, at (4.17905432e-10, 0.999937892).
+ * Budget: clamps 4, NaN 2, peak 0, term 17; fast: clamps 4, NaN 2, peak 0, term 17.
  * Cost: 23 ops (0 rsqrt, 0 rcp). */
 float facet_fresnel_schlick_sg_f32(float f0, float cos_theta);
 
@@ -165,6 +171,7 @@ float facet_fresnel_schlick_sg_f32(float f0, float cos_theta);
  * D(0) = alpha^2/pi.  Domain: N.H in [0, 1], alpha in [FACET_ALPHA_MIN, 1].
  * Error: <= FACET_ERR_GGX_D_F32 (2^-20); measured max 2^-20.60 (worst port,
  * 30 M samples) at (0.999949455, 0.254411191).
+ * Budget: clamps 4, NaN 2, peak 0, term 8; fast: clamps 4, NaN 2, peak 0, term 8.
  * Cost: 14 ops (0 rsqrt, 1 rcp). */
 float facet_ggx_d_f32(float noh, float alpha);
 
@@ -192,6 +199,7 @@ float facet_ggx_d_f32(float noh, float alpha);
  * Error: <= FACET_ERR_BLINN_PHONG_D_F32 (2^-15); measured max 2^-15.42 (every port,
  * 300 k samples) at (0.776722491, 0.0863524303), where D = 2.6e-28: the exponent
  * p log2 N.H = -88.6 and its few roundings.
+ * Budget: clamps 4, NaN 2, peak 0, term 52; fast: clamps 4, NaN 2, peak 0, term 52.
  * Cost: 58 ops (0 rsqrt, 2 rcp). */
 float facet_blinn_phong_d_f32(float noh, float alpha);
 
@@ -205,6 +213,7 @@ float facet_blinn_phong_d_f32(float noh, float alpha);
  * D(1) = 1/(pi alpha^2), D(0) = 0.
  * Error: <= FACET_ERR_BECKMANN_D_F32 (2^-15); measured max 2^-15.59 (every port,
  * 300 k samples) at (0.997685969, 0.00783577561), where D = 7.4e-30 (y = -109).
+ * Budget: clamps 4, NaN 2, peak 0, term 30; fast: clamps 4, NaN 2, peak 0, term 30.
  * Cost: 36 ops (0 rsqrt, 1 rcp). */
 float facet_beckmann_d_f32(float noh, float alpha);
 
@@ -220,7 +229,8 @@ float facet_beckmann_d_f32(float noh, float alpha);
  * has: K is floored at ax^2 ay^2 / 2 (the bracket at 1/2), so D <= 4 / (pi ax ay).
  * Error: <= FACET_ERR_GGX_ANISO_D_F32 (2^-20.5); measured max 2^-20.78 (every port,
  * 300 k samples) at (0.998403668, 0.0521120951, -0.0217817482, 0.621842802, 0.203452751).
- * Cost: 32 ops (0 rsqrt, 1 rcp). */
+ * Budget: clamps 10, NaN 5, peak 0, term 16; fast: clamps 10, NaN 5, peak 0, term 16.
+ * Cost: 31 ops (0 rsqrt, 1 rcp). */
 float facet_ggx_aniso_d_f32(float noh, float toh, float boh, float alpha_x, float alpha_y);
 
 /* Generalized Trowbridge-Reitz (GTR, Burley 2012; Dimov 2015) with tail
@@ -240,7 +250,8 @@ float facet_ggx_aniso_d_f32(float noh, float toh, float boh, float alpha_x, floa
  * 300 k samples) at (0.999999762, 0.00208001724, 3.75617146): at the peak of a
  * heavy tail, 2^(-gamma log2 d) with -gamma log2 d = 66.7 (its rounding and
  * log2's) against c = 2^-60.
- * Cost: 136 ops (0 rsqrt, 5 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 126; fast: clamps 6, NaN 3, peak 0, term 126.
+ * Cost: 135 ops (0 rsqrt, 5 rcp). */
 float facet_gtr_d_f32(float noh, float alpha, float gamma);
 
 /* Exact Smith masking for GGX:
@@ -248,6 +259,7 @@ float facet_gtr_d_f32(float noh, float alpha, float gamma);
  * Domain: N.V in [0, 1]; G1(0) = 0, G1(1) = 1.
  * Error: <= FACET_ERR_SMITH_G1_F32 (2^-21); measured max 2^-21.66 (worst port,
  * 30 M samples) at (0.000242657741, 0.00600074418).
+ * Budget: clamps 4, NaN 2, peak 0, term 11; fast: clamps 4, NaN 2, peak 0, term 11.
  * Cost: 17 ops (1 rsqrt, 1 rcp). */
 float facet_smith_g1_f32(float nov, float alpha);
 
@@ -257,13 +269,15 @@ float facet_smith_g1_f32(float nov, float alpha);
  * Domain: N.L, N.V in [FACET_COS_MIN, 1].
  * Error: <= FACET_ERR_SMITH_G2_F32 (2^-21); measured max 2^-21.40 (worst port,
  * 30 M samples) at (0.492564738, 4.08501137e-06, 0.00407959009).
- * Cost: 30 ops (2 rsqrt, 1 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 20; fast: clamps 6, NaN 3, peak 0, term 20.
+ * Cost: 29 ops (2 rsqrt, 1 rcp). */
 float facet_smith_g2_f32(float nol, float nov, float alpha);
 
 /* Uncorrelated Smith G2 = G1(N.L) G1(N.V), with one reciprocal.
  * Domain: as smith_g2.  Error: <= FACET_ERR_SMITH_G2_UNCORRELATED_F32 (2^-20.5); measured max 2^-20.95 (worst port,
  * 30 M samples) at (1.06287043e-05, 4.67698592e-05, 0.0156806652).
- * Cost: 30 ops (2 rsqrt, 1 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 20; fast: clamps 6, NaN 3, peak 0, term 20.
+ * Cost: 29 ops (2 rsqrt, 1 rcp). */
 float facet_smith_g2_uncorrelated_f32(float nol, float nov, float alpha);
 
 /* Visibility: correlated G2 / (4 N.L N.V) with the numerator cancelled:
@@ -271,13 +285,15 @@ float facet_smith_g2_uncorrelated_f32(float nol, float nov, float alpha);
  * Domain: as smith_g2; largest at N.L = N.V = FACET_COS_MIN, alpha_min:
  * 0.5 / (2 COS_MIN alpha_min) = 2^28.  Error: <= FACET_ERR_SMITH_VIS_F32 (2^-21); measured max 2^-21.62 (worst port,
  * 30 M samples) at (3.14775752e-06, 0.126348287, 0.00824174657).
- * Cost: 27 ops (2 rsqrt, 1 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 17; fast: clamps 6, NaN 3, peak 0, term 17.
+ * Cost: 26 ops (2 rsqrt, 1 rcp). */
 float facet_smith_vis_f32(float nol, float nov, float alpha);
 
 /* Hammon's G1 approximation (= Schlick-GGX with k = alpha/2):
  *   G1 ~ 2 N.V / (N.V (2 - alpha) + alpha)
  * Domain: N.V in [0, 1].  Error: <= FACET_ERR_SMITH_G1_HAMMON_F32 (2^-21.5); measured max 2^-22.26 (worst port,
  * 30 M samples) at (0.516059339, 0.018353641).
+ * Budget: clamps 4, NaN 2, peak 0, term 5; fast: clamps 4, NaN 2, peak 0, term 5.
  * Cost: 11 ops (0 rsqrt, 1 rcp). */
 float facet_smith_g1_hammon_f32(float nov, float alpha);
 
@@ -317,7 +333,8 @@ float facet_smith_g1_hammon_f32(float nov, float alpha);
  * facet_oracle_smith_g1_gtr): <= FACET_ERR_SMITH_G1_GTR_F32 (2^-20); measured
  * max 2^-20.89 (sse2, 300 k samples) at (0.00778461341, 0.126742497, 3.8678031);
  * f32_fast 2^-14.27 (avx512; 2^-14.01 with estimates at the bound).
- * Cost: 275 ops (1 rsqrt, 15 rcp). */
+ * Budget: clamps 8, NaN 3, peak 0, term 263; fast: clamps 8, NaN 3, peak 0, term 263.
+ * Cost: 274 ops (1 rsqrt, 15 rcp). */
 float facet_smith_g1_gtr_f32(float nov, float alpha, float gamma);
 
 /* Hammon's G2 approximation:
@@ -325,14 +342,16 @@ float facet_smith_g1_gtr_f32(float nov, float alpha, float gamma);
  * the lerp evaluated as (1 - alpha) 2 N.L N.V + alpha (N.L + N.V).
  * Domain: N.L, N.V in [FACET_COS_MIN, 1].  Error: <= FACET_ERR_SMITH_G2_HAMMON_F32 (2^-21); measured max 2^-21.83 (worst port,
  * 30 M samples) at (1.45550921e-05, 0.00873631984, 0.00181798683).
- * Cost: 20 ops (0 rsqrt, 1 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 10; fast: clamps 6, NaN 3, peak 0, term 10.
+ * Cost: 19 ops (0 rsqrt, 1 rcp). */
 float facet_smith_g2_hammon_f32(float nol, float nov, float alpha);
 
 /* Hammon's visibility: G2_hammon / (4 N.L N.V) = 0.5 / lerp(2 N.L N.V, N.L + N.V, alpha).
  * Domain: as smith_g2_hammon; max 0.5/(2 alpha_min COS_MIN) = 2.7e8.
  * Error: <= FACET_ERR_SMITH_VIS_HAMMON_F32 (2^-21.5); measured max 2^-22.09 (worst port,
  * 30 M samples) at (0.713193238, 0.713202953, 0.00830200501).
- * Cost: 17 ops (0 rsqrt, 1 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 7; fast: clamps 6, NaN 3, peak 0, term 7.
+ * Cost: 16 ops (0 rsqrt, 1 rcp). */
 float facet_smith_vis_hammon_f32(float nol, float nov, float alpha);
 
 /* ---- shadowing and visibility: the rest of the menu -------------------------
@@ -363,13 +382,16 @@ float facet_smith_vis_hammon_f32(float nol, float nov, float alpha);
 /* Implicit G = N.L N.V (no roughness: the plain cosine product).
  * Domain: N.L, N.V in [0, 1]; symmetric.  G(1, 1) = 1, G(0, x) = 0.
  * Error: <= FACET_ERR_G_IMPLICIT_F32 (2^-23.5; both tiers: one rounding).
+ * Budget: clamps 4, NaN 2, peak 0, term 1; fast: clamps 4, NaN 2, peak 0, term 1.
  * Cost: 7 ops (0 rsqrt, 0 rcp). */
 float facet_g_implicit_f32(float nol, float nov);
 
 /* Neumann G = N.L N.V / max(N.L, N.V), which is min(N.L, N.V): evaluated
  * so, exact (0 at N.L = N.V = 0, where the quotient form is 0/0).
  * Domain: N.L, N.V in [0, 1]; symmetric.
- * Error: exact, measured 0; the tests enforce FACET_ERR_G_NEUMANN_F32 (2^-30), both tiers.  Cost: 7 ops (0 rsqrt, 0 rcp). */
+ * Error: exact, measured 0; the tests enforce FACET_ERR_G_NEUMANN_F32 (2^-30), both tiers.
+ * Budget: clamps 4, NaN 2, peak 0, term 1; fast: clamps 4, NaN 2, peak 0, term 1.
+ * Cost: 7 ops (0 rsqrt, 0 rcp). */
 float facet_g_neumann_f32(float nol, float nov);
 
 /* Cook-Torrance (V-groove) G = min(1, 2 N.H N.V / V.H, 2 N.H N.L / V.H)
@@ -378,7 +400,8 @@ float facet_g_neumann_f32(float nol, float nov);
  * N.L, N.V.  Where 2 N.H min(N.L, N.V) >= V.H the result is 1 exactly
  * (V.H = 0 included); the reciprocal sees V.H >= FACET_COS_MIN only.
  * Error: <= FACET_ERR_G_COOK_TORRANCE_F32 (2^-22).
- * Cost: 24 ops (0 rsqrt, 1 rcp). */
+ * Budget: clamps 8, NaN 3, peak 0, term 12; fast: clamps 8, NaN 3, peak 0, term 12.
+ * Cost: 23 ops (0 rsqrt, 1 rcp). */
 float facet_g_cook_torrance_f32(float nol, float nov, float noh, float voh);
 
 /* Kelemen G = N.L N.V / (V.H)^2 (Kelemen and Szirmay-Kalos: G / (4 N.L N.V)
@@ -387,7 +410,8 @@ float facet_g_cook_torrance_f32(float nol, float nov, float noh, float voh);
  * triples (V.H = 0 gives 1).  Domain: N.L, N.V in [FACET_COS_MIN, 1], V.H
  * in [0, 1]; symmetric in N.L, N.V.
  * Error: <= FACET_ERR_G_KELEMEN_F32 (2^-21.5).
- * Cost: 16 ops (0 rsqrt, 1 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 6; fast: clamps 6, NaN 3, peak 0, term 6.
+ * Cost: 15 ops (0 rsqrt, 1 rcp). */
 float facet_g_kelemen_f32(float nol, float nov, float voh);
 
 /* Smith G1 for Beckmann, Walter's rational approximation of 1 / (1 + Lambda):
@@ -403,6 +427,7 @@ float facet_g_kelemen_f32(float nol, float nov, float voh);
  * (1 / (1 + Lambda), Lambda from erf; facet_oracle_smith_g1_beckmann_exact):
  * see the README's model-error table.
  * Error: <= FACET_ERR_SMITH_G1_BECKMANN_F32 (2^-20.5).
+ * Budget: clamps 4, NaN 2, peak 0, term 18; fast: clamps 4, NaN 2, peak 0, term 18.
  * Cost: 24 ops (1 rsqrt, 1 rcp). */
 float facet_smith_g1_beckmann_f32(float nov, float alpha);
 
@@ -413,6 +438,7 @@ float facet_smith_g1_beckmann_f32(float nov, float alpha);
  * alpha' <= 1).  Domain: N.V in [0, 1], alpha in [FACET_ALPHA_MIN, 1];
  * G1(0) = 0, G1(1) = 1.  Model error vs the exact Beckmann G1: README.
  * Error: <= FACET_ERR_SMITH_G1_SCHLICK_BECKMANN_F32 (2^-21.5).
+ * Budget: clamps 4, NaN 2, peak 0, term 5; fast: clamps 4, NaN 2, peak 0, term 5.
  * Cost: 11 ops (0 rsqrt, 1 rcp). */
 float facet_smith_g1_schlick_beckmann_f32(float nov, float alpha);
 
@@ -423,7 +449,8 @@ float facet_smith_g1_schlick_beckmann_f32(float nov, float alpha);
  * Domain: as smith_vis_hammon; symmetric.  Model error vs exact smith_vis:
  * Hammon's, up to 29% (README).
  * Error: <= FACET_ERR_SMITH_VIS_JOINT_APPROX_F32 (2^-21.5).
- * Cost: 17 ops (0 rsqrt, 1 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 7; fast: clamps 6, NaN 3, peak 0, term 7.
+ * Cost: 16 ops (0 rsqrt, 1 rcp). */
 float facet_smith_vis_joint_approx_f32(float nol, float nov, float alpha);
 
 /* A fitted visibility at Hammon's cost (one reciprocal, no square root):
@@ -440,6 +467,7 @@ float facet_smith_vis_joint_approx_f32(float nol, float nov, float alpha);
  * N.L, N.V in [2^-8, 1], alpha in [2^-10, 1] (tests/f32/test_vis_fit.c).
  * Domain: as smith_vis; symmetric.
  * Error: <= FACET_ERR_SMITH_VIS_FIT_F32 (2^-21), vs the oracle of this formula.
+ * Budget: clamps 6, NaN 3, peak 0, term 19; fast: clamps 6, NaN 3, peak 0, term 19.
  * Cost: 28 ops (0 rsqrt, 1 rcp). */
 #define FACET_MODEL_ERR_SMITH_VIS_FIT 0.05
 float facet_smith_vis_fit_f32(float nol, float nov, float alpha);
@@ -497,7 +525,8 @@ void facet_smith_vis_fit_f32_fast_batch(float *out, const float *nol, const floa
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, albedo.
  * Error: <= FACET_ERR_DIFFUSE_HAMMON_F32 (2^-20); measured max 2^-20.59 (worst port,
  * 30 M samples) at (0.331329554, 0.331329554, 0.999999702, 0.0131228399, 0.645663142).
- * Cost: 50 ops (1 rsqrt, 1 rcp). */
+ * Budget: clamps 10, NaN 5, peak 0, term 32; fast: clamps 10, NaN 5, peak 0, term 30.
+ * Cost: 47 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, float albedo);
 
 /* Burley's diffuse ("Disney", 2012), a BRDF value:
@@ -513,7 +542,8 @@ float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, flo
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.H, alpha, albedo.
  * Error: <= FACET_ERR_DIFFUSE_BURLEY_F32 (2^-20.5); measured max 2^-21.09 (worst port,
  * 3 M samples) at (0.00749915093, 0.00748796575, 0.00142297987, 0.191616133, 0.978153765).
- * Cost: 39 ops (1 rsqrt, 0 rcp). */
+ * Budget: clamps 10, NaN 5, peak 0, term 23; fast: clamps 10, NaN 5, peak 0, term 23.
+ * Cost: 38 ops (1 rsqrt, 0 rcp). */
 float facet_diffuse_burley_f32(float nol, float nov, float loh, float alpha, float albedo);
 
 /* Oren-Nayar's qualitative diffuse with sigma = alpha / 2 (radians; the
@@ -531,7 +561,8 @@ float facet_diffuse_burley_f32(float nol, float nov, float loh, float alpha, flo
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, albedo.
  * Error: <= FACET_ERR_DIFFUSE_OREN_NAYAR_F32 (2^-20.5); measured max 2^-21.19 (worst port,
  * 3 M samples) at (0.0482582487, 0.0482582487, 1, 0.223686263, 2.82182633e-08).
- * Cost: 34 ops (0 rsqrt, 1 rcp). */
+ * Budget: clamps 10, NaN 5, peak 0, term 18; fast: clamps 10, NaN 5, peak 0, term 18.
+ * Cost: 33 ops (0 rsqrt, 1 rcp). */
 float facet_diffuse_oren_nayar_f32(float nol, float nov, float lov, float alpha, float albedo);
 
 /* Hammon's hybrid diffuse: diffuse_hammon with the smooth term taken from
@@ -545,7 +576,8 @@ float facet_diffuse_oren_nayar_f32(float nol, float nov, float lov, float alpha,
  * Domain: as diffuse_hammon.
  * Error: <= FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32 (2^-20.5); measured max 2^-20.88 (worst port,
  * 3 M samples) at (0.000297121675, 2.25166241e-06, 0.855512679, 0.0379198343, 0.816826582).
- * Cost: 53 ops (1 rsqrt, 1 rcp). */
+ * Budget: clamps 10, NaN 5, peak 0, term 37; fast: clamps 10, NaN 5, peak 0, term 37.
+ * Cost: 52 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_hybrid_f32(float nol, float nov, float lov, float alpha,
                                       float albedo);
 
@@ -556,7 +588,8 @@ float facet_diffuse_hammon_hybrid_f32(float nol, float nov, float lov, float alp
  * Domain: as diffuse_hammon.
  * Error: <= FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32 (2^-20.5); measured max 2^-20.86 (worst port,
  * 3 M samples) at (9.97556413e-07, 2.99169169e-05, -0.263197154, 0.189148799, 0.589178443).
- * Cost: 36 ops (1 rsqrt, 1 rcp). */
+ * Budget: clamps 10, NaN 5, peak 0, term 20; fast: clamps 10, NaN 5, peak 0, term 20.
+ * Cost: 35 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_cheap_f32(float nol, float nov, float lov, float alpha,
                                      float albedo);
 
@@ -571,7 +604,8 @@ float facet_diffuse_hammon_cheap_f32(float nol, float nov, float lov, float alph
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, f0, albedo.
  * Error: <= FACET_ERR_BRDF_HAMMON_F32 (2^-18.5); measured max 2^-19.30 (worst port,
  * 30 M samples) at (0.683041394, 0.683041394, -0.0669089183, 0.00208292552, 3.8500432e-11, 4.40309833e-09).
- * Cost: 103 ops (1 rsqrt, 3 rcp). */
+ * Budget: clamps 12, NaN 5, peak 27, term 42; fast: clamps 12, NaN 5, peak 26, term 39.
+ * Cost: 86 ops (1 rsqrt, 3 rcp). */
 float facet_brdf_hammon_f32(float nol, float nov, float lov, float alpha,
                             float f0, float albedo);
 
@@ -586,6 +620,7 @@ void facet_brdf_hammon_rgb_f32(float out[3], float nol, float nov, float lov,
 /* Lambert: albedo / pi.  Domain: albedo in [0, 1].
  * Error: <= FACET_ERR_LAMBERT_F32 (2^-22.5); measured max 2^-23.26 (worst port,
  * 30 M samples) at (0.196352884).
+ * Budget: clamps 2, NaN 2, peak 0, term 1; fast: clamps 2, NaN 2, peak 0, term 1.
  * Cost: 5 ops (0 rsqrt, 0 rcp). */
 float facet_lambert_f32(float albedo);
 

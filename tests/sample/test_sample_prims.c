@@ -5,10 +5,9 @@
  *     sine <= 2^-21 for u below 1/64 (the polynomial keeps it relative);
  *     sin^2 + cos^2 - 1 within 2^-22.
  *   - the operation count of every sampler body (the "Cost" of facet.h),
- *     counted like tests/f32/test_op_counts.c by instantiating the bodies on a
- *     counting op layer: add, sub, mul, fma, fnma, min, max = 1, clamp and
- *     select = 2, the three bit ops (exp2i, getexp, getmant) = 1; rcp and
- *     rsqrt reported apart; each must equal the Cost facet.h states. */
+ *     counted like tests/f32/test_op_counts.c by instantiating the bodies on
+ *     the counting op layer (tests/lib/op_count.h, its rules there); each
+ *     must equal the Cost facet.h states. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <math.h>
@@ -17,25 +16,7 @@
 #include "../lib/harness.h"
 #include "facet.h"
 
-static long n_ops, n_rcp, n_rsqrt;
-
-static float cnt_set(float x) { return x; }
-static float cnt_add(float a, float b) { n_ops++; return a + b; }
-static float cnt_sub(float a, float b) { n_ops++; return a - b; }
-static float cnt_mul(float a, float b) { n_ops++; return a * b; }
-static float cnt_fma(float a, float b, float c) { n_ops++; return a * b + c; }
-static float cnt_fnma(float a, float b, float c) { n_ops++; return c - a * b; }
-static float cnt_min(float a, float b) { n_ops++; return a < b ? a : b; }
-static float cnt_max(float a, float b) { n_ops++; return a > b ? a : b; }
-static float cnt_sel_lt(float a, float b, float x, float y) { n_ops += 2; return a < b ? x : y; }
-static float cnt_clamp(float x, float lo, float hi) { n_ops += 2; x = x > lo ? x : lo; return x < hi ? x : hi; }
-static float cnt_keep_ord(float r, float a, float b) { n_ops += 2; return a == a && b == b ? r : 0.0f; }
-static float cnt_rcp(float x) { n_rcp++; return 1.0f / x; }
-static float cnt_rsqrt(float x) { n_rsqrt++; return 1.0f / (float)sqrt(x); }
-static float cnt_sqr_err(float a, float p) { n_ops++; return (float)((double)a * a - p); }
-static float cnt_exp2i(float k) { n_ops++; return (float)ldexp(1.0, (int)k); }
-static float cnt_getexp(float x) { int e; n_ops++; frexp(x, &e); return (float)(e - 1); }
-static float cnt_getmant(float x) { int e; n_ops++; return 2.0f * (float)frexp(x, &e); }
+#include "../lib/op_count.h"
 
 #define FACET_V float
 #define FACET_OP(op) cnt_##op
@@ -74,7 +55,7 @@ static int stated_cost(const char *name, long *ops, long *rsq, long *rcp)
 #define COUNT(expr, name)                                                          \
     do {                                                                           \
         long o_, q_, r_;                                                           \
-        n_ops = n_rcp = n_rsqrt = 0;                                               \
+        cnt_reset();                                                               \
         expr;                                                                      \
         printf("%-24s %4ld ops (%ld rsqrt, %ld rcp)\n", name, n_ops, n_rsqrt, n_rcp); \
         if (stated_cost(name, &o_, &q_, &r_))                                      \
