@@ -15,25 +15,10 @@
  * transcribed on the counting layer). */
 #include <stdio.h>
 #include <stdlib.h>
-#include <math.h>
 #include <string.h>
 #include "../lib/harness.h"
 #include "../lib/op_count.h"
-#include "facet.h"
 #include "../../src/core/kernel_list.h"
-
-#define FACET_V float
-#define FACET_OP(op) cnt_##op
-#define FACET_K(k) count_##k
-#include "facet/detail/f32_body.h"
-#undef FACET_K
-#define FACET_TIER_FAST 1
-#define FACET_K(k) countf_##k
-#include "facet/detail/f32_body.h"
-#undef FACET_TIER_FAST
-#undef FACET_V
-#undef FACET_OP
-#undef FACET_K
 
 #define HALF_(q) 0.5f
 
@@ -144,10 +129,10 @@ int main(int argc, char **argv)
     }
 #define FACET_KERNEL(kn, NAME, ar, ...)                                              \
     c[n].name = #kn;                                                                 \
-    cnt_reset();                                                                     \
+    opc_reset();                                                                     \
     (void)count_##kn(FACET_EACH_INPUT(ar, HALF_));                                   \
     c[n].t[0] = take();                                                              \
-    cnt_reset();                                                                     \
+    opc_reset();                                                                     \
     (void)countf_##kn(FACET_EACH_INPUT(ar, HALF_));                                  \
     c[n].t[1] = take();                                                              \
     n++;
@@ -157,14 +142,14 @@ int main(int argc, char **argv)
     for (i = 0; i < n; i++)
         if (!strcmp(c[i].name, "brdf_hammon")) {
             float big, small, sh, t, w;
-            cnt_reset();
+            opc_reset();
             (void)count_x_one_minus_lh(count_x_brdf_peak(0.5f, 0.5f, 0.5f, 0.25f, &big, &small, &sh, &t, &w), 0.5f);
             c[i].t[0].peak = n_ops;
-            cnt_reset();
+            opc_reset();
             (void)countf_x_one_minus_lh(countf_x_brdf_peak(0.5f, 0.5f, 0.5f, 0.25f, &big, &small, &sh, &t, &w), 0.5f);
             c[i].t[1].peak = n_ops;
         }
-    cnt_reset();
+    opc_reset();
     (void)peer_brdf(0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f);
     peer = take();
 

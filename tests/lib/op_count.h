@@ -1,7 +1,11 @@
-/* op_count.h - the counting op layer: the f32 body (and the samplers'
- * body) instantiated on one float lane with every port op tallied, as
- * tests/f32/test_op_counts.c and tests/sample/test_sample_prims.c count the
- * "Cost:" of facet.h.  Counting rules, as a port with FMA executes them:
+/* op_count.h - the counting op layer: the f32 kernel bodies
+ * (facet/detail/f32_body.h, both tiers) and the sampler bodies
+ * (f32_sample_body.h) instantiated on scalar floats whose every op is
+ * tallied, so that a test can compare one evaluation's count with the
+ * "Cost:" and "Budget:" of the contract in facet.h (tests/f32/
+ * test_op_counts.c, tests/sample/test_sample_prims.c): count_<name> is the
+ * precise tier and the samplers, countf_<name> the fast tier (f32_fast).
+ * Counting rules, as a port with FMA executes them:
  * add, sub, mul, fma, fnma, min, max, sqr_err = 1; clamp = 2 (max, min);
  * sel_lt = 2 (compare, blend); keep_ord = 2 (ordered compare, mask: the NaN
  * rule), keep_ord4 = 3 (two compares, the second under the first one's mask
@@ -11,15 +15,18 @@
  * sqrt(x) count as what they are on a port without a divide/sqrt unit:
  * 1 op plus a rcp (a * rcp(b)) or an rsqrt (x * rsqrt(x)), and in their
  * own tallies too (n_div, n_sqrt: avx2 and avx512 run them on the divider).
- * Include once, before the body. */
+ * The bodies are branch-free, so one evaluation at any inputs gives the
+ * count. */
 #ifndef FACET_TEST_OP_COUNT_H
 #define FACET_TEST_OP_COUNT_H
 
 #include <math.h>
+#include "facet.h"
 
 static long n_ops, n_rcp, n_rsqrt, n_div, n_sqrt, n_clamp_ops, n_nan_ops;
 
-static inline void cnt_reset(void) { n_ops = n_rcp = n_rsqrt = n_div = n_sqrt = n_clamp_ops = n_nan_ops = 0; }
+/* zero the tallies before an evaluation */
+static inline void opc_reset(void) { n_ops = n_rcp = n_rsqrt = n_div = n_sqrt = n_clamp_ops = n_nan_ops = 0; }
 
 static inline float cnt_set(float x) { return x; }
 static inline float cnt_add(float a, float b) { n_ops++; return a + b; }
@@ -62,5 +69,19 @@ static inline float cnt_sqr_err(float a, float p) { n_ops++; return (float)((dou
 static inline float cnt_exp2i(float k) { n_ops++; return (float)ldexp(1.0, (int)k); }
 static inline float cnt_getexp(float x) { int e; n_ops++; frexp(x, &e); return (float)(e - 1); }
 static inline float cnt_getmant(float x) { int e; n_ops++; return 2.0f * (float)frexp(x, &e); }
+
+#define FACET_V float
+#define FACET_OP(op) cnt_##op
+#define FACET_K(k) count_##k
+#include "facet/detail/f32_body.h"
+#include "facet/detail/f32_sample_body.h"
+#undef FACET_K
+#define FACET_TIER_FAST 1
+#define FACET_K(k) countf_##k
+#include "facet/detail/f32_body.h"
+#undef FACET_TIER_FAST
+#undef FACET_V
+#undef FACET_OP
+#undef FACET_K
 
 #endif
