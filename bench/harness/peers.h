@@ -34,7 +34,12 @@
  *                   its own double oracle (bench_oracle_brdf_exact); kept to
  *                   show what a renderer holding vectors pays.
  * Single-term peers take the same scalar inputs and compute the same
- * formula as the facet kernel of the same name.  All peers clamp N.L, N.V
+ * formula as the facet kernel of the same name: every term brdf_hammon is
+ * made of (noh_from_dots, loh_from_dots: one rsqrt / sqrt of 2 + 2 L.V;
+ * ggx_d; smith_vis_hammon and smith_g2_hammon: Hammon's lerp;
+ * fresnel_schlick; diffuse_hammon: N.H from the dots, (0.5 + N.H) / N.H)
+ * and the exact Smith terms smith_g1, smith_g2, smith_vis (sqrtf; textbook
+ * through Lambda), smith_g1_hammon.  All peers clamp N.L, N.V
  * to [FACET_COS_MIN, 1] and alpha to [FACET_ALPHA_MIN, 1] like facet, so all
  * are measured on the same domain; none has a NaN rule or exact peak
  * arithmetic (their error near the specular peak at small alpha is theirs).

@@ -101,6 +101,13 @@ static void sh_brdf(float *restrict out, const peer_brdf_in *in, size_t n)
  * 0.5 / (2 N.L N.V + (N.L + N.V - 2 N.L N.V) alpha), pow5 by multiplication,
  * Hammon's diffuse.  L.V clamped and 2 + 2 L.V floored, as a shader does to
  * keep the rsqrt finite; no exact peak arithmetic, no NaN rule. */
+/* 1 / |L + V| = rsqrt(2 + 2 L.V), floored as a shader does to keep it finite */
+static inline float sh_inv_len_h(float lv)
+{
+    float l2 = 2.0f + 2.0f * lv;
+    return 1.0f / sqrtf(l2 > 1e-12f ? l2 : 1e-12f);
+}
+
 static void sh_brdf_hammon_b(float *restrict out, const float *const *in, size_t n)
 {
     const float *restrict x0 = in[0], *restrict x1 = in[1], *restrict x2 = in[2];
@@ -109,8 +116,7 @@ static void sh_brdf_hammon_b(float *restrict out, const float *const *in, size_t
     for (i = 0; i < n; i++) {
         float nl = cmax_(x0[i]), nv = cmax_(x1[i]), a = amax_(x3[i]);
         float lv = clamp_(x2[i], -1.0f, 1.0f);
-        float l2 = 2.0f + 2.0f * lv;
-        float inv_len_h = 1.0f / sqrtf(l2 > 1e-12f ? l2 : 1e-12f);
+        float inv_len_h = sh_inv_len_h(lv);
         float noh = sat_((nl + nv) * inv_len_h);
         float loh = sat_(inv_len_h + inv_len_h * lv);
         float a2 = a * a;
@@ -184,8 +190,51 @@ static void sh_vish_b(float *restrict out, const float *const *in, size_t n)
     }
 }
 
+/* the terms brdf_hammon is made of, each from the same inputs as its facet
+ * kernel: N.H and L.H from the dots (one rsqrt of 2 + 2 L.V), Hammon's G2,
+ * Hammon's diffuse (N.H from the dots, (0.5 + N.H) / N.H as written) */
+static void sh_noh_b(float *restrict out, const float *const *in, size_t n)
+{
+    const float *restrict x = in[0], *restrict y = in[1], *restrict z = in[2];
+    size_t i;
+    for (i = 0; i < n; i++)
+        out[i] = sat_((cmax_(x[i]) + cmax_(y[i])) * sh_inv_len_h(clamp_(z[i], -1.0f, 1.0f)));
+}
+static void sh_loh_b(float *restrict out, const float *const *in, size_t n)
+{
+    const float *restrict x = in[0];
+    size_t i;
+    for (i = 0; i < n; i++) {
+        float lv = clamp_(x[i], -1.0f, 1.0f), inv = sh_inv_len_h(lv);
+        out[i] = sat_(inv + inv * lv);
+    }
+}
+/* 2 nl nv / lerp(2 nl nv, nl + nv, a) */
+static void sh_g2h_b(float *restrict out, const float *const *in, size_t n)
+{
+    const float *restrict x = in[0], *restrict y = in[1], *restrict al = in[2];
+    size_t i;
+    for (i = 0; i < n; i++) {
+        float nl = cmax_(x[i]), nv = cmax_(y[i]), a = amax_(al[i]);
+        float p = 2.0f * nl * nv;
+        out[i] = p / (p + a * (nl + nv - p));
+    }
+}
+static void sh_dh_b(float *restrict out, const float *const *in, size_t n)
+{
+    const float *restrict x0 = in[0], *restrict x1 = in[1], *restrict x2 = in[2];
+    const float *restrict x3 = in[3], *restrict x4 = in[4];
+    size_t i;
+    for (i = 0; i < n; i++) {
+        float nl = cmax_(x0[i]), nv = cmax_(x1[i]), lv = clamp_(x2[i], -1.0f, 1.0f);
+        float noh = sat_((nl + nv) * sh_inv_len_h(lv));
+        out[i] = sh_diffuse(nl, nv, lv, noh, amax_(x3[i]), x4[i]);
+    }
+}
+
 static const peer_term_entry terms_[] = {
-    { "brdf_hammon", sh_brdf_hammon_b },
+    { "brdf_hammon", sh_brdf_hammon_b }, { "noh_from_dots", sh_noh_b }, { "loh_from_dots", sh_loh_b },
+    { "smith_g2_hammon", sh_g2h_b }, { "diffuse_hammon", sh_dh_b },
     { "fresnel_schlick", sh_fresnel_b }, { "ggx_d", sh_ggx_d_b }, { "smith_g1", sh_g1_b }, { "smith_g2", sh_g2_b },
     { "smith_vis", sh_vis_b }, { "smith_g1_hammon", sh_g1h_b }, { "smith_vis_hammon", sh_vish_b }, { NULL, NULL },
 };

@@ -88,7 +88,10 @@ void section_kernels(report *r)
          "<b>*_fm</b>: the same source and width with -ffast-math. Every peer row (path peer) takes the "
          "same inputs and computes the same formula as the facet kernel: brdf_hammon's peers take (N.L, "
          "N.V, L.V, alpha, f0, albedo), derive N.H and L.H from one rsqrt of 2 + 2 L.V and use Hammon's "
-         "Vis, so their error is arithmetic error and their time the same work. The rows of path "
+         "Vis, so their error is arithmetic error and their time the same work; likewise the terms it is made of "
+         "(noh_from_dots, loh_from_dots, ggx_d, smith_vis_hammon, smith_g2_hammon, fresnel_schlick, "
+         "diffuse_hammon) and smith_g1, smith_g2, smith_vis (exact, with sqrtf), smith_g1_hammon, each from its "
+         "kernel's inputs. The rows of path "
          "peer-vectors are another model, D Vis_exact F + Hammon diffuse from vectors L, V (N = z), "
          "judged against its own oracle.");
 }
