@@ -742,13 +742,17 @@ void facet_smith_vis_fit_f32_fast_batch(float *out, const float *nol, const floa
  *   single = lerp(smooth, rough, alpha) / pi
  *   multi  = 0.1159 alpha
  *   result = albedo (single + albedo multi)
- * N.H from the identity above; 1 - (1-x)^5 as x (1 + y + y^2 + y^3 + y^4),
- * y = 1 - x, so it keeps its precision at grazing angles.
+ * 0.5 / N.H from the identity above as L.H / (N.L + N.V), L.H = sqrt(t/2)
+ * (one root, one quotient: the port's sqrt and div); 1 - (1-x)^5 as
+ * x (1 + y + y^2 + y^3 + y^4), y = 1 - x, so it keeps its precision at
+ * grazing angles; 1/pi folded into the constants.
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, albedo.
  * Error: <= FACET_ERR_DIFFUSE_HAMMON_F32 (2^-20); measured max 2^-20.59 (worst port,
  * 30 M samples) at (0.331329554, 0.331329554, 0.999999702, 0.0131228399, 0.645663142).
- * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_F32_FAST (2^-12.5).
- * Budget: clamps 10, NaN 5, peak 0, term 32; fast: clamps 10, NaN 5, peak 0, term 30.
+ * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_F32_FAST (2^-12.5); a cheaper
+ * formulation: (1 - (1-x)^5) / x by Horner in x (alternating terms, about
+ * 2^-20), 0.5 / N.H without its floor at 1/2 (a rounding's worth).
+ * Budget: clamps 10, NaN 5, peak 0, term 32; fast: clamps 10, NaN 5, peak 0, term 29.
  * Cost: 47 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, float albedo);
 float facet_diffuse_hammon_f32_fast(float nol, float nov, float lov, float alpha, float albedo);
@@ -827,7 +831,7 @@ void facet_diffuse_oren_nayar_f32_fast_batch(float *out, const float *nol, const
  * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32_FAST (2^-12.5); measured
  * 2^-13.47 (avx512, 3 M samples), 2^-13.01 with estimates at the
  * architectural bound (avx512).
- * Budget: clamps 10, NaN 5, peak 0, term 37; fast: clamps 10, NaN 5, peak 0, term 37.
+ * Budget: clamps 10, NaN 5, peak 0, term 37; fast: clamps 10, NaN 5, peak 0, term 36.
  * Cost: 52 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_hybrid_f32(float nol, float nov, float lov, float alpha,
                                       float albedo);
@@ -850,7 +854,7 @@ void facet_diffuse_hammon_hybrid_f32_fast_batch(float *out, const float *nol, co
  * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32_FAST (2^-12.5); measured
  * 2^-13.42 (avx512, 3 M samples), 2^-13.01 with estimates at the
  * architectural bound (avx512).
- * Budget: clamps 10, NaN 5, peak 0, term 20; fast: clamps 10, NaN 5, peak 0, term 20.
+ * Budget: clamps 10, NaN 5, peak 0, term 20; fast: clamps 10, NaN 5, peak 0, term 19.
  * Cost: 35 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_cheap_f32(float nol, float nov, float lov, float alpha,
                                      float albedo);
@@ -902,13 +906,13 @@ void facet_lambert_f32_fast_batch(float *out, const float *albedo, size_t n);
  * of 0.5 / N.H at the tier's estimate, 1 - L.H at the precise one (F takes
  * its fifth power); on avx512 the root is x times the raw 14-bit rsqrt.
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, f0, albedo.
- * Error: <= FACET_ERR_BRDF_HAMMON_F32 (2^-18.5); measured max 2^-19.30 (worst port,
- * 30 M samples) at (0.683041394, 0.683041394, -0.0669089183, 0.00208292552, 3.8500432e-11, 4.40309833e-09).
+ * Error: <= FACET_ERR_BRDF_HAMMON_F32 (2^-18.5); measured max 2^-19.46 (scalar; 2^-19.92
+ * avx2 and avx512; 300 k samples) at (0.69504112, 0.694875121, -0.0340664648, 0.00720804883, 0, 0.568871677).
  * f32_fast: <= FACET_ERR_BRDF_HAMMON_F32_FAST (2^-12.5); the Fresnel tail's
  * 1 - L.H, raised to the fifth power, is refined fully in both tiers;
- * measured worst 2^-13.00 (avx512).
- * Budget: clamps 12, NaN 5, peak 27, term 42; fast: clamps 12, NaN 5, peak 26, term 39.
- * Cost: 86 ops (1 rsqrt, 3 rcp). */
+ * measured worst 2^-13.15 (avx512, 300 k samples).
+ * Budget: clamps 12, NaN 5, peak 27, term 41; fast: clamps 12, NaN 5, peak 26, term 38.
+ * Cost: 85 ops (1 rsqrt, 3 rcp). */
 float facet_brdf_hammon_f32(float nol, float nov, float lov, float alpha,
                             float f0, float albedo);
 float facet_brdf_hammon_f32_fast(float nol, float nov, float lov, float alpha,

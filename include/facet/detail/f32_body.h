@@ -83,6 +83,7 @@
 #define X_HAMMON_DEN_ FACET_K(x_hammon_den)
 #define X_DIFFUSE_SINGLE_ FACET_K(x_diffuse_single)
 #define X_DIFFUSE_PI_ FACET_K(x_diffuse_pi)
+#define X_HALF_INV_NH_ FACET_K(x_half_inv_nh)
 #define X_BRDF_GEOMETRY_ FACET_K(x_brdf_geometry)
 #define X_BRDF_PEAK_ FACET_K(x_brdf_peak)
 #define X_ONE_MINUS_LH_ FACET_K(x_one_minus_lh)
@@ -831,11 +832,12 @@ FACET_INLINE V_ FACET_K(smith_vis_fit)(V_ nol, V_ nov, V_ alpha)
  *   diffuse = albedo (single + albedo multi)
  * the 1/pi folded into the constants (the caller passes smooth / pi). */
 #define FACET_DIF_K_ 0.334225380f /* 1.05 / pi */
-FACET_INLINE V_ X_DIFFUSE_SINGLE_(V_ t, V_ h, V_ a, V_ smooth, V_ *multi)
+FACET_INLINE V_ X_DIFFUSE_SINGLE_(V_ at, V_ t, V_ h, V_ a, V_ smooth, V_ *multi)
 {
-    /* alpha rough = ar (1 + h), ar = alpha t (0.45 - 0.1 t) / pi: h, the
-     * last quotient to arrive, enters by one fma at the end of the chain */
-    V_ ar = MUL_(a, MUL_(t, FNMA_(C_(0.0318309886f), t, C_(0.143239449f))));
+    /* alpha rough = ar (1 + h), ar = (alpha t) (0.45 - 0.1 t) / pi (alpha t
+     * the caller's, brdf_hammon's D numerator too): h, the last quotient to
+     * arrive, enters by one fma at the end of the chain */
+    V_ ar = MUL_(at, FNMA_(C_(0.0318309886f), t, C_(0.143239449f)));
     /* 1 - alpha is exact for alpha >= 1/2 */
     *multi = MUL_(C_(0.1159f), a);
     return FMA_(ar, h, FMA_(SUB_(C_(1.0f), a), smooth, ar));
@@ -846,8 +848,23 @@ FACET_INLINE V_ X_DIFFUSE_SINGLE_(V_ t, V_ h, V_ a, V_ smooth, V_ *multi)
 FACET_INLINE V_ X_DIFFUSE_PI_(V_ nl, V_ nv, V_ t, V_ h, V_ a, V_ alb)
 {
     V_ smooth = MUL_(C_(FACET_DIF_K_), MUL_(MUL_(nl, nv), MUL_(X_POW5_Q_(nl, 1.0f), X_POW5_Q_(nv, 1.0f))));
-    V_ multi, single = X_DIFFUSE_SINGLE_(t, h, a, smooth, &multi);
+    V_ multi, single = X_DIFFUSE_SINGLE_(MUL_(a, t), t, h, a, smooth, &multi);
     return MUL_(alb, FMA_(alb, multi, single));
+}
+
+/* h = 0.5 / N.H = L.H / s = sqrt(t) / (sqrt(2) s) (N.H = s / (2 L.H),
+ * L.H = sqrt(t/2)), from rt = sqrt(t): one quotient and the root, no
+ * reciprocal of N.H.  t >= s^2/2 caps N.H at 1, so h >= 1/2 but for
+ * roundings: the precise tier floors it there, the fast tier takes the
+ * rounding's worth. */
+FACET_INLINE V_ X_HALF_INV_NH_(V_ rt, V_ s)
+{
+    V_ h = DIV_(rt, MUL_(C_(1.41421354f), s));
+#if FAST_
+    return h;
+#else
+    return MAX_(h, C_(0.5f));
+#endif
 }
 
 FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
@@ -855,8 +872,7 @@ FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ alb
     V_ nl = X_COS_(nol), nv = X_COS_(nov);
     V_ s = ADD_(nl, nv);
     V_ t = MAX_(ADD_(C_(1.0f), X_LOV_(lov)), MUL_(C_(0.5f), MUL_(s, s)));
-    V_ nh = MIN_(MUL_(s, RSQRT_(ADD_(t, t))), C_(1.0f));
-    V_ d = X_DIFFUSE_PI_(nl, nv, t, DIV_(C_(0.5f), nh), X_ALPHA_(alpha), X_UNIT_(albedo));
+    V_ d = X_DIFFUSE_PI_(nl, nv, t, X_HALF_INV_NH_(SQRT_(t), s), X_ALPHA_(alpha), X_UNIT_(albedo));
     return NAN0_(d, nol, nov, lov, alpha, albedo);
 }
 
@@ -910,13 +926,12 @@ FACET_INLINE V_ FACET_K(diffuse_oren_nayar)(V_ nol, V_ nov, V_ lov, V_ alpha, V_
 
 /* Hammon's diffuse with another smooth term S (times 1 - alpha here):
  *   pi result = albedo ((1 - alpha) S + alpha rough + albedo 0.1159 pi alpha),
- * rough, t and N.H as diffuse_hammon (the raised t, 1 rsqrt, 1 rcp). */
+ * rough, t and 0.5 / N.H as diffuse_hammon (the raised t, 1 sqrt, 1 quotient). */
 FACET_INLINE V_ X_DIFFUSE_VARIANT_(V_ nl, V_ nv, V_ lov, V_ a, V_ albedo, V_ smooth)
 {
     V_ s = ADD_(nl, nv);
     V_ t = MAX_(ADD_(C_(1.0f), X_LOV_(lov)), MUL_(C_(0.5f), MUL_(s, s)));
-    V_ nh = MIN_(MUL_(s, RSQRT_(ADD_(t, t))), C_(1.0f));
-    V_ h = DIV_(C_(0.5f), nh);
+    V_ h = X_HALF_INV_NH_(SQRT_(t), s);
     V_ rough = MUL_(MUL_(t, FNMA_(C_(0.1f), t, C_(0.45f))), ADD_(C_(1.0f), h));
     V_ single = FMA_(a, rough, MUL_(SUB_(C_(1.0f), a), smooth));
     V_ alb = X_UNIT_(albedo);
@@ -1036,19 +1051,15 @@ FACET_INLINE void X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha,
     V_ rt = SQRT_(t);
     V_ y = X_ONE_MINUS_LH_(w, rt);
     V_ y2 = MUL_(y, y);
-    /* u = alpha t / (e mh) <= 2^39 */
-    V_ u = DIV_(MUL_(a, t), MUL_(e, mh));
-    /* 0.5 / N.H = L.H / s = sqrt(t) / (sqrt(2) s) (N.H = s / (2 L.H)), at least 0.5 */
-#if FAST_
-    V_ h = DIV_(rt, MUL_(C_(1.41421354f), sh));
-#else
-    V_ h = MAX_(DIV_(rt, MUL_(C_(1.41421354f), sh)), C_(0.5f));
-#endif
+    /* u = alpha t / (e mh) <= 2^39; alpha t serves the diffuse too */
+    V_ at = MUL_(a, t);
+    V_ u = DIV_(at, MUL_(e, mh));
+    V_ h = X_HALF_INV_NH_(rt, sh);
     *y5_ = MUL_(MUL_(y2, y2), y);
     /* D Vis = (u mh) (u / pi), u mh = alpha t / e <= 512 */
     *dv2_ = MUL_(MUL_(u, mh), MUL_(u, C_(FACET_INV_PI_)));
     /* smooth / pi = p2 Q(big) (1.05/pi) Q(small): symmetric in N.L, N.V */
-    *single_ = X_DIFFUSE_SINGLE_(t, h, a, MUL_(p2, MUL_(X_POW5_Q_(big, 1.0f), X_POW5_Q_(small, FACET_DIF_K_))),
+    *single_ = X_DIFFUSE_SINGLE_(at, t, h, a, MUL_(p2, MUL_(X_POW5_Q_(big, 1.0f), X_POW5_Q_(small, FACET_DIF_K_))),
                                  multi_);
 }
 
@@ -1151,6 +1162,7 @@ FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
 #undef X_HAMMON_DEN_
 #undef X_DIFFUSE_SINGLE_
 #undef X_DIFFUSE_PI_
+#undef X_HALF_INV_NH_
 #undef X_BRDF_GEOMETRY_
 #undef X_BRDF_PEAK_
 #undef X_ONE_MINUS_LH_
