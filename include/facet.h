@@ -82,15 +82,23 @@ extern "C" {
  * formula, domain, out-of-domain behaviour (finite, >= 0 for every input)
  * and symmetry as the precise kernel (the specular peak's cancellation is
  * still formed exactly); where its Budget line differs from the precise
- * tier's (brdf_hammon, diffuse_hammon) a cheaper formulation of the same
- * terms, stated in the contract; and each port's cheaper reciprocal and
- * rsqrt: scalar rsqrt with 2 Newton steps
+ * tier's (brdf_hammon, diffuse_hammon and its hybrid and cheap variants) a
+ * cheaper formulation of the same terms, stated in the contract; where the
+ * two Budget lines are equal no cheaper formulation within the fast bound
+ * was found, and the tiers differ only in the port's estimates: each
+ * port's cheaper reciprocal and rsqrt: scalar rsqrt with 2 Newton steps
  * (not 3, the reciprocal is the division in both tiers); sse2 rcpps /
  * rsqrtps and avx2 estimates with one Newton step (the precise tier: IEEE
  * division / square root, and one third-order step); avx512 the 14-bit
  * estimates unrefined (the precise tier: one Newton step); neon 2 steps
  * (not 3); helium (a bit-level seed: MVE has no estimate) 2 steps (not 3);
- * rvv (vfrec7 / vfrsqrt7) 1 step (not 2).  Where an error is raised to the
+ * rvv (vfrec7 / vfrsqrt7) 1 step (not 2).  A quotient a / b or a root is
+ * the port's div / sqrt: vdivps / vsqrtps in both tiers on sse2, avx2 and
+ * avx512 (the divide unit runs beside the FMA pipes, cheaper than an
+ * estimate and its steps there; so a kernel whose only estimate is a
+ * quotient is the same code in both tiers on those ports; avx512's fast
+ * root is x times the raw rsqrt14), a times the tier's reciprocal or rsqrt
+ * elsewhere.  Where an error is raised to the
  * fifth power (brdf_hammon's 1 - L.H) both tiers refine fully; a kernel
  * with no reciprocal or rsqrt is the same code in both tiers.  Fast-tier
  * bounds: relative error vs the oracle, measured over the precise tier's
