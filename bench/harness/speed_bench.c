@@ -17,20 +17,11 @@
 #include "facet.h"
 #include "tests/lib/sample.h"
 #include "src/core/port.h"
+#include "port_tables.h"
 #include "cycles.h"
 #include "peers.h"
 #include "facet_bench.h"
 
-#pragma weak facet_port_scalar_f32
-#pragma weak facet_port_sse2_f32
-#pragma weak facet_port_avx2_f32
-#pragma weak facet_port_avx512_f32
-#pragma weak facet_port_neon_f32
-#pragma weak facet_port_scalar_f32_fast
-#pragma weak facet_port_sse2_f32_fast
-#pragma weak facet_port_avx2_f32_fast
-#pragma weak facet_port_avx512_f32_fast
-#pragma weak facet_port_neon_f32_fast
 
 #define MAX_ROUNDS 1001
 #define MAX_ENTRIES 24
