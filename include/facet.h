@@ -760,9 +760,8 @@ void facet_smith_vis_fit_f32_fast_batch(float *out, const float *nol, const floa
  * Error: <= FACET_ERR_DIFFUSE_HAMMON_F32 (2^-20); measured max 2^-20.59 (worst port,
  * 30 M samples) at (0.331329554, 0.331329554, 0.999999702, 0.0131228399, 0.645663142).
  * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_F32_FAST (2^-12.5); a cheaper
- * formulation: (1 - (1-x)^5) / x by Horner in x (alternating terms, about
- * 2^-20), 0.5 / N.H without its floor at 1/2 (a rounding's worth).
- * Budget: clamps 10, NaN 5, peak 0, term 32; fast: clamps 10, NaN 5, peak 0, term 29.
+ * formulation: 0.5 / N.H without its floor at 1/2 (a rounding's worth).
+ * Budget: clamps 10, NaN 5, peak 0, term 32; fast: clamps 10, NaN 5, peak 0, term 31.
  * Cost: 47 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, float albedo);
 float facet_diffuse_hammon_f32_fast(float nol, float nov, float lov, float alpha, float albedo);
@@ -911,8 +910,7 @@ void facet_lambert_f32_fast_batch(float *out, const float *albedo, size_t n);
  * runs beside the FMA pipes), a times the reciprocal estimate and its steps
  * elsewhere.  The fast tier is a cheaper formulation of the same terms:
  * e without alpha^2 times the rounding error of (N.L + N.V)^2 (2^-23 of
- * e), 0.5 / N.H without its floor at 0.5 (a rounding's worth), the
- * diffuse's (1 - (1 - x)^5) / x by Horner in x; the quotients of D Vis and
+ * e), 0.5 / N.H without its floor at 0.5 (a rounding's worth); the quotients of D Vis and
  * of 0.5 / N.H at the tier's estimate, 1 - L.H at the precise one (F takes
  * its fifth power); on avx512 the root is x times the raw 14-bit rsqrt.
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, f0, albedo.
@@ -921,7 +919,7 @@ void facet_lambert_f32_fast_batch(float *out, const float *albedo, size_t n);
  * f32_fast: <= FACET_ERR_BRDF_HAMMON_F32_FAST (2^-12.5); the Fresnel tail's
  * 1 - L.H, raised to the fifth power, is refined fully in both tiers;
  * measured worst 2^-13.15 (avx512, 300 k samples).
- * Budget: clamps 12, NaN 5, peak 27, term 41; fast: clamps 12, NaN 5, peak 26, term 38.
+ * Budget: clamps 12, NaN 5, peak 27, term 41; fast: clamps 12, NaN 5, peak 26, term 40.
  * Cost: 85 ops (1 rsqrt, 3 rcp). */
 float facet_brdf_hammon_f32(float nol, float nov, float lov, float alpha,
                             float f0, float albedo);

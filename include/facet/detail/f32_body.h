@@ -133,31 +133,20 @@ FACET_INLINE V_ X_ONE_MINUS_POW5_(V_ x)
 }
 
 /* k Q(x), Q(x) = (1 - (1 - x)^5) / x = 1 + y + y^2 + y^3 + y^4 (y = 1 - x),
- * in [1, 5] on [0, 1] (k a constant, folded into the coefficients): the
- * precise tier sums those positive terms (1 rounding each); the fast tier
- * takes Horner's form in x, k (x^4 - 5x^3 + 10x^2 - 10x + 5), one operation
- * less (no 1 - x), its alternating terms costing about 15 * 2^-24 = 2^-20
- * near x = 1. */
-#define X_POW5_Q_(x, k) FACET_K(x_pow5_q)(x, C_(k), C_(-5.0f * (k)), C_(10.0f * (k)), C_(-10.0f * (k)), C_(5.0f * (k)))
-FACET_INLINE V_ FACET_K(x_pow5_q)(V_ x, V_ k, V_ k5n, V_ k10, V_ k10n, V_ k5)
+ * in [1, 5] on [0, 1] (k a constant, folded into the coefficients): those
+ * positive terms summed by Horner in y, 1 rounding each, in both tiers.
+ * Horner in x (k (x^4 - 5x^3 + 10x^2 - 10x + 5), no 1 - x) is one operation
+ * less but four constants more, which RVV and the scalar RISC-V code
+ * materialize: measured there 5 more instructions per brdf_hammon sample,
+ * the fast tier slower than the precise one (qemu counts, VLEN 128). */
+#define X_POW5_Q_(x, k) FACET_K(x_pow5_q)(x, C_(k))
+FACET_INLINE V_ FACET_K(x_pow5_q)(V_ x, V_ k)
 {
-#if FAST_
-    V_ p = FMA_(x, k, k5n);
-    (void)k5;
-    p = FMA_(p, x, k10);
-    p = FMA_(p, x, k10n);
-    return FMA_(p, x, k5);
-#else
     V_ y = SUB_(C_(1.0f), x);
     V_ p = FMA_(y, k, k);
-    (void)k5n;
-    (void)k10;
-    (void)k10n;
-    (void)k5;
     p = FMA_(p, y, k);
     p = FMA_(p, y, k);
     return FMA_(p, y, k);
-#endif
 }
 
 /* alpha^2 (1 - n^2) + n^2 = alpha^2 + (1 - alpha^2) n^2, the radicand of the
@@ -986,7 +975,7 @@ FACET_INLINE V_ FACET_K(diffuse_hammon_cheap)(V_ nol, V_ nov, V_ lov, V_ alpha, 
  * last (errors 2x and 1x its estimate's, the 14-bit one on avx512: 2^-13),
  * the precise one for 1 - L.H (times 5 in F), drops the 2^-23 of
  * alpha^2 (s^2 - p) in e and the cap of 0.5 / N.H at 0.5 (a rounding's
- * worth), and sums Q by Horner (X_POW5_Q_). */
+ * worth). */
 /* What brdf_hammon computes before f0 and albedo enter: F = f0 + (1 - f0) y5,
  * brdf = (dv2 F + albedo (single + albedo multi)) / pi.  The RGB form shares
  * it across channels; per channel the same operations run in the same order,
