@@ -35,7 +35,7 @@ endif
 # called by name: a stub where the port is not compiled in) is built on
 # every target.  Both get the port's own ISA flags (PORT_FLAGS_<port>).
 BENCH_LOOP_PORTS := $(filter $(patsubst bench/harness/loops_%.c,%,$(wildcard bench/harness/loops_*.c)),$(FACET_PORTS))
-BENCH_HARNESS := cycles bench cli_bench api_bench loops_scalar loops_call $(BENCH_LOOP_PORTS:%=loops_%) \
+BENCH_HARNESS := cycles bench cli_bench api_bench speed_bench loops_scalar loops_call $(BENCH_LOOP_PORTS:%=loops_%) \
                  loops_batch loops_tables peers peers_textbook peers_sample fxhook $(BENCH_SHADER_PEERS)
 BENCH_HARNESS_OBJ := $(BENCH_HARNESS:%=$(BUILD)/bench/harness/%.o)
 BENCH_RASTER_OBJ  := $(patsubst bench/raster/%.c,$(BUILD)/bench/raster/%.o,$(wildcard bench/raster/raster*.c))
@@ -78,10 +78,11 @@ $(BUILD)/bench/harness/peers_sample.o: bench/harness/peers_sample.c bench/harnes
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude -I. $(CFLAGS) -O2 -ffp-contract=off -c $< -o $@
 
-# shader-style: -O3, errno-free sqrt and fused multiply-add so the compiler
-# vectorizes it, at the width of the facet port it is compared with; and the
-# same source with -ffast-math
-BENCH_SHADER = $(WARN) -Iinclude $(CFLAGS) -O3 -fno-math-errno -ffp-contract=fast
+# shader-style: -O3, errno-free sqrt, fused multiply-add and no trapping
+# math (clang's default; GCC needs it to if-convert the clamps' compares at
+# AVX2 width) so the compiler vectorizes it, at the width of the facet port
+# it is compared with; and the same source with -ffast-math
+BENCH_SHADER = $(WARN) -Iinclude $(CFLAGS) -O3 -fno-math-errno -fno-trapping-math -ffp-contract=fast
 BENCH_SHADER_SRC = bench/harness/peers_shader.c bench/harness/peers.h $(HEADERS)
 $(BUILD)/bench/harness/peers_shader_avx2.o $(BUILD)/bench/harness/peers_shader_avx2_fm.o: \
     BENCH_PEER = -march=x86-64-v3 -DPEER_WIDTH=avx2 -DPEER_MARCH='"-march=x86-64-v3"'

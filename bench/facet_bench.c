@@ -1,6 +1,8 @@
 /* facet_bench.c - build/facet-bench, the bench's own command (bench/README.md).
  *   facet-bench bench [KERNEL] [options]  cycles and error of every kernel x
  *                                         format x port x path, and the peers
+ *   facet-bench speed [KERNEL] [options] both f32 tiers against the same-formula
+ *                                         peers, interleaved rounds
  *   facet-bench report OUTDIR [--quick]   the benchmark part of `make report`
  *   facet-bench batch-symbols             where each port's batch functions are
  *                                         in this binary (for report/report.sh)
@@ -18,6 +20,8 @@ static void usage(FILE *f)
                "  bench [KERNEL]       cycles per sample of every kernel, port and format\n"
                "  api                  the RGB, uniform-material, per-pixel and fx RGB entry\n"
                "                       points, timed in one run (issue 15)\n"
+               "  speed [KERNEL]       both f32 tiers on every port beside the same-formula\n"
+               "                       peers of the same width, in interleaved rounds\n"
                "  report OUTDIR        the benchmark part of `make report` (bench.md, index.html)\n"
                "  batch-symbols        each port's batch function per kernel, as an offset from\n"
                "                       facet_port_supported in this binary\n"
@@ -30,6 +34,7 @@ static const struct {
 } verbs[] = {
     { "bench", facet_cmd_bench },
     { "api", facet_bench_api },
+    { "speed", facet_bench_speed },
     { "report", facet_bench_report },
     { "batch-symbols", facet_bench_batch_symbols },
 };

@@ -38,10 +38,17 @@
  *     2^-k; FACET_ERR_* below are the bounds the tests enforce.  Where a
  *     bound has an absolute floor it is said so.
  *   - Cost: operations of the kernel body as a port with FMA executes them
- *     (clamp = 2, select = 2, keep_ord = 2, fma = 1), counted by
- *     tests/f32/test_op_counts.c;
+ *     (clamp = 2, select = 2, keep_ord = 2, keep_ord4 = 3, fma = 1), counted
+ *     by tests/f32/test_op_counts.c (tests/lib/op_count.h: the rules);
  *     rsqrt and rcp are listed apart: each is an estimate plus the port's
- *     refinement steps (see the port headers).
+ *     refinement steps (see the port headers); a quotient a / b or a root
+ *     sqrt(x) counts 1 op (the multiply by the estimate) plus a rcp or rsqrt
+ *     (on sse2, avx2 and avx512 it is one vdivps / vsqrtps instead).
+ *   - Budget: the same operations by what they are for, in both tiers:
+ *     clamps (the domain rule), NaN (the NaN rule), peak (brdf_hammon's
+ *     exact 2 + 2 L.V - (N.L + N.V)^2 and 1 - L.H), term (the formula
+ *     itself); `test_op_counts --tsv FILE` adds each port's refinement
+ *     operations and the fast-math shader peer's count.
  *
  * Names: facet_<kernel>_f32 here (library functions, the scalar port);
  * facet_<kernel>_f32_scalar in facet/scalar.h (the same, static inline).
@@ -74,16 +81,26 @@ extern "C" {
  *
  * The two tiers.  facet_<kernel>_f32_fast, facet_<kernel>_f32_fast_batch
  * and, in each port header, facet_<kernel>_f32_fast_<port>: the same
- * formula, domain, out-of-domain behaviour (finite, >= 0 for every input),
- * symmetry and operation count as the precise kernel, the same formulation
- * (the specular peak's cancellation is still formed exactly), and each
+ * formula, domain, out-of-domain behaviour (finite, >= 0 for every input)
+ * and symmetry as the precise kernel (the specular peak's cancellation is
+ * still formed exactly); where its Budget line differs from the precise
+ * tier's (brdf_hammon, diffuse_hammon and its hybrid and cheap variants) a
+ * cheaper formulation of the same terms, stated in the contract; where the
+ * two Budget lines are equal no cheaper formulation within the fast bound
+ * was found, and the tiers differ only in the port's estimates: each
  * port's cheaper reciprocal and rsqrt: scalar rsqrt with 2 Newton steps
  * (not 3, the reciprocal is the division in both tiers); sse2 rcpps /
  * rsqrtps and avx2 estimates with one Newton step (the precise tier: IEEE
  * division / square root, and one third-order step); avx512 the 14-bit
  * estimates unrefined (the precise tier: one Newton step); neon 2 steps
  * (not 3); helium (a bit-level seed: MVE has no estimate) 2 steps (not 3);
- * rvv (vfrec7 / vfrsqrt7) 1 step (not 2).  Where an error is raised to the
+ * rvv (vfrec7 / vfrsqrt7) 1 step (not 2).  A quotient a / b or a root is
+ * the port's div / sqrt: vdivps / vsqrtps in both tiers on sse2, avx2 and
+ * avx512 (the divide unit runs beside the FMA pipes, cheaper than an
+ * estimate and its steps there; so a kernel whose only estimate is a
+ * quotient is the same code in both tiers on those ports; avx512's fast
+ * root is x times the raw rsqrt14), a times the tier's reciprocal or rsqrt
+ * elsewhere.  Where an error is raised to the
  * fifth power (brdf_hammon's 1 - L.H) both tiers refine fully; a kernel
  * with no reciprocal or rsqrt is the same code in both tiers.  Fast-tier
  * bounds: relative error vs the oracle, measured over the precise tier's
@@ -117,7 +134,8 @@ extern "C" {
  * Error: <= FACET_ERR_NOH_FROM_DOTS_F32 (2^-21.5); measured max 2^-22.12 (worst port,
  * 30 M samples) at (0.0587858558, 0.458401412, -0.495318681).
  * f32_fast: <= FACET_ERR_NOH_FROM_DOTS_F32_FAST (2^-13.5).
- * Cost: 17 ops (1 rsqrt, 0 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 7; fast: clamps 6, NaN 3, peak 0, term 7.
+ * Cost: 16 ops (1 rsqrt, 0 rcp). */
 float facet_noh_from_dots_f32(float nol, float nov, float lov);
 float facet_noh_from_dots_f32_fast(float nol, float nov, float lov);
 void facet_noh_from_dots_f32_batch(float *out, const float *nol, const float *nov,
@@ -130,6 +148,7 @@ void facet_noh_from_dots_f32_fast_batch(float *out, const float *nol, const floa
  * Error: <= FACET_ERR_LOH_FROM_DOTS_F32 (2^-22); measured max 2^-22.64 (worst port,
  * 30 M samples) at (0.0295905489).
  * f32_fast: <= FACET_ERR_LOH_FROM_DOTS_F32_FAST (2^-13.5).
+ * Budget: clamps 2, NaN 2, peak 0, term 5; fast: clamps 2, NaN 2, peak 0, term 5.
  * Cost: 9 ops (1 rsqrt, 0 rcp). */
 float facet_loh_from_dots_f32(float lov);
 float facet_loh_from_dots_f32_fast(float lov);
@@ -159,6 +178,7 @@ void facet_loh_from_dots_f32_fast_batch(float *out, const float *lov, size_t n);
  * 30 M samples) at (2.34035488e-05, 0.494028538).
  * f32_fast: the same code (no reciprocal),
  * FACET_ERR_FRESNEL_SCHLICK_F32_FAST (2^-21).
+ * Budget: clamps 4, NaN 2, peak 0, term 9; fast: clamps 4, NaN 2, peak 0, term 9.
  * Cost: 15 ops (0 rsqrt, 0 rcp). */
 float facet_fresnel_schlick_f32(float f0, float cos_theta);
 float facet_fresnel_schlick_f32_fast(float f0, float cos_theta);
@@ -188,6 +208,7 @@ void facet_fresnel_schlick_f32_fast_batch(float *out, const float *f0, const flo
  * 2^-19.71 (worst port, 3 M samples) at (6.10115691e-08, 0.528173864).
  * f32_fast: the same code, fully refined:
  * FACET_ERR_FRESNEL_COOK_TORRANCE_F32_FAST (2^-19).
+ * Budget: clamps 4, NaN 2, peak 0, term 37; fast: clamps 4, NaN 2, peak 0, term 37.
  * Cost: 43 ops (2 rsqrt, 1 rcp). */
 float facet_fresnel_cook_torrance_f32(float f0, float voh);
 float facet_fresnel_cook_torrance_f32_fast(float f0, float voh);
@@ -204,7 +225,8 @@ void facet_fresnel_cook_torrance_f32_fast_batch(float *out, const float *f0, con
  * Error: <= FACET_ERR_FRESNEL_SCHLICK_F90_F32 (2^-21); measured max 2^-21.54 (worst port,
  * 3 M samples) at (2.63928523e-08, 0.999971151, 0.499411613).
  * f32_fast: FACET_ERR_FRESNEL_SCHLICK_F90_F32_FAST (2^-21).
- * Cost: 25 ops (0 rsqrt, 0 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 15; fast: clamps 6, NaN 3, peak 0, term 15.
+ * Cost: 24 ops (0 rsqrt, 0 rcp). */
 float facet_fresnel_schlick_f90_f32(float f0, float f90, float voh);
 float facet_fresnel_schlick_f90_f32_fast(float f0, float f90, float voh);
 void facet_fresnel_schlick_f90_f32_batch(float *out, const float *f0, const float *f90,
@@ -227,6 +249,7 @@ void facet_fresnel_schlick_f90_f32_fast_batch(float *out, const float *f0, const
  * Error: <= FACET_ERR_FRESNEL_SCHLICK_SG_F32 (2^-19.5); measured max 2^-20.03 (sse2 and
  * scalar, no FMA; 2^-20.45 with FMA), 300 k samples, at (4.17905432e-10, 0.999937892).
  * f32_fast: FACET_ERR_FRESNEL_SCHLICK_SG_F32_FAST (2^-19.5).
+ * Budget: clamps 4, NaN 2, peak 0, term 17; fast: clamps 4, NaN 2, peak 0, term 17.
  * Cost: 23 ops (0 rsqrt, 0 rcp). */
 float facet_fresnel_schlick_sg_f32(float f0, float cos_theta);
 float facet_fresnel_schlick_sg_f32_fast(float f0, float cos_theta);
@@ -269,6 +292,7 @@ void facet_fresnel_schlick_sg_f32_fast_batch(float *out, const float *f0,
  * Error: <= FACET_ERR_GGX_D_F32 (2^-20); measured max 2^-20.60 (worst port,
  * 30 M samples) at (0.999949455, 0.254411191).
  * f32_fast: <= FACET_ERR_GGX_D_F32_FAST (2^-12.5).
+ * Budget: clamps 4, NaN 2, peak 0, term 8; fast: clamps 4, NaN 2, peak 0, term 8.
  * Cost: 14 ops (0 rsqrt, 1 rcp). */
 float facet_ggx_d_f32(float noh, float alpha);
 float facet_ggx_d_f32_fast(float noh, float alpha);
@@ -286,6 +310,7 @@ void facet_ggx_d_f32_fast_batch(float *out, const float *noh, const float *alpha
  * p log2 N.H = -88.6 and its few roundings.
  * f32_fast: the precise code (every reciprocal is raised to a power),
  * FACET_ERR_BLINN_PHONG_D_F32_FAST (2^-15).
+ * Budget: clamps 4, NaN 2, peak 0, term 52; fast: clamps 4, NaN 2, peak 0, term 52.
  * Cost: 58 ops (0 rsqrt, 2 rcp). */
 float facet_blinn_phong_d_f32(float noh, float alpha);
 float facet_blinn_phong_d_f32_fast(float noh, float alpha);
@@ -304,6 +329,7 @@ void facet_blinn_phong_d_f32_fast_batch(float *out, const float *noh, const floa
  * 300 k samples) at (0.997685969, 0.00783577561), where D = 7.4e-30 (y = -109).
  * f32_fast: the precise code (every reciprocal is raised to a power),
  * FACET_ERR_BECKMANN_D_F32_FAST (2^-15).
+ * Budget: clamps 4, NaN 2, peak 0, term 30; fast: clamps 4, NaN 2, peak 0, term 30.
  * Cost: 36 ops (0 rsqrt, 1 rcp). */
 float facet_beckmann_d_f32(float noh, float alpha);
 float facet_beckmann_d_f32_fast(float noh, float alpha);
@@ -324,7 +350,8 @@ void facet_beckmann_d_f32_fast_batch(float *out, const float *noh, const float *
  * 300 k samples) at (0.998403668, 0.0521120951, -0.0217817482, 0.621842802, 0.203452751).
  * f32_fast: <= FACET_ERR_GGX_ANISO_D_F32_FAST (2^-13.5); measured 2^-14.18
  * (avx512).
- * Cost: 32 ops (0 rsqrt, 1 rcp). */
+ * Budget: clamps 10, NaN 5, peak 0, term 16; fast: clamps 10, NaN 5, peak 0, term 16.
+ * Cost: 31 ops (0 rsqrt, 1 rcp). */
 float facet_ggx_aniso_d_f32(float noh, float toh, float boh, float alpha_x, float alpha_y);
 float facet_ggx_aniso_d_f32_fast(float noh, float toh, float boh, float alpha_x, float alpha_y);
 void facet_ggx_aniso_d_f32_batch(float *out, const float *noh, const float *toh, const float *boh,
@@ -352,7 +379,8 @@ void facet_ggx_aniso_d_f32_fast_batch(float *out, const float *noh, const float 
  * log2's) against c = 2^-60.
  * f32_fast: <= FACET_ERR_GTR_D_F32_FAST (2^-12.5); measured 2^-13.63
  * (avx512; 2^-12.95 with estimates at the architectural bound).
- * Cost: 136 ops (0 rsqrt, 5 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 126; fast: clamps 6, NaN 3, peak 0, term 126.
+ * Cost: 135 ops (0 rsqrt, 5 rcp). */
 float facet_gtr_d_f32(float noh, float alpha, float gamma);
 float facet_gtr_d_f32_fast(float noh, float alpha, float gamma);
 void facet_gtr_d_f32_batch(float *out, const float *noh, const float *alpha, const float *gamma,
@@ -414,6 +442,7 @@ void facet_gtr_d_f32_fast_batch(float *out, const float *noh, const float *alpha
  * Error: <= FACET_ERR_SMITH_G1_F32 (2^-21); measured max 2^-21.66 (worst port,
  * 30 M samples) at (0.000242657741, 0.00600074418).
  * f32_fast: <= FACET_ERR_SMITH_G1_F32_FAST (2^-12.5).
+ * Budget: clamps 4, NaN 2, peak 0, term 11; fast: clamps 4, NaN 2, peak 0, term 11.
  * Cost: 17 ops (1 rsqrt, 1 rcp). */
 float facet_smith_g1_f32(float nov, float alpha);
 float facet_smith_g1_f32_fast(float nov, float alpha);
@@ -427,7 +456,8 @@ void facet_smith_g1_f32_fast_batch(float *out, const float *nov, const float *al
  * Error: <= FACET_ERR_SMITH_G2_F32 (2^-21); measured max 2^-21.40 (worst port,
  * 30 M samples) at (0.492564738, 4.08501137e-06, 0.00407959009).
  * f32_fast: <= FACET_ERR_SMITH_G2_F32_FAST (2^-12.5).
- * Cost: 30 ops (2 rsqrt, 1 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 20; fast: clamps 6, NaN 3, peak 0, term 20.
+ * Cost: 29 ops (2 rsqrt, 1 rcp). */
 float facet_smith_g2_f32(float nol, float nov, float alpha);
 float facet_smith_g2_f32_fast(float nol, float nov, float alpha);
 void facet_smith_g2_f32_batch(float *out, const float *nol, const float *nov, const float *alpha,
@@ -440,7 +470,8 @@ void facet_smith_g2_f32_fast_batch(float *out, const float *nol, const float *no
  * 30 M samples) at (1.06287043e-05, 4.67698592e-05, 0.0156806652).
  * f32_fast: <= FACET_ERR_SMITH_G2_UNCORRELATED_F32_FAST (2^-12); measured
  * worst 2^-12.43 (avx512).
- * Cost: 30 ops (2 rsqrt, 1 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 20; fast: clamps 6, NaN 3, peak 0, term 20.
+ * Cost: 29 ops (2 rsqrt, 1 rcp). */
 float facet_smith_g2_uncorrelated_f32(float nol, float nov, float alpha);
 float facet_smith_g2_uncorrelated_f32_fast(float nol, float nov, float alpha);
 void facet_smith_g2_uncorrelated_f32_batch(float *out, const float *nol, const float *nov,
@@ -454,7 +485,8 @@ void facet_smith_g2_uncorrelated_f32_fast_batch(float *out, const float *nol, co
  * 0.5 / (2 COS_MIN alpha_min) = 2^28.  Error: <= FACET_ERR_SMITH_VIS_F32 (2^-21); measured max 2^-21.62 (worst port,
  * 30 M samples) at (3.14775752e-06, 0.126348287, 0.00824174657).
  * f32_fast: <= FACET_ERR_SMITH_VIS_F32_FAST (2^-12.5).
- * Cost: 27 ops (2 rsqrt, 1 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 17; fast: clamps 6, NaN 3, peak 0, term 17.
+ * Cost: 26 ops (2 rsqrt, 1 rcp). */
 float facet_smith_vis_f32(float nol, float nov, float alpha);
 float facet_smith_vis_f32_fast(float nol, float nov, float alpha);
 void facet_smith_vis_f32_batch(float *out, const float *nol, const float *nov, const float *alpha,
@@ -467,6 +499,7 @@ void facet_smith_vis_f32_fast_batch(float *out, const float *nol, const float *n
  * Domain: N.V in [0, 1].  Error: <= FACET_ERR_SMITH_G1_HAMMON_F32 (2^-21.5); measured max 2^-22.26 (worst port,
  * 30 M samples) at (0.516059339, 0.018353641).
  * f32_fast: <= FACET_ERR_SMITH_G1_HAMMON_F32_FAST (2^-13.5).
+ * Budget: clamps 4, NaN 2, peak 0, term 5; fast: clamps 4, NaN 2, peak 0, term 5.
  * Cost: 11 ops (0 rsqrt, 1 rcp). */
 float facet_smith_g1_hammon_f32(float nov, float alpha);
 float facet_smith_g1_hammon_f32_fast(float nov, float alpha);
@@ -510,7 +543,8 @@ void facet_smith_g1_hammon_f32_fast_batch(float *out, const float *nov, const fl
  * max 2^-20.89 (sse2, 300 k samples) at (0.00778461341, 0.126742497, 3.8678031);
  * f32_fast 2^-14.27 (avx512; 2^-14.01 with estimates at the bound).
  * f32_fast: <= FACET_ERR_SMITH_G1_GTR_F32_FAST (2^-13).
- * Cost: 275 ops (1 rsqrt, 15 rcp). */
+ * Budget: clamps 8, NaN 3, peak 0, term 263; fast: clamps 8, NaN 3, peak 0, term 263.
+ * Cost: 274 ops (1 rsqrt, 15 rcp). */
 float facet_smith_g1_gtr_f32(float nov, float alpha, float gamma);
 float facet_smith_g1_gtr_f32_fast(float nov, float alpha, float gamma);
 void facet_smith_g1_gtr_f32_batch(float *out, const float *nov, const float *alpha,
@@ -524,7 +558,8 @@ void facet_smith_g1_gtr_f32_fast_batch(float *out, const float *nov, const float
  * Domain: N.L, N.V in [FACET_COS_MIN, 1].  Error: <= FACET_ERR_SMITH_G2_HAMMON_F32 (2^-21); measured max 2^-21.83 (worst port,
  * 30 M samples) at (1.45550921e-05, 0.00873631984, 0.00181798683).
  * f32_fast: <= FACET_ERR_SMITH_G2_HAMMON_F32_FAST (2^-13.5).
- * Cost: 20 ops (0 rsqrt, 1 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 10; fast: clamps 6, NaN 3, peak 0, term 10.
+ * Cost: 19 ops (0 rsqrt, 1 rcp). */
 float facet_smith_g2_hammon_f32(float nol, float nov, float alpha);
 float facet_smith_g2_hammon_f32_fast(float nol, float nov, float alpha);
 void facet_smith_g2_hammon_f32_batch(float *out, const float *nol, const float *nov,
@@ -537,7 +572,8 @@ void facet_smith_g2_hammon_f32_fast_batch(float *out, const float *nol, const fl
  * Error: <= FACET_ERR_SMITH_VIS_HAMMON_F32 (2^-21.5); measured max 2^-22.09 (worst port,
  * 30 M samples) at (0.713193238, 0.713202953, 0.00830200501).
  * f32_fast: <= FACET_ERR_SMITH_VIS_HAMMON_F32_FAST (2^-13.5).
- * Cost: 17 ops (0 rsqrt, 1 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 7; fast: clamps 6, NaN 3, peak 0, term 7.
+ * Cost: 16 ops (0 rsqrt, 1 rcp). */
 float facet_smith_vis_hammon_f32(float nol, float nov, float alpha);
 float facet_smith_vis_hammon_f32_fast(float nol, float nov, float alpha);
 void facet_smith_vis_hammon_f32_batch(float *out, const float *nol, const float *nov,
@@ -549,6 +585,7 @@ void facet_smith_vis_hammon_f32_fast_batch(float *out, const float *nol, const f
  * Domain: N.L, N.V in [0, 1]; symmetric.  G(1, 1) = 1, G(0, x) = 0.
  * Error: <= FACET_ERR_G_IMPLICIT_F32 (2^-23.5; both tiers: one rounding).
  * f32_fast: the same rounding, FACET_ERR_G_IMPLICIT_F32_FAST (2^-23.5).
+ * Budget: clamps 4, NaN 2, peak 0, term 1; fast: clamps 4, NaN 2, peak 0, term 1.
  * Cost: 7 ops (0 rsqrt, 0 rcp). */
 float facet_g_implicit_f32(float nol, float nov);
 float facet_g_implicit_f32_fast(float nol, float nov);
@@ -560,6 +597,7 @@ void facet_g_implicit_f32_fast_batch(float *out, const float *nol, const float *
  * Domain: N.L, N.V in [0, 1]; symmetric.
  * Error: exact, measured 0; the tests enforce FACET_ERR_G_NEUMANN_F32 (2^-30), both tiers.
  * f32_fast: the same, FACET_ERR_G_NEUMANN_F32_FAST (2^-30).
+ * Budget: clamps 4, NaN 2, peak 0, term 1; fast: clamps 4, NaN 2, peak 0, term 1.
  * Cost: 7 ops (0 rsqrt, 0 rcp). */
 float facet_g_neumann_f32(float nol, float nov);
 float facet_g_neumann_f32_fast(float nol, float nov);
@@ -573,7 +611,8 @@ void facet_g_neumann_f32_fast_batch(float *out, const float *nol, const float *n
  * (V.H = 0 included); the reciprocal sees V.H >= FACET_COS_MIN only.
  * Error: <= FACET_ERR_G_COOK_TORRANCE_F32 (2^-22).
  * f32_fast: <= FACET_ERR_G_COOK_TORRANCE_F32_FAST (2^-13).
- * Cost: 24 ops (0 rsqrt, 1 rcp). */
+ * Budget: clamps 8, NaN 3, peak 0, term 12; fast: clamps 8, NaN 3, peak 0, term 12.
+ * Cost: 23 ops (0 rsqrt, 1 rcp). */
 float facet_g_cook_torrance_f32(float nol, float nov, float noh, float voh);
 float facet_g_cook_torrance_f32_fast(float nol, float nov, float noh, float voh);
 void facet_g_cook_torrance_f32_batch(float *out, const float *nol, const float *nov,
@@ -588,7 +627,8 @@ void facet_g_cook_torrance_f32_fast_batch(float *out, const float *nol, const fl
  * in [0, 1]; symmetric in N.L, N.V.
  * Error: <= FACET_ERR_G_KELEMEN_F32 (2^-21.5).
  * f32_fast: <= FACET_ERR_G_KELEMEN_F32_FAST (2^-13).
- * Cost: 16 ops (0 rsqrt, 1 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 6; fast: clamps 6, NaN 3, peak 0, term 6.
+ * Cost: 15 ops (0 rsqrt, 1 rcp). */
 float facet_g_kelemen_f32(float nol, float nov, float voh);
 float facet_g_kelemen_f32_fast(float nol, float nov, float voh);
 void facet_g_kelemen_f32_batch(float *out, const float *nol, const float *nov, const float *voh,
@@ -611,6 +651,7 @@ void facet_g_kelemen_f32_fast_batch(float *out, const float *nol, const float *n
  * log-spaced in [2^-10, 1] (tests/f32/test_vis_fit.c, enforced < 0.01).
  * Error: <= FACET_ERR_SMITH_G1_BECKMANN_F32 (2^-20.5).
  * f32_fast: <= FACET_ERR_SMITH_G1_BECKMANN_F32_FAST (2^-12.5).
+ * Budget: clamps 4, NaN 2, peak 0, term 18; fast: clamps 4, NaN 2, peak 0, term 18.
  * Cost: 24 ops (1 rsqrt, 1 rcp). */
 float facet_smith_g1_beckmann_f32(float nov, float alpha);
 float facet_smith_g1_beckmann_f32_fast(float nov, float alpha);
@@ -627,6 +668,7 @@ void facet_smith_g1_beckmann_f32_fast_batch(float *out, const float *nov, const 
  * relative (at grazing N.V) on smith_g1_beckmann's grid.
  * Error: <= FACET_ERR_SMITH_G1_SCHLICK_BECKMANN_F32 (2^-21.5).
  * f32_fast: <= FACET_ERR_SMITH_G1_SCHLICK_BECKMANN_F32_FAST (2^-13).
+ * Budget: clamps 4, NaN 2, peak 0, term 5; fast: clamps 4, NaN 2, peak 0, term 5.
  * Cost: 11 ops (0 rsqrt, 1 rcp). */
 float facet_smith_g1_schlick_beckmann_f32(float nov, float alpha);
 float facet_smith_g1_schlick_beckmann_f32_fast(float nov, float alpha);
@@ -644,7 +686,8 @@ void facet_smith_g1_schlick_beckmann_f32_fast_batch(float *out, const float *nov
  * [2^-8, 1], alpha in [2^-10, 1] (tests/f32/test_vis_fit.c).
  * Error: <= FACET_ERR_SMITH_VIS_JOINT_APPROX_F32 (2^-21.5).
  * f32_fast: <= FACET_ERR_SMITH_VIS_JOINT_APPROX_F32_FAST (2^-13).
- * Cost: 17 ops (0 rsqrt, 1 rcp). */
+ * Budget: clamps 6, NaN 3, peak 0, term 7; fast: clamps 6, NaN 3, peak 0, term 7.
+ * Cost: 16 ops (0 rsqrt, 1 rcp). */
 float facet_smith_vis_joint_approx_f32(float nol, float nov, float alpha);
 float facet_smith_vis_joint_approx_f32_fast(float nol, float nov, float alpha);
 void facet_smith_vis_joint_approx_f32_batch(float *out, const float *nol, const float *nov,
@@ -669,6 +712,7 @@ void facet_smith_vis_joint_approx_f32_fast_batch(float *out, const float *nol, c
  * Domain: as smith_vis; symmetric.
  * Error: <= FACET_ERR_SMITH_VIS_FIT_F32 (2^-21), vs the oracle of this formula.
  * f32_fast: <= FACET_ERR_SMITH_VIS_FIT_F32_FAST (2^-13).
+ * Budget: clamps 6, NaN 3, peak 0, term 19; fast: clamps 6, NaN 3, peak 0, term 19.
  * Cost: 28 ops (0 rsqrt, 1 rcp). */
 float facet_smith_vis_fit_f32(float nol, float nov, float alpha);
 float facet_smith_vis_fit_f32_fast(float nol, float nov, float alpha);
@@ -708,13 +752,17 @@ void facet_smith_vis_fit_f32_fast_batch(float *out, const float *nol, const floa
  *   single = lerp(smooth, rough, alpha) / pi
  *   multi  = 0.1159 alpha
  *   result = albedo (single + albedo multi)
- * N.H from the identity above; 1 - (1-x)^5 as x (1 + y + y^2 + y^3 + y^4),
- * y = 1 - x, so it keeps its precision at grazing angles.
+ * 0.5 / N.H from the identity above as L.H / (N.L + N.V), L.H = sqrt(t/2)
+ * (one root, one quotient: the port's sqrt and div); 1 - (1-x)^5 as
+ * x (1 + y + y^2 + y^3 + y^4), y = 1 - x, so it keeps its precision at
+ * grazing angles; 1/pi folded into the constants.
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, albedo.
  * Error: <= FACET_ERR_DIFFUSE_HAMMON_F32 (2^-20); measured max 2^-20.59 (worst port,
  * 30 M samples) at (0.331329554, 0.331329554, 0.999999702, 0.0131228399, 0.645663142).
- * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_F32_FAST (2^-12.5).
- * Cost: 50 ops (1 rsqrt, 1 rcp). */
+ * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_F32_FAST (2^-12.5); a cheaper
+ * formulation: 0.5 / N.H without its floor at 1/2 (a rounding's worth).
+ * Budget: clamps 10, NaN 5, peak 0, term 32; fast: clamps 10, NaN 5, peak 0, term 31.
+ * Cost: 47 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, float albedo);
 float facet_diffuse_hammon_f32_fast(float nol, float nov, float lov, float alpha, float albedo);
 void facet_diffuse_hammon_f32_batch(float *out, const float *nol, const float *nov,
@@ -739,7 +787,8 @@ void facet_diffuse_hammon_f32_fast_batch(float *out, const float *nol, const flo
  * 3 M samples) at (0.00749915093, 0.00748796575, 0.00142297987, 0.191616133, 0.978153765).
  * f32_fast: <= FACET_ERR_DIFFUSE_BURLEY_F32_FAST (2^-12.5); measured
  * 2^-13.55 (avx512, 3 M samples).
- * Cost: 39 ops (1 rsqrt, 0 rcp). */
+ * Budget: clamps 10, NaN 5, peak 0, term 23; fast: clamps 10, NaN 5, peak 0, term 23.
+ * Cost: 38 ops (1 rsqrt, 0 rcp). */
 float facet_diffuse_burley_f32(float nol, float nov, float loh, float alpha, float albedo);
 float facet_diffuse_burley_f32_fast(float nol, float nov, float loh, float alpha, float albedo);
 void facet_diffuse_burley_f32_batch(float *out, const float *nol, const float *nov,
@@ -766,7 +815,8 @@ void facet_diffuse_burley_f32_fast_batch(float *out, const float *nol, const flo
  * 3 M samples) at (0.0482582487, 0.0482582487, 1, 0.223686263, 2.82182633e-08).
  * f32_fast: <= FACET_ERR_DIFFUSE_OREN_NAYAR_F32_FAST (2^-12.5); measured
  * 2^-14.17 (avx512, 3 M samples).
- * Cost: 34 ops (0 rsqrt, 1 rcp). */
+ * Budget: clamps 10, NaN 5, peak 0, term 18; fast: clamps 10, NaN 5, peak 0, term 18.
+ * Cost: 33 ops (0 rsqrt, 1 rcp). */
 float facet_diffuse_oren_nayar_f32(float nol, float nov, float lov, float alpha, float albedo);
 float facet_diffuse_oren_nayar_f32_fast(float nol, float nov, float lov, float alpha, float albedo);
 void facet_diffuse_oren_nayar_f32_batch(float *out, const float *nol, const float *nov,
@@ -790,7 +840,8 @@ void facet_diffuse_oren_nayar_f32_fast_batch(float *out, const float *nol, const
  * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32_FAST (2^-12.5); measured
  * 2^-13.47 (avx512, 3 M samples), 2^-13.01 with estimates at the
  * architectural bound (avx512).
- * Cost: 53 ops (1 rsqrt, 1 rcp). */
+ * Budget: clamps 10, NaN 5, peak 0, term 37; fast: clamps 10, NaN 5, peak 0, term 36.
+ * Cost: 52 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_hybrid_f32(float nol, float nov, float lov, float alpha,
                                       float albedo);
 float facet_diffuse_hammon_hybrid_f32_fast(float nol, float nov, float lov, float alpha,
@@ -812,7 +863,8 @@ void facet_diffuse_hammon_hybrid_f32_fast_batch(float *out, const float *nol, co
  * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32_FAST (2^-12.5); measured
  * 2^-13.42 (avx512, 3 M samples), 2^-13.01 with estimates at the
  * architectural bound (avx512).
- * Cost: 36 ops (1 rsqrt, 1 rcp). */
+ * Budget: clamps 10, NaN 5, peak 0, term 20; fast: clamps 10, NaN 5, peak 0, term 19.
+ * Cost: 35 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_cheap_f32(float nol, float nov, float lov, float alpha,
                                      float albedo);
 float facet_diffuse_hammon_cheap_f32_fast(float nol, float nov, float lov, float alpha,
@@ -829,6 +881,7 @@ void facet_diffuse_hammon_cheap_f32_fast_batch(float *out, const float *nol, con
  * 30 M samples) at (0.196352884).
  * f32_fast: the same code (no reciprocal), FACET_ERR_LAMBERT_F32_FAST
  * (2^-22.5).
+ * Budget: clamps 2, NaN 2, peak 0, term 1; fast: clamps 2, NaN 2, peak 0, term 1.
  * Cost: 5 ops (0 rsqrt, 0 rcp). */
 float facet_lambert_f32(float albedo);
 float facet_lambert_f32_fast(float albedo);
@@ -847,17 +900,27 @@ void facet_lambert_f32_fast_batch(float *out, const float *albedo, size_t n);
  *   brdf = D(N.H) Vis_hammon(N.L, N.V) F(f0, L.H) + diffuse_hammon
  * (a BRDF value; radiance = brdf * N.L * light).  D is evaluated from the
  * dots without forming N.H (see f32_body.h: the peak for small alpha is
- * ill-conditioned in N.H, so 2 + 2 L.V - (N.L + N.V)^2 is formed exactly);
- * one rsqrt, and three reciprocals: 1/(e m) serves both D and Vis, 1/(1 + L.H)
- * gives 1 - L.H without cancellation for the Fresnel tail, 1/(N.L + N.V)
- * gives 1/N.H for the diffuse.
+ * ill-conditioned in N.H, so 2 + 2 L.V - (N.L + N.V)^2 is formed exactly,
+ * from the exact rounding error of (N.L + N.V)^2 and Sterbenz);
+ * one square root and three quotients: alpha t / (e m / 2) serves both D
+ * and Vis, (2 - t) / (2 + 2 L.H) gives 1 - L.H without cancellation for the
+ * Fresnel tail, L.H / (N.L + N.V) gives 0.5 / N.H for the diffuse; the
+ * 1/pi folded into the constants.  Quotients and the root are the port's
+ * div and sqrt: vdivps / vsqrtps on sse2, avx2 and avx512 (the divide unit
+ * runs beside the FMA pipes), a times the reciprocal estimate and its steps
+ * elsewhere.  The fast tier is a cheaper formulation of the same terms:
+ * e without alpha^2 times the rounding error of (N.L + N.V)^2 (2^-23 of
+ * e), 0.5 / N.H without its floor at 0.5 (a rounding's worth); the quotients of D Vis and
+ * of 0.5 / N.H at the tier's estimate, 1 - L.H at the precise one (F takes
+ * its fifth power); on avx512 the root is x times the raw 14-bit rsqrt.
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, f0, albedo.
- * Error: <= FACET_ERR_BRDF_HAMMON_F32 (2^-18.5); measured max 2^-19.30 (worst port,
- * 30 M samples) at (0.683041394, 0.683041394, -0.0669089183, 0.00208292552, 3.8500432e-11, 4.40309833e-09).
+ * Error: <= FACET_ERR_BRDF_HAMMON_F32 (2^-18.5); measured max 2^-19.46 (scalar; 2^-19.92
+ * avx2 and avx512; 300 k samples) at (0.69504112, 0.694875121, -0.0340664648, 0.00720804883, 0, 0.568871677).
  * f32_fast: <= FACET_ERR_BRDF_HAMMON_F32_FAST (2^-12.5); the Fresnel tail's
  * 1 - L.H, raised to the fifth power, is refined fully in both tiers;
- * measured worst 2^-13.00 (avx512).
- * Cost: 103 ops (1 rsqrt, 3 rcp). */
+ * measured worst 2^-13.15 (avx512, 300 k samples).
+ * Budget: clamps 12, NaN 5, peak 27, term 41; fast: clamps 12, NaN 5, peak 26, term 40.
+ * Cost: 85 ops (1 rsqrt, 3 rcp). */
 float facet_brdf_hammon_f32(float nol, float nov, float lov, float alpha,
                             float f0, float albedo);
 float facet_brdf_hammon_f32_fast(float nol, float nov, float lov, float alpha,

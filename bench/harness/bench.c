@@ -273,7 +273,9 @@ static void finish(bench_row *r, const bench_opts *o, bench_sink sink, void *ctx
     (*count)++;
 }
 
-/* ---- the full-BRDF peers, from vectors ------------------------------------ */
+/* ---- the exact-Vis BRDF peers, from vectors (path "peer-vectors": another
+ * model than brdf_hammon's, judged against its own oracle; brdf_hammon's
+ * same-formula peers are term peers, path "peer", peers.h) ---------------- */
 
 static void run_brdf_peers(const kdata *d, const bench_opts *o, bench_sink sink, void *ctx,
                            int *count)
@@ -316,8 +318,8 @@ static void run_brdf_peers(const kdata *d, const bench_opts *o, bench_sink sink,
         work w;
         if (!peer_available(ps) || !want_port(o, ps->name))
             continue;
-        row_init(&row, d, "f32", ps->name, "peer", 1);
-        row.note = "D * exact correlated Vis * F + Hammon diffuse, from vectors L, V";
+        row_init(&row, d, "f32", ps->name, "peer-vectors", 1);
+        row.note = "another model: D * exact correlated Vis * F + Hammon diffuse, from vectors L, V";
         row.bound = 0;
         ps->brdf(d->out, &pin, n);
         err_of(&row.err, d, d->out, want);

@@ -108,7 +108,7 @@ static void sink(const bench_row *r, void *vctx)
             snprintf(e1, sizeof e1, "%9.3g", r->err.max_rel);
             snprintf(e2, sizeof e2, "%9.3g", r->err.mean_rel);
         }
-        printf("%-22s %-8s %-16s %-6s %9s %9s %s %8.3f %8.3f %5.1f%%%s %8.3f %s\n", r->kernel,
+        printf("%-22s %-8s %-16s %-12s %9s %9s %s %8.3f %8.3f %5.1f%%%s %8.3f %s\n", r->kernel,
                r->format, r->port, r->path, e1, e2,
                r->bound > 0 ? (r->within ? "ok " : "BAD") : "-  ", r->thr.min, r->thr.median,
                100 * r->thr.spread, r->thr.noisy ? "!" : " ", r->thr.median / c->tpc, lat);
@@ -238,7 +238,7 @@ int facet_cmd_bench(int argc, char **argv)
         if (!o.format || !strcmp(o.format, "fx") || !strcmp(o.format, "fx_fast"))
             printf("# fx rows: errors in LSB of the output format (L), vs round(oracle 2^frac) at the Q15 inputs;\n"
                    "# fx_fast rows: |raw - v 2^frac| / max(1, 2^-10 v 2^frac) (L), bound <= 1\n");
-        printf("%-22s %-8s %-16s %-6s %9s %9s %s %8s %8s %6s %8s %s\n", "kernel", "fmt", "port",
+        printf("%-22s %-8s %-16s %-12s %9s %9s %s %8s %8s %6s %8s %s\n", "kernel", "fmt", "port",
                "path", "max_err", "mean_err", "bnd", "thr_min", "thr_med", "spread", "est.cyc",
                "latency/call");
     }

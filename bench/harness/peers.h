@@ -7,7 +7,8 @@
  *              Smith G2 height-correlated through Lambda with sqrtf, plain
  *              divisions.  The whole BRDF is D G2 F / (4 N.L N.V) + Hammon
  *              diffuse.
- *   shader     (peers_shader.c, -O3 -fno-math-errno -ffp-contract=fast;
+ *   shader     (peers_shader.c, -O3 -fno-math-errno -fno-trapping-math
+ *              -ffp-contract=fast;
  *              the compiler auto-vectorizes it): the engine-shader
  *              sequences.  H by 1/sqrtf, D in the a2 form, exact correlated
  *              Vis with two sqrtf, pow5 by multiplication, Hammon diffuse.
@@ -17,14 +18,31 @@
  *              facet port runs; elsewhere shader (-march=native).
  *   *_fm       the same source and width with -ffast-math as well.
  *
- * The full-BRDF peers take vectors L and V in tangent space (N = +z, so
- * N.L = L.z, N.V = V.z cost nothing) plus alpha, f0, albedo, the way a
- * renderer holds them; they compute every other dot themselves.  facet's
- * brdf_hammon takes (N.L, N.V, L.V): a caller with vectors pays one 3-term
- * dot product for L.V on top.  Single-term peers take the same scalar inputs
- * as the facet kernel of the same name.  Both peers clamp N.L, N.V to
- * [FACET_COS_MIN, 1] and alpha to [FACET_ALPHA_MIN, 1] like facet, so all
- * are measured on the same domain.
+ * Two whole-BRDF peers per set, kept apart by their bench path:
+ *   "peer"          brdf_hammon's OWN formula (Hammon's Vis
+ *                   0.5 / (2 N.L N.V + (N.L + N.V - 2 N.L N.V) alpha), D, F,
+ *                   Hammon's diffuse) from the same inputs as facet (N.L,
+ *                   N.V, L.V, alpha, f0, albedo): N.H and L.H from one
+ *                   rsqrt of 2 + 2 L.V, as engines derive them from dots.
+ *                   The same work as facet's kernel, so its error column is
+ *                   arithmetic error against brdf_hammon's oracle and its
+ *                   time is comparable (the fair peer of issue 21).
+ *   "peer-vectors"  D * EXACT correlated Vis (two sqrtf) * F + Hammon's
+ *                   diffuse from vectors L and V in tangent space (N = +z),
+ *                   computing every dot itself: another model (the exact
+ *                   Vis differs from Hammon's by up to 29%), judged against
+ *                   its own double oracle (bench_oracle_brdf_exact); kept to
+ *                   show what a renderer holding vectors pays.
+ * Single-term peers take the same scalar inputs and compute the same
+ * formula as the facet kernel of the same name: every term brdf_hammon is
+ * made of (noh_from_dots, loh_from_dots: one rsqrt / sqrt of 2 + 2 L.V;
+ * ggx_d; smith_vis_hammon and smith_g2_hammon: Hammon's lerp;
+ * fresnel_schlick; diffuse_hammon: N.H from the dots, (0.5 + N.H) / N.H)
+ * and the exact Smith terms smith_g1, smith_g2, smith_vis (sqrtf; textbook
+ * through Lambda), smith_g1_hammon.  All peers clamp N.L, N.V
+ * to [FACET_COS_MIN, 1] and alpha to [FACET_ALPHA_MIN, 1] like facet, so all
+ * are measured on the same domain; none has a NaN rule or exact peak
+ * arithmetic (their error near the specular peak at small alpha is theirs).
  */
 #ifndef FACET_BENCH_PEERS_H
 #define FACET_BENCH_PEERS_H
@@ -54,8 +72,13 @@ typedef struct peer_set {
     const char *width;      /* the facet port of the same vector width (run
                              * only where facet_port_supported() says so), or
                              * NULL: the build machine's own */
-    peer_brdf_fn brdf;      /* D Vis_exact F + diffuse_hammon, from vectors */
-    const peer_term_entry *terms; /* the single terms it computes, up to { NULL, NULL } */
+    peer_brdf_fn brdf;      /* D Vis_exact F + diffuse_hammon, from vectors:
+                             * another model (exact correlated Vis), bench rows
+                             * path "peer-vectors" */
+    /* the single terms it computes, up to { NULL, NULL }: same inputs and
+     * formula as the facet kernel of the same name (brdf_hammon: Hammon's
+     * Vis, from the dots) */
+    const peer_term_entry *terms;
 } peer_set;
 
 /* every peer built for this target, NULL-terminated (peers.c) */

@@ -1,7 +1,7 @@
 /* peers_shader.c - the "shader-style" peer: the operation sequences common
  * in engine shaders, written as SoA loops the compiler can auto-vectorize.
  * Built once per vector width and math mode (bench/bench.mk): -O3
- * -fno-math-errno -ffp-contract=fast, PEER_WIDTH avx2 (-march=x86-64-v3) or
+ * -fno-math-errno -fno-trapping-math -ffp-contract=fast, PEER_WIDTH avx2 (-march=x86-64-v3) or
  * avx512 (-march=x86-64-v4) on x86, native elsewhere, and with -ffast-math
  * added (PEER_FASTMATH defined).  See peers.h. */
 #include <math.h>
@@ -26,18 +26,26 @@
 #ifdef PEER_FASTMATH
 #define SET_ PEER_CAT(BASE_, _fm)
 #define NAME_ BASE_NAME_ "_fm"
-#define BUILD_ "-O3 " MARCH_ " -fno-math-errno -ffp-contract=fast -ffast-math"
+#define BUILD_ "-O3 " MARCH_ " -fno-math-errno -fno-trapping-math -ffp-contract=fast -ffast-math"
 #else
 #define SET_ BASE_
 #define NAME_ BASE_NAME_
-#define BUILD_ "-O3 " MARCH_ " -fno-math-errno -ffp-contract=fast"
+#define BUILD_ "-O3 " MARCH_ " -fno-math-errno -fno-trapping-math -ffp-contract=fast"
 #endif
 
 #define INV_PI_F 0.318309886f
 
-static inline float sat_(float x) { return x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x); }
-static inline float cmax_(float x) { return x < FACET_COS_MIN ? FACET_COS_MIN : (x > 1.0f ? 1.0f : x); }
-static inline float amax_(float x) { return x < FACET_ALPHA_MIN ? FACET_ALPHA_MIN : (x > 1.0f ? 1.0f : x); }
+/* clamps as two unconditional compares (HLSL's saturate / clamp): without
+ * -ffast-math the compiler if-converts them (a nested ?: would make the
+ * second compare conditional, which it may not speculate) */
+static inline float clamp_(float x, float lo, float hi)
+{
+    x = x > lo ? x : lo;
+    return x < hi ? x : hi;
+}
+static inline float sat_(float x) { return clamp_(x, 0.0f, 1.0f); }
+static inline float cmax_(float x) { return clamp_(x, FACET_COS_MIN, 1.0f); }
+static inline float amax_(float x) { return clamp_(x, FACET_ALPHA_MIN, 1.0f); }
 static inline float pow5_(float x) { float x2 = x * x; return x2 * x2 * x; }
 
 /* a2 / (pi (noh^2 (a2 - 1) + 1)^2) */
@@ -83,6 +91,40 @@ static void sh_brdf(float *restrict out, const peer_brdf_in *in, size_t n)
         float nl = cmax_(lz[i]), nv = cmax_(vz[i]), a = amax_(al[i]);
         float spec = sh_d(noh, a) * sh_vis(nl, nv, a) * sh_f(f0[i], loh);
         out[i] = spec + sh_diffuse(nl, nv, lv, noh, a, alb[i]);
+    }
+}
+
+/* brdf_hammon's own formula as a shader writes it (same-formula peer), from
+ * the same dots as facet (N.L, N.V, L.V, alpha, f0, albedo): N.H and L.H from
+ * one rsqrt of |L + V|^2 = 2 + 2 L.V (as engines derive them from the dots),
+ * D in the (N.H a2 - N.H) N.H + 1 form, Hammon's Vis
+ * 0.5 / (2 N.L N.V + (N.L + N.V - 2 N.L N.V) alpha), pow5 by multiplication,
+ * Hammon's diffuse.  L.V clamped and 2 + 2 L.V floored, as a shader does to
+ * keep the rsqrt finite; no exact peak arithmetic, no NaN rule. */
+/* 1 / |L + V| = rsqrt(2 + 2 L.V), floored as a shader does to keep it finite */
+static inline float sh_inv_len_h(float lv)
+{
+    float l2 = 2.0f + 2.0f * lv;
+    return 1.0f / sqrtf(l2 > 1e-12f ? l2 : 1e-12f);
+}
+
+static void sh_brdf_hammon_b(float *restrict out, const float *const *in, size_t n)
+{
+    const float *restrict x0 = in[0], *restrict x1 = in[1], *restrict x2 = in[2];
+    const float *restrict x3 = in[3], *restrict x4 = in[4], *restrict x5 = in[5];
+    size_t i;
+    for (i = 0; i < n; i++) {
+        float nl = cmax_(x0[i]), nv = cmax_(x1[i]), a = amax_(x3[i]);
+        float lv = clamp_(x2[i], -1.0f, 1.0f);
+        float inv_len_h = sh_inv_len_h(lv);
+        float noh = sat_((nl + nv) * inv_len_h);
+        float loh = sat_(inv_len_h + inv_len_h * lv);
+        float a2 = a * a;
+        float d = (noh * a2 - noh) * noh + 1.0f;
+        float p = 2.0f * nl * nv;
+        float vis = 0.5f / (p + (nl + nv - p) * a);
+        float spec = a2 / (d * d) * INV_PI_F * vis * sh_f(x4[i], loh);
+        out[i] = spec + sh_diffuse(nl, nv, lv, noh, a, x5[i]);
     }
 }
 
@@ -148,7 +190,51 @@ static void sh_vish_b(float *restrict out, const float *const *in, size_t n)
     }
 }
 
+/* the terms brdf_hammon is made of, each from the same inputs as its facet
+ * kernel: N.H and L.H from the dots (one rsqrt of 2 + 2 L.V), Hammon's G2,
+ * Hammon's diffuse (N.H from the dots, (0.5 + N.H) / N.H as written) */
+static void sh_noh_b(float *restrict out, const float *const *in, size_t n)
+{
+    const float *restrict x = in[0], *restrict y = in[1], *restrict z = in[2];
+    size_t i;
+    for (i = 0; i < n; i++)
+        out[i] = sat_((cmax_(x[i]) + cmax_(y[i])) * sh_inv_len_h(clamp_(z[i], -1.0f, 1.0f)));
+}
+static void sh_loh_b(float *restrict out, const float *const *in, size_t n)
+{
+    const float *restrict x = in[0];
+    size_t i;
+    for (i = 0; i < n; i++) {
+        float lv = clamp_(x[i], -1.0f, 1.0f), inv = sh_inv_len_h(lv);
+        out[i] = sat_(inv + inv * lv);
+    }
+}
+/* 2 nl nv / lerp(2 nl nv, nl + nv, a) */
+static void sh_g2h_b(float *restrict out, const float *const *in, size_t n)
+{
+    const float *restrict x = in[0], *restrict y = in[1], *restrict al = in[2];
+    size_t i;
+    for (i = 0; i < n; i++) {
+        float nl = cmax_(x[i]), nv = cmax_(y[i]), a = amax_(al[i]);
+        float p = 2.0f * nl * nv;
+        out[i] = p / (p + a * (nl + nv - p));
+    }
+}
+static void sh_dh_b(float *restrict out, const float *const *in, size_t n)
+{
+    const float *restrict x0 = in[0], *restrict x1 = in[1], *restrict x2 = in[2];
+    const float *restrict x3 = in[3], *restrict x4 = in[4];
+    size_t i;
+    for (i = 0; i < n; i++) {
+        float nl = cmax_(x0[i]), nv = cmax_(x1[i]), lv = clamp_(x2[i], -1.0f, 1.0f);
+        float noh = sat_((nl + nv) * sh_inv_len_h(lv));
+        out[i] = sh_diffuse(nl, nv, lv, noh, amax_(x3[i]), x4[i]);
+    }
+}
+
 static const peer_term_entry terms_[] = {
+    { "brdf_hammon", sh_brdf_hammon_b }, { "noh_from_dots", sh_noh_b }, { "loh_from_dots", sh_loh_b },
+    { "smith_g2_hammon", sh_g2h_b }, { "diffuse_hammon", sh_dh_b },
     { "fresnel_schlick", sh_fresnel_b }, { "ggx_d", sh_ggx_d_b }, { "smith_g1", sh_g1_b }, { "smith_g2", sh_g2_b },
     { "smith_vis", sh_vis_b }, { "smith_g1_hammon", sh_g1h_b }, { "smith_vis_hammon", sh_vish_b }, { NULL, NULL },
 };

@@ -61,6 +61,30 @@ static void tb_brdf(float *out, const peer_brdf_in *in, size_t n)
     }
 }
 
+/* N.H = (N.L + N.V) / sqrt(2 + 2 L.V) */
+static float tb_noh(float nl, float nv, float lv)
+{
+    float len = sqrtf(2.0f + 2.0f * lv);
+    return len > 0.0f ? clampf_((nl + nv) / len, 0.0f, 1.0f) : 1.0f;
+}
+
+/* brdf_hammon's own formula as printed (same-formula peer), from the same
+ * dots as facet: N.H = (N.L + N.V) / sqrt(2 + 2 L.V), L.H = sqrt((1 + L.V) / 2),
+ * D in its tan form, Hammon's G2 / (4 N.L N.V), powf, Hammon's diffuse. */
+static void tb_brdf_hammon_b(float *out, const float *const *in, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        float nl = clampf_(in[0][i], FACET_COS_MIN, 1.0f), nv = clampf_(in[1][i], FACET_COS_MIN, 1.0f);
+        float lv = clampf_(in[2][i], -1.0f, 1.0f), a = clampf_(in[3][i], FACET_ALPHA_MIN, 1.0f);
+        float noh = tb_noh(nl, nv, lv);
+        float loh = sqrtf((1.0f + lv) / 2.0f);
+        float g2 = 2.0f * nl * nv / ((1.0f - a) * 2.0f * nl * nv + a * (nl + nv));
+        float spec = tb_d(noh, a) * g2 * tb_fresnel(in[4][i], loh) / (4.0f * nl * nv);
+        out[i] = spec + tb_diffuse(nl, nv, lv, noh, a, in[5][i]);
+    }
+}
+
 static void tb_fresnel_b(float *out, const float *const *in, size_t n)
 {
     size_t i;
@@ -119,7 +143,44 @@ static void tb_vish_b(float *out, const float *const *in, size_t n)
     }
 }
 
+/* the terms brdf_hammon is made of, as printed, from the same inputs as
+ * their facet kernels: N.H = (N.L + N.V) / sqrt(2 + 2 L.V), L.H =
+ * sqrt((1 + L.V) / 2), Hammon's G2, Hammon's diffuse (N.H from the dots) */
+static void tb_noh_b(float *out, const float *const *in, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        out[i] = tb_noh(clampf_(in[0][i], FACET_COS_MIN, 1.0f), clampf_(in[1][i], FACET_COS_MIN, 1.0f),
+                        clampf_(in[2][i], -1.0f, 1.0f));
+}
+static void tb_loh_b(float *out, const float *const *in, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        out[i] = sqrtf((1.0f + clampf_(in[0][i], -1.0f, 1.0f)) / 2.0f);
+}
+static void tb_g2h_b(float *out, const float *const *in, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        float a = clampf_(in[2][i], FACET_ALPHA_MIN, 1.0f);
+        float nl = clampf_(in[0][i], FACET_COS_MIN, 1.0f), nv = clampf_(in[1][i], FACET_COS_MIN, 1.0f);
+        out[i] = 2.0f * nl * nv / ((1.0f - a) * 2.0f * nl * nv + a * (nl + nv));
+    }
+}
+static void tb_dh_b(float *out, const float *const *in, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        float nl = clampf_(in[0][i], FACET_COS_MIN, 1.0f), nv = clampf_(in[1][i], FACET_COS_MIN, 1.0f);
+        float lv = clampf_(in[2][i], -1.0f, 1.0f);
+        out[i] = tb_diffuse(nl, nv, lv, tb_noh(nl, nv, lv), clampf_(in[3][i], FACET_ALPHA_MIN, 1.0f), in[4][i]);
+    }
+}
+
 static const peer_term_entry terms[] = {
+    { "brdf_hammon", tb_brdf_hammon_b }, { "noh_from_dots", tb_noh_b }, { "loh_from_dots", tb_loh_b },
+    { "smith_g2_hammon", tb_g2h_b }, { "diffuse_hammon", tb_dh_b },
     { "fresnel_schlick", tb_fresnel_b }, { "ggx_d", tb_ggx_d_b }, { "smith_g1", tb_g1_b }, { "smith_g2", tb_g2_b },
     { "smith_vis", tb_vis_b }, { "smith_g1_hammon", tb_g1h_b }, { "smith_vis_hammon", tb_vish_b }, { NULL, NULL },
 };

@@ -409,12 +409,12 @@ const bench_row *data_best_batch(const report_data *d, const char *kernel)
     return b;
 }
 
-const bench_row *data_best_peer(const report_data *d, const char *kernel)
+const bench_row *data_best_peer(const report_data *d, const char *kernel, const char *path)
 {
     const bench_row *b = NULL;
     int i;
     for (i = 0; i < d->n_rows; i++)
-        if (!strcmp(d->rows[i].path, "peer") && !strcmp(d->rows[i].kernel, kernel) &&
+        if (!strcmp(d->rows[i].path, path) && !strcmp(d->rows[i].kernel, kernel) &&
             (!b || d->rows[i].r.thr.median < b->thr.median))
             b = &d->rows[i].r;
     return b;

@@ -94,8 +94,9 @@ const bench_row *data_row_of(const report_data *d, const char *kernel, const cha
                              const char *path);
 /* the lowest-median f32 batch row of a kernel, any port, or NULL */
 const bench_row *data_best_batch(const report_data *d, const char *kernel);
-/* the lowest-median peer row of a kernel, any peer, or NULL */
-const bench_row *data_best_peer(const report_data *d, const char *kernel);
+/* the lowest-median row of a kernel on a peer path ("peer": the kernel's own
+ * formula; "peer-vectors": the exact-Vis BRDF), any peer, or NULL */
+const bench_row *data_best_peer(const report_data *d, const char *kernel, const char *path);
 /* clock units to est. core cycles */
 double data_est(const report_data *d, double ticks);
 

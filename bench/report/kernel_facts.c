@@ -101,7 +101,7 @@ typedef struct fact {
         int n_axes;
         kf_axis axes[3];
     } sweep;
-    int peer_exact;   /* its peers compute the exact form (the vector BRDF peers) */
+    int peer_exact;   /* its exact form is its peer-vectors rows' (the exact-Vis BRDF peers) */
     const char *note; /* the image-space variants' name note, or NULL */
     int n_variants;   /* drawn in image space (bench/report/image_error.c) */
     struct {
@@ -366,12 +366,6 @@ double kf_model_of(const char *kernel)
         if (model_fact[i] == f)
             return models[i].max_rel;
     return -1;
-}
-
-int kf_peer_exact(const char *kernel)
-{
-    const fact *f = find(kernel);
-    return f && f->peer_exact;
 }
 
 /* point i of n on an axis: even i log-spaced, odd i linear, both lo .. hi */

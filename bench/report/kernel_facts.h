@@ -41,8 +41,8 @@ typedef struct kf_model {
     const char *approx, *exact; /* labels */
     const char *kernel;       /* the approximating kernel */
     const char *exact_kernel; /* the exact form's kernel ("": none in the list) */
-    int peer_exact;           /* the kernel's peers compute the exact form (the
-                               * vector BRDF peers), not the kernel's formula */
+    int peer_exact;           /* the exact form is computed by the kernel's
+                               * peer-vectors rows (the exact-Vis BRDF peers) */
     int n_axes;
     const kf_axis *axes;
     double max_rel, mean_rel, arg[3];
@@ -57,8 +57,6 @@ const kf_model *kf_model_at(int i);
 /* the model error of kernel against its term's exact form: the sweep's
  * max; 0 for an exact form; -1 for a model of its own */
 double kf_model_of(const char *kernel);
-/* 1 if the kernel's peer rows compute the term's exact form */
-int kf_peer_exact(const char *kernel);
 
 /* ---- image space (image_error.c) ------------------------------------------------- */
 

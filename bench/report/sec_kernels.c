@@ -80,16 +80,19 @@ void section_kernels(report *r)
         }
     }
     doc_table_end(r->doc);
-    doc_para(r->doc, "Peers (bench/harness/peers.h): <b>textbook</b> (-O2): H = normalize(L+V), powf, D in tan form, Smith "
-         "via Lambda with sqrtf, plain divisions. <b>shader</b> (-O3 -fno-math-errno "
+    doc_para(r->doc, "Peers (bench/harness/peers.h): <b>textbook</b> (-O2): powf, D in tan form, Smith "
+         "via Lambda with sqrtf, plain divisions. <b>shader</b> (-O3 -fno-math-errno -fno-trapping-math "
          "-ffp-contract=fast, auto-vectorized), built for the width of the facet port it is compared with: "
          "<b>shader_avx2</b> -march=x86-64-v3, <b>shader_avx512</b> -march=x86-64-v4 (each run only where "
-         "that port runs; elsewhere one native build): a2 form of D, exact correlated Vis with two sqrtf, "
-         "pow5 by multiplication, Hammon diffuse. <b>*_fm</b>: the same source and width with -ffast-math. "
-         "Single-term "
-         "peers take the same inputs as the facet kernel. The brdf_hammon peer rows compute "
-         "D Vis_exact F + Hammon diffuse from vectors L, V in tangent space (N = z) plus alpha, f0, "
-         "albedo; facet's brdf_hammon takes (N.L, N.V, L.V) and uses Hammon's Vis (its model error is in "
-         "the tradeoff table), so a caller with vectors pays one extra 3-term dot product for L.V.");
+         "that port runs; elsewhere one native build): a2 form of D, pow5 by multiplication. "
+         "<b>*_fm</b>: the same source and width with -ffast-math. Every peer row (path peer) takes the "
+         "same inputs and computes the same formula as the facet kernel: brdf_hammon's peers take (N.L, "
+         "N.V, L.V, alpha, f0, albedo), derive N.H and L.H from one rsqrt of 2 + 2 L.V and use Hammon's "
+         "Vis, so their error is arithmetic error and their time the same work; likewise the terms it is made of "
+         "(noh_from_dots, loh_from_dots, ggx_d, smith_vis_hammon, smith_g2_hammon, fresnel_schlick, "
+         "diffuse_hammon) and smith_g1, smith_g2, smith_vis (exact, with sqrtf), smith_g1_hammon, each from its "
+         "kernel's inputs. The rows of path "
+         "peer-vectors are another model, D Vis_exact F + Hammon diffuse from vectors L, V (N = z), "
+         "judged against its own oracle.");
 }
 

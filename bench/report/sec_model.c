@@ -42,8 +42,8 @@ void section_model(report *r)
             cells[5] = b[2];
         }
         cells[6] = ca ? report_fmt(b[3], sizeof b[3], "%.2f (%s)", data_est(D, ca->thr.median), ca->port) : "-";
-        if (x->peer_exact) { /* the exact form's cost: its peers' */
-            const bench_row *p = data_best_peer(D, x->kernel);
+        if (x->peer_exact) { /* the exact form's cost: its exact-Vis peers' */
+            const bench_row *p = data_best_peer(D, x->kernel, "peer-vectors");
             cells[7] = p ? report_fmt(b[4], sizeof b[4], "%.2f (peer %s)", data_est(D, p->thr.median), p->port) : "-";
         } else {
             cells[7] = ce ? report_fmt(b[4], sizeof b[4], "%.2f (%s)", data_est(D, ce->thr.median), ce->port) : "-";

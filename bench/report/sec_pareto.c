@@ -175,8 +175,9 @@ void section_pareto(report *r)
                     continue;
                 pts[n].x = data_est(D, x->thr.median);
                 pts[n].yi = x->err.max_rel_vis;
-                /* peers compute the kernel's own formula, or the term's exact form */
-                pts[n].ym = kf_peer_exact(kn) ? 0 : model;
+                /* every "peer" row computes the kernel's own formula (the exact-Vis
+                 * brdf peers are path "peer-vectors", not plotted) */
+                pts[n].ym = model;
                 pts[n].kind = 1;
                 snprintf(pts[n].label, sizeof pts[n].label, "peer %s (%s)", x->port, kn);
                 n++;

@@ -25,8 +25,9 @@ static void target_tiers(report *r, report_data *D)
                 cells[1] = report_fmt(b[1], sizeof b[1], "%.2fx (%.2f vs %.2f est. cycles/sample); max err %.3g vs bound %.3g",
                                ratio, data_est(D, x->thr.median), data_est(D, p->thr.median), x->err.max_rel, x->bound);
                 cells[2] = ratio >= tiers[t].want && x->within ? "yes" : "**no**";
-                cells[3] = "ratio within one run; the peer (-march of the same width, -ffast-math) computes the "
-                           "exact-Vis model from vectors, max error ~0.3 at the peak";
+                cells[3] = "ratio within one run; the peer (-march of the same width, -ffast-math) computes "
+                           "brdf_hammon's own formula from the same dots (bench/harness/peers.h), max error ~0.4 "
+                           "at the peak";
             } else {
                 cells[1] = "-";
                 cells[2] = "n/a";
@@ -88,7 +89,7 @@ void section_targets(report *r)
         cells[1] = report_fmt(b[1], sizeof b[1], "%.2fx vs %s (%.2f est. cycles/sample); max err %.3g vs bound %.3g", ratio,
                        fastest->port, data_est(D, fastest->thr.median), ab->err.max_rel, ab->bound);
         cells[2] = ratio >= 1.8 && ab->within ? "yes" : "**no**";
-        cells[3] = "ratio within one run; the peer computes the exact-Vis model from vectors (see peers)";
+        cells[3] = "ratio within one run; the peer computes brdf_hammon's own formula from the same dots (see peers)";
     } else {
         cells[1] = "-";
         cells[2] = "n/a";

@@ -15,18 +15,9 @@
 #include <string.h>
 #include "facet.h"
 #include "src/core/port.h"
+#include "harness/port_tables.h"
 #include "facet_bench.h"
 
-#pragma weak facet_port_scalar_f32
-#pragma weak facet_port_sse2_f32
-#pragma weak facet_port_avx2_f32
-#pragma weak facet_port_avx512_f32
-#pragma weak facet_port_neon_f32
-#pragma weak facet_port_scalar_f32_fast
-#pragma weak facet_port_sse2_f32_fast
-#pragma weak facet_port_avx2_f32_fast
-#pragma weak facet_port_avx512_f32_fast
-#pragma weak facet_port_neon_f32_fast
 
 static void print_port(const char *format, const facet_f32_port *p)
 {

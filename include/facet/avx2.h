@@ -40,6 +40,10 @@ FACET_INLINE __m256 facet_avx2_keep_ord(__m256 r, __m256 a, __m256 b)
 {
     return _mm256_and_ps(r, _mm256_cmp_ps(a, b, _CMP_ORD_Q));
 }
+FACET_INLINE __m256 facet_avx2_keep_ord4(__m256 r, __m256 a, __m256 b, __m256 c, __m256 d)
+{
+    return _mm256_and_ps(r, _mm256_and_ps(_mm256_cmp_ps(a, b, _CMP_ORD_Q), _mm256_cmp_ps(c, d, _CMP_ORD_Q)));
+}
 #ifdef FACET_AVX2_TEST_WORST_ESTIMATES
 /* Test builds only: estimates off by exactly the architectural bound
  * 1.5 * 2^-12, the sign taken from bit 12 of x so that it varies. */
@@ -92,6 +96,14 @@ FACET_INLINE __m256 facet_avx2_rsqrt_fast(__m256 x)
     __m256 e = _mm256_fnmadd_ps(_mm256_mul_ps(x, y), y, _mm256_set1_ps(1.0f));
     return _mm256_fmadd_ps(_mm256_mul_ps(_mm256_set1_ps(0.5f), y), e, y);
 }
+/* a / b and sqrt(x) (b, x positive and normal): vdivps and vsqrtps in both
+ * tiers, correctly rounded.  One instruction each on the divide/sqrt unit,
+ * which runs beside the FMA and add pipes, where the estimate and its step
+ * take three or four FMA-pipe operations plus the multiply. */
+FACET_INLINE __m256 facet_avx2_div(__m256 a, __m256 b) { return _mm256_div_ps(a, b); }
+FACET_INLINE __m256 facet_avx2_div_fast(__m256 a, __m256 b) { return _mm256_div_ps(a, b); }
+FACET_INLINE __m256 facet_avx2_sqrt(__m256 x) { return _mm256_sqrt_ps(x); }
+FACET_INLINE __m256 facet_avx2_sqrt_fast(__m256 x) { return _mm256_sqrt_ps(x); }
 
 /* Tails, so that a loop over any n needs no padding by the caller:
  * facet_avx2_load_n(p, r) loads r floats (0 <= r <= 8) from p into the first

@@ -40,6 +40,12 @@ FACET_INLINE __m512 facet_avx512_keep_ord(__m512 r, __m512 a, __m512 b)
 {
     return _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(a, b, _CMP_ORD_Q), r);
 }
+/* four inputs: the second compare under the first one's mask (the AND for
+ * free), one zero-masked move */
+FACET_INLINE __m512 facet_avx512_keep_ord4(__m512 r, __m512 a, __m512 b, __m512 c, __m512 d)
+{
+    return _mm512_maskz_mov_ps(_mm512_mask_cmp_ps_mask(_mm512_cmp_ps_mask(a, b, _CMP_ORD_Q), c, d, _CMP_ORD_Q), r);
+}
 
 #ifdef FACET_AVX512_TEST_WORST_ESTIMATES
 /* Test builds only: estimates off by just under the architectural bound
@@ -75,6 +81,17 @@ FACET_INLINE __m512 facet_avx512_sqr_err(__m512 a, __m512 p) { return _mm512_fms
  * error < 2^-14 each). */
 FACET_INLINE __m512 facet_avx512_rcp_fast(__m512 x) { return facet_avx512_rcp_est_(x); }
 FACET_INLINE __m512 facet_avx512_rsqrt_fast(__m512 x) { return facet_avx512_rsqrt_est_(x); }
+/* a / b and sqrt(x) (b, x positive and normal): vdivps and vsqrtps,
+ * correctly rounded, on the divide/sqrt unit beside the FMA and add pipes
+ * (measured on Zen 5: one vdivps per 2.5 cycles beside two FMAs per cycle;
+ * cheaper there than the estimate, its step and the multiply, so the fast
+ * tier divides too).  The fast tier's root is x times the raw 14-bit rsqrt
+ * estimate (relative error < 2^-14 + 1 rounding): vsqrtps's latency sits on
+ * the Fresnel tail's chain. */
+FACET_INLINE __m512 facet_avx512_div(__m512 a, __m512 b) { return _mm512_div_ps(a, b); }
+FACET_INLINE __m512 facet_avx512_div_fast(__m512 a, __m512 b) { return _mm512_div_ps(a, b); }
+FACET_INLINE __m512 facet_avx512_sqrt(__m512 x) { return _mm512_sqrt_ps(x); }
+FACET_INLINE __m512 facet_avx512_sqrt_fast(__m512 x) { return _mm512_mul_ps(x, facet_avx512_rsqrt_est_(x)); }
 
 /* Tails, so that a loop over any n needs no padding by the caller:
  * facet_avx512_load_n(p, r) loads r floats (0 <= r <= 16) from p into the first

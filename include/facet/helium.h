@@ -57,6 +57,16 @@ FACET_INLINE float32x4_t facet_helium_keep_ord(float32x4_t r, float32x4_t a, flo
     mve_pred16_t nan = vcmphiq_u32(vmaxq_u32(ia, ib), vdupq_n_u32(0xff000000u));
     return vpselq_f32(vdupq_n_f32(0.0f), r, nan);
 }
+FACET_INLINE float32x4_t facet_helium_keep_ord4(float32x4_t r, float32x4_t a, float32x4_t b, float32x4_t c,
+                                               float32x4_t d)
+{
+    uint32x4_t ia = vshlq_n_u32(vreinterpretq_u32_f32(a), 1);
+    uint32x4_t ib = vshlq_n_u32(vreinterpretq_u32_f32(b), 1);
+    uint32x4_t ic = vshlq_n_u32(vreinterpretq_u32_f32(c), 1);
+    uint32x4_t id = vshlq_n_u32(vreinterpretq_u32_f32(d), 1);
+    mve_pred16_t nan = vcmphiq_u32(vmaxq_u32(vmaxq_u32(ia, ib), vmaxq_u32(ic, id)), vdupq_n_u32(0xff000000u));
+    return vpselq_f32(vdupq_n_f32(0.0f), r, nan);
+}
 /* compare-and-select, not vmaxnm (which would return the number): a NaN
  * input must become lo */
 FACET_INLINE float32x4_t facet_helium_clamp(float32x4_t x, float32x4_t lo, float32x4_t hi)
@@ -94,6 +104,12 @@ FACET_INLINE float32x4_t facet_helium_sqr_err(float32x4_t a, float32x4_t p)
 /* The fast tier (f32_fast): two steps each. */
 FACET_INLINE float32x4_t facet_helium_rcp_fast(float32x4_t x) { return facet_helium_rcp_steps_(x, 2); }
 FACET_INLINE float32x4_t facet_helium_rsqrt_fast(float32x4_t x) { return facet_helium_rsqrt_steps_(x, 2); }
+/* a / b and sqrt(x) (b, x positive and normal): a times the tier's
+ * reciprocal, x times its rsqrt (MVE has no vector divide or root). */
+FACET_INLINE float32x4_t facet_helium_div(float32x4_t a, float32x4_t b) { return vmulq_f32(a, facet_helium_rcp(b)); }
+FACET_INLINE float32x4_t facet_helium_div_fast(float32x4_t a, float32x4_t b) { return vmulq_f32(a, facet_helium_rcp_fast(b)); }
+FACET_INLINE float32x4_t facet_helium_sqrt(float32x4_t x) { return vmulq_f32(x, facet_helium_rsqrt(x)); }
+FACET_INLINE float32x4_t facet_helium_sqrt_fast(float32x4_t x) { return vmulq_f32(x, facet_helium_rsqrt_fast(x)); }
 
 /* Tails, so that a loop over any n needs no padding by the caller:
  * facet_helium_load_n(p, r) loads r floats (0 <= r <= 4) into the first r

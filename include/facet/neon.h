@@ -48,6 +48,12 @@ FACET_INLINE float32x4_t facet_neon_keep_ord(float32x4_t r, float32x4_t a, float
     float32x4_t m = vmaxq_f32(a, b);
     return vreinterpretq_f32_u32(vandq_u32(vreinterpretq_u32_f32(r), vceqq_f32(m, m)));
 }
+FACET_INLINE float32x4_t facet_neon_keep_ord4(float32x4_t r, float32x4_t a, float32x4_t b, float32x4_t c,
+                                             float32x4_t d)
+{
+    float32x4_t m = vmaxq_f32(vmaxq_f32(a, b), vmaxq_f32(c, d));
+    return vreinterpretq_f32_u32(vandq_u32(vreinterpretq_u32_f32(r), vceqq_f32(m, m)));
+}
 FACET_INLINE float32x4_t facet_neon_rcp(float32x4_t x)
 {
     float32x4_t r = vrecpeq_f32(x);
@@ -85,6 +91,14 @@ FACET_INLINE float32x4_t facet_neon_rsqrt_fast(float32x4_t x)
     e = vfmsq_f32(vdupq_n_f32(1.0f), vmulq_f32(x, y), y);
     return vfmaq_f32(y, vmulq_n_f32(y, 0.5f), e);
 }
+/* a / b and sqrt(x) (b, x positive and normal): a times the tier's
+ * reciprocal, x times its rsqrt (armv7 NEON has no vector divide or square
+ * root; on aarch64 the estimate and steps pipeline where fdiv / fsqrt do
+ * not). */
+FACET_INLINE float32x4_t facet_neon_div(float32x4_t a, float32x4_t b) { return vmulq_f32(a, facet_neon_rcp(b)); }
+FACET_INLINE float32x4_t facet_neon_div_fast(float32x4_t a, float32x4_t b) { return vmulq_f32(a, facet_neon_rcp_fast(b)); }
+FACET_INLINE float32x4_t facet_neon_sqrt(float32x4_t x) { return vmulq_f32(x, facet_neon_rsqrt(x)); }
+FACET_INLINE float32x4_t facet_neon_sqrt_fast(float32x4_t x) { return vmulq_f32(x, facet_neon_rsqrt_fast(x)); }
 
 /* Tails, so that a loop over any n needs no padding by the caller:
  * facet_neon_load_n(p, r) loads r floats (0 <= r <= 4) from p into the first

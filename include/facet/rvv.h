@@ -106,6 +106,13 @@ FACET_INLINE facet_rvv_v facet_rvv_keep_ord(facet_rvv_v r, facet_rvv_v a, facet_
     facet_rvv_mask ord = FACET_RVV_M_(vmand_mm)(FACET_RVV_FB_(vmfeq_vv)(a, a, vl), FACET_RVV_FB_(vmfeq_vv)(b, b, vl), vl);
     return FACET_RVV_F_(vmerge_vvm)(ord, FACET_RVV_F_(vfmv_v_f)(0.0f, vl), r, vl);
 }
+FACET_INLINE facet_rvv_v facet_rvv_keep_ord4(facet_rvv_v r, facet_rvv_v a, facet_rvv_v b, facet_rvv_v c, facet_rvv_v d)
+{
+    size_t vl = FACET_RVV_VL_;
+    facet_rvv_mask o1 = FACET_RVV_M_(vmand_mm)(FACET_RVV_FB_(vmfeq_vv)(a, a, vl), FACET_RVV_FB_(vmfeq_vv)(b, b, vl), vl);
+    facet_rvv_mask o2 = FACET_RVV_M_(vmand_mm)(FACET_RVV_FB_(vmfeq_vv)(c, c, vl), FACET_RVV_FB_(vmfeq_vv)(d, d, vl), vl);
+    return FACET_RVV_F_(vmerge_vvm)(FACET_RVV_M_(vmand_mm)(o1, o2, vl), FACET_RVV_F_(vfmv_v_f)(0.0f, vl), r, vl);
+}
 /* compare-and-select, not vfmax (which would return the number): a NaN
  * input must become lo */
 FACET_INLINE facet_rvv_v facet_rvv_clamp(facet_rvv_v x, facet_rvv_v lo, facet_rvv_v hi)
@@ -148,6 +155,13 @@ FACET_INLINE facet_rvv_v facet_rvv_rcp(facet_rvv_v x) { return facet_rvv_rcp_ste
 FACET_INLINE facet_rvv_v facet_rvv_rsqrt(facet_rvv_v x) { return facet_rvv_rsqrt_steps_(x, FACET_RVV_STEPS); }
 FACET_INLINE facet_rvv_v facet_rvv_rcp_fast(facet_rvv_v x) { return facet_rvv_rcp_steps_(x, FACET_RVV_STEPS_FAST); }
 FACET_INLINE facet_rvv_v facet_rvv_rsqrt_fast(facet_rvv_v x) { return facet_rvv_rsqrt_steps_(x, FACET_RVV_STEPS_FAST); }
+/* a / b and sqrt(x) (b, x positive and normal): a times the tier's
+ * reciprocal, x times its rsqrt (vfdiv / vfsqrt are long-latency, often
+ * unpipelined, on the cores there are; the estimates and steps pipeline). */
+FACET_INLINE facet_rvv_v facet_rvv_div(facet_rvv_v a, facet_rvv_v b) { return facet_rvv_mul(a, facet_rvv_rcp(b)); }
+FACET_INLINE facet_rvv_v facet_rvv_div_fast(facet_rvv_v a, facet_rvv_v b) { return facet_rvv_mul(a, facet_rvv_rcp_fast(b)); }
+FACET_INLINE facet_rvv_v facet_rvv_sqrt(facet_rvv_v x) { return facet_rvv_mul(x, facet_rvv_rsqrt(x)); }
+FACET_INLINE facet_rvv_v facet_rvv_sqrt_fast(facet_rvv_v x) { return facet_rvv_mul(x, facet_rvv_rsqrt_fast(x)); }
 /* a*a - p, one rounding (vfmsac: vs1 vs2 - vd) */
 FACET_INLINE facet_rvv_v facet_rvv_sqr_err(facet_rvv_v a, facet_rvv_v p)
 {

@@ -64,6 +64,11 @@ FACET_INLINE float facet_scalar_keep_ord(float r, float a, float b)
 {
     return (a == a && b == b) ? r : 0.0f;
 }
+/* the same for four inputs (the NaN rule of kernels with 3 or more) */
+FACET_INLINE float facet_scalar_keep_ord4(float r, float a, float b, float c, float d)
+{
+    return (a == a && b == b && c == c && d == d) ? r : 0.0f;
+}
 
 /* 1/x for x in [2^-126, 2^126]: the IEEE division. */
 FACET_INLINE float facet_scalar_rcp(float x) { return 1.0f / x; }
@@ -111,6 +116,15 @@ FACET_INLINE float facet_scalar_sqr_err(float a, float p)
  * steps instead of three (3.5e-2 -> 1.8e-3 -> 4.9e-6, about 2^-17.6). */
 FACET_INLINE float facet_scalar_rcp_fast(float x) { return 1.0f / x; }
 FACET_INLINE float facet_scalar_rsqrt_fast(float x) { return facet_scalar_rsqrt_steps_(x, 2); }
+
+/* a / b and sqrt(x) for b, x positive and normal (the quotients and roots of
+ * f32_body.h; its op counts take them as a multiply plus a reciprocal or
+ * rsqrt): the IEEE division in both tiers, sqrt as x rsqrt(x) (no libm),
+ * with the tier's rsqrt. */
+FACET_INLINE float facet_scalar_div(float a, float b) { return a / b; }
+FACET_INLINE float facet_scalar_div_fast(float a, float b) { return a / b; }
+FACET_INLINE float facet_scalar_sqrt(float x) { return x * facet_scalar_rsqrt(x); }
+FACET_INLINE float facet_scalar_sqrt_fast(float x) { return x * facet_scalar_rsqrt_fast(x); }
 
 /* Exponent-bit ops (exp2/log2 of f32_body.h and the samplers):
  *   exp2i(k)    2^k for an integral-valued k in [-126, 127] (exponent bits)

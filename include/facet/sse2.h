@@ -42,6 +42,10 @@ FACET_INLINE __m128 facet_sse2_keep_ord(__m128 r, __m128 a, __m128 b)
 {
     return _mm_and_ps(r, _mm_cmpord_ps(a, b));
 }
+FACET_INLINE __m128 facet_sse2_keep_ord4(__m128 r, __m128 a, __m128 b, __m128 c, __m128 d)
+{
+    return _mm_and_ps(r, _mm_and_ps(_mm_cmpord_ps(a, b), _mm_cmpord_ps(c, d)));
+}
 FACET_INLINE __m128 facet_sse2_rcp(__m128 x) { return _mm_div_ps(_mm_set1_ps(1.0f), x); }
 FACET_INLINE __m128 facet_sse2_rsqrt(__m128 x) { return _mm_div_ps(_mm_set1_ps(1.0f), _mm_sqrt_ps(x)); }
 FACET_INLINE __m128 facet_sse2_sqr_err(__m128 a, __m128 p)
@@ -67,6 +71,14 @@ FACET_INLINE __m128 facet_sse2_rsqrt_fast(__m128 x)
     __m128 h = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.5f), x), _mm_mul_ps(y, y));
     return _mm_mul_ps(y, _mm_sub_ps(_mm_set1_ps(1.5f), h));
 }
+/* a / b and sqrt(x) (b, x positive and normal): divps and sqrtps in both
+ * tiers, correctly rounded; a quotient through rcpps and a Newton step costs
+ * more operations than divps (measured: the fast tier's brdf_hammon was the
+ * slower one with it). */
+FACET_INLINE __m128 facet_sse2_div(__m128 a, __m128 b) { return _mm_div_ps(a, b); }
+FACET_INLINE __m128 facet_sse2_div_fast(__m128 a, __m128 b) { return _mm_div_ps(a, b); }
+FACET_INLINE __m128 facet_sse2_sqrt(__m128 x) { return _mm_sqrt_ps(x); }
+FACET_INLINE __m128 facet_sse2_sqrt_fast(__m128 x) { return _mm_sqrt_ps(x); }
 
 /* Tails, so that a loop over any n needs no padding by the caller:
  * facet_sse2_load_n(p, r) loads r floats (0 <= r <= 4) from p into the first

@@ -222,6 +222,9 @@ int main(int argc, char **argv)
         float *out;
         stat worst;
         const char *worst_port = "";
+        /* FACET_TEST_KERNEL=name: that kernel alone (while working on it) */
+        if (getenv("FACET_TEST_KERNEL") && strcmp(getenv("FACET_TEST_KERNEL"), k->name))
+            continue;
         memset(&st, 0, sizeof st);
         memset(&worst, 0, sizeof worst);
         rng.s = 0x5eed0000u + ki;

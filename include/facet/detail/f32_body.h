@@ -28,19 +28,28 @@
 #define MAX_ FACET_OP(max)
 #define CLAMP_ FACET_OP(clamp)
 #define KEEP_ORD_ FACET_OP(keep_ord)
+#define KEEP_ORD4_ FACET_OP(keep_ord4)
 /* the tier: the precise one, or with FACET_TIER_FAST 1 the fast one (the
  * same formulation, the port's cheaper rcp / rsqrt refinement) */
 #if defined(FACET_TIER_FAST) && FACET_TIER_FAST
 #define RCP_ FACET_OP(rcp_fast)
 #define RSQRT_ FACET_OP(rsqrt_fast)
+#define DIV_ FACET_OP(div_fast)
+#define SQRT_ FACET_OP(sqrt_fast)
+#define FAST_ 1
 #else
 #define RCP_ FACET_OP(rcp)
 #define RSQRT_ FACET_OP(rsqrt)
+#define DIV_ FACET_OP(div)
+#define SQRT_ FACET_OP(sqrt)
+#define FAST_ 0
 #endif
 /* where an error is raised to the fifth power (brdf_hammon's 1 - L.H), both
  * tiers refine fully: 5 times an unrefined estimate would exceed 2^-12 */
 #define RCP_X5_ FACET_OP(rcp)
 #define RSQRT_X5_ FACET_OP(rsqrt)
+#define DIV_X5_ FACET_OP(div)
+#define SQRT_X5_ FACET_OP(sqrt)
 /* where an error is multiplied by an exponent (the power of Blinn-Phong, the
  * exponent of Beckmann, log2 in a pow: |y| up to 126), both tiers use the
  * precise reciprocal: an unrefined estimate times 126 would exceed 2^-12 */
@@ -74,15 +83,19 @@
 #define X_HAMMON_DEN_ FACET_K(x_hammon_den)
 #define X_DIFFUSE_SINGLE_ FACET_K(x_diffuse_single)
 #define X_DIFFUSE_PI_ FACET_K(x_diffuse_pi)
+#define X_HALF_INV_NH_ FACET_K(x_half_inv_nh)
 #define X_BRDF_GEOMETRY_ FACET_K(x_brdf_geometry)
+#define X_BRDF_PEAK_ FACET_K(x_brdf_peak)
+#define X_ONE_MINUS_LH_ FACET_K(x_one_minus_lh)
 #define X_BRDF_CHANNEL_ FACET_K(x_brdf_channel)
 
 /* The NaN rule, shared by all kernels: a NaN in any input of a sample gives
  * +0 for that sample (a value that cannot light a pixel), every tier, every
  * port.  Every kernel ends with `return NAN0_(result, input, ...);`, which
- * keeps result where no input is NaN and gives +0 otherwise: one port op
- * keep_ord(r, a, b) (an unordered compare of two inputs and a mask) per two
- * inputs.  The kernel itself runs on the clamped inputs (NaN clamps to the
+ * keeps result where no input is NaN and gives +0 otherwise: the port ops
+ * keep_ord(r, a, b) (an ordered compare of two inputs and a mask) and
+ * keep_ord4(r, a, b, c, d) (four inputs: on avx512 the second compare runs
+ * under the first one's mask, on neon one compare of the maximum).  The kernel itself runs on the clamped inputs (NaN clamps to the
  * low end below), so nothing traps and no NaN reaches the result; the mask
  * then replaces it.  tests/f32/test_f32_bad_input.c and tests/f32/test_f32_ports.c
  * check it from the kernel list for every kernel, input position, NaN class
@@ -92,12 +105,12 @@
 #define NAN0_SEL_(r, a, b, c, d, e, f, g, h, N, ...) N
 #define NAN0_1_(r, a) KEEP_ORD_(r, a, a)
 #define NAN0_2_(r, a, b) KEEP_ORD_(r, a, b)
-#define NAN0_3_(r, a, b, c) KEEP_ORD_(KEEP_ORD_(r, a, b), c, c)
-#define NAN0_4_(r, a, b, c, d) KEEP_ORD_(KEEP_ORD_(r, a, b), c, d)
+#define NAN0_3_(r, a, b, c) KEEP_ORD4_(r, a, b, c, c)
+#define NAN0_4_(r, a, b, c, d) KEEP_ORD4_(r, a, b, c, d)
 #define NAN0_5_(r, a, b, c, d, e) KEEP_ORD_(NAN0_4_(r, a, b, c, d), e, e)
 #define NAN0_6_(r, a, b, c, d, e, f) KEEP_ORD_(NAN0_4_(r, a, b, c, d), e, f)
-#define NAN0_7_(r, a, b, c, d, e, f, g) KEEP_ORD_(NAN0_6_(r, a, b, c, d, e, f), g, g)
-#define NAN0_8_(r, a, b, c, d, e, f, g, h) KEEP_ORD_(NAN0_6_(r, a, b, c, d, e, f), g, h)
+#define NAN0_7_(r, a, b, c, d, e, f, g) KEEP_ORD4_(NAN0_4_(r, a, b, c, d), e, f, g, g)
+#define NAN0_8_(r, a, b, c, d, e, f, g, h) KEEP_ORD4_(NAN0_4_(r, a, b, c, d), e, f, g, h)
 
 /* Domain handling, shared by all kernels: out-of-domain values and -Inf go
  * to the low end, +Inf to the high end; NaN to the low end too, which only
@@ -119,6 +132,23 @@ FACET_INLINE V_ X_ONE_MINUS_POW5_(V_ x)
     return MUL_(x, p);
 }
 
+/* k Q(x), Q(x) = (1 - (1 - x)^5) / x = 1 + y + y^2 + y^3 + y^4 (y = 1 - x),
+ * in [1, 5] on [0, 1] (k a constant, folded into the coefficients): those
+ * positive terms summed by Horner in y, 1 rounding each, in both tiers.
+ * Horner in x (k (x^4 - 5x^3 + 10x^2 - 10x + 5), no 1 - x) is one operation
+ * less but four constants more, which RVV and the scalar RISC-V code
+ * materialize: measured there 5 more instructions per brdf_hammon sample,
+ * the fast tier slower than the precise one (qemu counts, VLEN 128). */
+#define X_POW5_Q_(x, k) FACET_K(x_pow5_q)(x, C_(k))
+FACET_INLINE V_ FACET_K(x_pow5_q)(V_ x, V_ k)
+{
+    V_ y = SUB_(C_(1.0f), x);
+    V_ p = FMA_(y, k, k);
+    p = FMA_(p, y, k);
+    p = FMA_(p, y, k);
+    return FMA_(p, y, k);
+}
+
 /* alpha^2 (1 - n^2) + n^2 = alpha^2 + (1 - alpha^2) n^2, the radicand of the
  * exact Smith terms, with 1 - n^2 formed as (1-n)(1+n): all terms >= 0. */
 FACET_INLINE V_ X_SMITH_W_(V_ n, V_ a2)
@@ -127,7 +157,7 @@ FACET_INLINE V_ X_SMITH_W_(V_ n, V_ a2)
     return FMA_(a2, q, MUL_(n, n));
 }
 
-FACET_INLINE V_ X_SQRT_(V_ w) { return MUL_(w, RSQRT_(w)); }
+FACET_INLINE V_ X_SQRT_(V_ w) { return SQRT_(w); }
 
 /* ---- 2^y and log2 ------------------------------------------------------------
  * No libm: the exponent field (the port ops exp2i, getexp, getmant) and
@@ -369,7 +399,7 @@ FACET_INLINE V_ FACET_K(x_ggx_d)(V_ noh, V_ alpha)
     V_ a = X_ALPHA_(alpha);
     V_ na = MUL_(n, a);
     V_ d = FMA_(SUB_(C_(1.0f), n), ADD_(C_(1.0f), n), MUL_(na, na));
-    V_ k = MUL_(a, RCP_(d));
+    V_ k = DIV_(a, d);
     return MUL_(MUL_(k, k), C_(FACET_INV_PI_));
 }
 
@@ -440,7 +470,7 @@ FACET_INLINE V_ FACET_K(ggx_aniso_d)(V_ noh, V_ toh, V_ boh, V_ alpha_x, V_ alph
     V_ K = FMA_(MUL_(t, t), ay2, FMA_(MUL_(b, b), ax2, MUL_(MUL_(n, n), a2)));
     V_ a3 = MUL_(a2, MUL_(ax, ay));
     K = MAX_(K, MUL_(C_(0.5f), a2));
-    return NAN0_(MUL_(MUL_(a3, C_(FACET_INV_PI_)), RCP_(MUL_(K, K))), noh, toh, boh, alpha_x, alpha_y);
+    return NAN0_(DIV_(MUL_(a3, C_(FACET_INV_PI_)), MUL_(K, K)), noh, toh, boh, alpha_x, alpha_y);
 }
 
 /* GTR: D = c / d^gamma, d = 1 + (alpha^2 - 1) N.H^2 = (1 - N.H)(1 + N.H) +
@@ -473,7 +503,7 @@ FACET_INLINE V_ FACET_K(smith_g1)(V_ nov, V_ alpha)
     V_ n = X_UNIT_(nov);
     V_ a = X_ALPHA_(alpha);
     V_ r = X_SQRT_(X_SMITH_W_(n, MUL_(a, a)));
-    return NAN0_(MIN_(MUL_(ADD_(n, n), RCP_(ADD_(n, r))), C_(1.0f)), nov, alpha);
+    return NAN0_(MIN_(DIV_(ADD_(n, n), ADD_(n, r)), C_(1.0f)), nov, alpha);
 }
 
 /* nv sqrt(w(nl)) + nl sqrt(w(nv)): the height-correlated denominator,
@@ -491,14 +521,14 @@ FACET_INLINE V_ FACET_K(smith_g2)(V_ nol, V_ nov, V_ alpha)
     V_ nl = X_COS_(nol), nv = X_COS_(nov);
     V_ den = X_G2_DEN_(nl, nv, X_ALPHA_(alpha));
     V_ p = MUL_(nl, nv);
-    return NAN0_(MIN_(MUL_(ADD_(p, p), RCP_(den)), C_(1.0f)), nol, nov, alpha);
+    return NAN0_(MIN_(DIV_(ADD_(p, p), den), C_(1.0f)), nol, nov, alpha);
 }
 
 FACET_INLINE V_ FACET_K(smith_vis)(V_ nol, V_ nov, V_ alpha)
 {
     V_ nl = X_COS_(nol), nv = X_COS_(nov);
     V_ den = X_G2_DEN_(nl, nv, X_ALPHA_(alpha));
-    return NAN0_(MUL_(C_(0.5f), RCP_(den)), nol, nov, alpha);
+    return NAN0_(DIV_(C_(0.5f), den), nol, nov, alpha);
 }
 
 /* G1(L) G1(V) = 4 nl nv / ((nl + sqrt w(nl)) (nv + sqrt w(nv))): one reciprocal. */
@@ -510,7 +540,7 @@ FACET_INLINE V_ FACET_K(smith_g2_uncorrelated)(V_ nol, V_ nov, V_ alpha)
     V_ dl = ADD_(nl, X_SQRT_(X_SMITH_W_(nl, a2)));
     V_ dv = ADD_(nv, X_SQRT_(X_SMITH_W_(nv, a2)));
     V_ p = MUL_(nl, nv);
-    return NAN0_(MIN_(MUL_(MUL_(C_(4.0f), p), RCP_(MUL_(dl, dv))), C_(1.0f)), nol, nov, alpha);
+    return NAN0_(MIN_(DIV_(MUL_(C_(4.0f), p), MUL_(dl, dv)), C_(1.0f)), nol, nov, alpha);
 }
 
 /* ---- Smith, Hammon's approximation ---------------------------------------- */
@@ -521,7 +551,7 @@ FACET_INLINE V_ FACET_K(smith_g1_hammon)(V_ nov, V_ alpha)
     V_ n = X_UNIT_(nov);
     V_ a = X_ALPHA_(alpha);
     V_ den = FMA_(n, SUB_(C_(2.0f), a), a);
-    return NAN0_(MIN_(MUL_(ADD_(n, n), RCP_(den)), C_(1.0f)), nov, alpha);
+    return NAN0_(MIN_(DIV_(ADD_(n, n), den), C_(1.0f)), nov, alpha);
 }
 
 /* lerp(2 nl nv, nl + nv, alpha) written (1 - alpha) 2 nl nv + alpha (nl + nv):
@@ -537,14 +567,14 @@ FACET_INLINE V_ FACET_K(smith_g2_hammon)(V_ nol, V_ nov, V_ alpha)
     V_ nl = X_COS_(nol), nv = X_COS_(nov);
     V_ den = X_HAMMON_DEN_(nl, nv, X_ALPHA_(alpha));
     V_ p = MUL_(nl, nv);
-    return NAN0_(MIN_(MUL_(ADD_(p, p), RCP_(den)), C_(1.0f)), nol, nov, alpha);
+    return NAN0_(MIN_(DIV_(ADD_(p, p), den), C_(1.0f)), nol, nov, alpha);
 }
 
 FACET_INLINE V_ FACET_K(smith_vis_hammon)(V_ nol, V_ nov, V_ alpha)
 {
     V_ nl = X_COS_(nol), nv = X_COS_(nov);
     V_ den = X_HAMMON_DEN_(nl, nv, X_ALPHA_(alpha));
-    return NAN0_(MUL_(C_(0.5f), RCP_(den)), nol, nov, alpha);
+    return NAN0_(DIV_(C_(0.5f), den), nol, nov, alpha);
 }
 
 /* ---- Smith G1 for GTR (Dimov) ----------------------------------------------
@@ -598,7 +628,7 @@ FACET_INLINE V_ FACET_K(smith_g1_gtr)(V_ nov, V_ alpha, V_ gamma)
     V_ a2 = MUL_(a, a);
     V_ s2 = MUL_(SUB_(C_(1.0f), n), ADD_(C_(1.0f), n));
     V_ w2 = X_SMITH_W_(n, a2);
-    V_ W = MUL_(w2, RSQRT_X5_(w2)); /* cubed in G^4: the precise rsqrt in both tiers */
+    V_ W = SQRT_X5_(w2); /* cubed in G^4: the precise root in both tiers */
     V_ n2 = ADD_(n, n), nW = ADD_(n, W), b = ADD_(C_(1.0f), a2);
     V_ y0, y1, y2, y3, y4, la, e, den1, u, W3, num4, den4, k4;
     V_ d0, d1, d2, d3, m0, m1, m2, m3, m4, yj, yk, mj, mk, t, t1, j1, j2, j3, S, ex, sc;
@@ -615,7 +645,7 @@ FACET_INLINE V_ FACET_K(smith_g1_gtr)(V_ nov, V_ alpha, V_ gamma)
     y1 = MUL_(MUL_(e, s2), MUL_(y1, den1));
     y1 = MUL_(n, RCP_EXP_(ADD_(n, y1)));
     /* gamma = 2: GGX, 2n / (n + W) */
-    y2 = MUL_(n2, RCP_EXP_(nW));
+    y2 = DIV_X5_(n2, nW); /* smith_g1's quotient, to the bit in the precise tier */
     /* gamma = 3: 4 (1 + alpha^2) n W / (alpha^2 (3 alpha^2 + 1) s2 + 2 (1 + alpha^2) n (n + W)) */
     /* n2 multiplies last in y3 and y4: n W or n W^3 underflows for a
      * denormal N.V where the quotient does not */
@@ -694,7 +724,7 @@ FACET_INLINE V_ FACET_K(g_cook_torrance)(V_ nol, V_ nov, V_ noh, V_ voh)
     nh = MUL_(nh, sc);
     v = MUL_(vh, sc);
     g = MUL_(ADD_(nh, nh), m);
-    return NAN0_(FACET_OP(sel_lt)(g, v, MUL_(g, RCP_(MAX_(v, C_(7.88860905e-31f)))), C_(1.0f)),
+    return NAN0_(FACET_OP(sel_lt)(g, v, DIV_(g, MAX_(v, C_(7.88860905e-31f))), C_(1.0f)),
                  nol, nov, noh, voh);
 }
 
@@ -708,7 +738,7 @@ FACET_INLINE V_ FACET_K(g_kelemen)(V_ nol, V_ nov, V_ voh)
     V_ p = MUL_(X_COS_(nol), X_COS_(nov));
     V_ vh = X_UNIT_(voh);
     V_ q = MUL_(vh, vh);
-    return NAN0_(FACET_OP(sel_lt)(p, q, MUL_(p, RCP_(MAX_(q, C_(8.67361738e-19f)))), C_(1.0f)), nol, nov, voh);
+    return NAN0_(FACET_OP(sel_lt)(p, q, DIV_(p, MAX_(q, C_(8.67361738e-19f))), C_(1.0f)), nol, nov, voh);
 }
 
 /* Walter's rational fit of Beckmann's Smith G1, c = N.V / (alpha sqrt(1 - N.V^2)):
@@ -727,7 +757,7 @@ FACET_INLINE V_ FACET_K(smith_g1_beckmann)(V_ nov, V_ alpha)
     V_ p = MUL_(a, X_SQRT_(w));
     V_ num = MUL_(q, FMA_(C_(3.535f), p, MUL_(C_(2.181f), q)));
     V_ den = FMA_(p, FMA_(C_(2.276f), q, p), MUL_(C_(2.577f), MUL_(q, q)));
-    V_ g = MIN_(MUL_(num, RCP_(den)), C_(1.0f));
+    V_ g = MIN_(DIV_(num, den), C_(1.0f));
     return NAN0_(FACET_OP(sel_lt)(q, MUL_(C_(1.6f), p), g, C_(1.0f)), nov, alpha);
 }
 
@@ -738,7 +768,7 @@ FACET_INLINE V_ FACET_K(smith_g1_schlick_beckmann)(V_ nov, V_ alpha)
     V_ n = X_UNIT_(nov);
     V_ k = MUL_(X_ALPHA_(alpha), C_(0.797884561f));
     V_ den = FMA_(n, SUB_(C_(1.0f), k), k);
-    return NAN0_(MIN_(MUL_(n, RCP_(den)), C_(1.0f)), nov, alpha);
+    return NAN0_(MIN_(DIV_(n, den), C_(1.0f)), nov, alpha);
 }
 
 /* The joint approximation engines ship (Karis's UE4 form):
@@ -752,7 +782,7 @@ FACET_INLINE V_ FACET_K(smith_vis_joint_approx)(V_ nol, V_ nov, V_ alpha)
     V_ a = X_ALPHA_(alpha);
     V_ b = SUB_(C_(1.0f), a);
     V_ den = ADD_(MUL_(nl, FMA_(nv, b, a)), MUL_(nv, FMA_(nl, b, a)));
-    return NAN0_(MUL_(C_(0.5f), RCP_(den)), nol, nov, alpha);
+    return NAN0_(DIV_(C_(0.5f), den), nol, nov, alpha);
 }
 
 /* The fitted visibility (bench/fit/fit_vis.c): exact correlated Smith is
@@ -778,33 +808,52 @@ FACET_INLINE V_ FACET_K(smith_vis_fit)(V_ nol, V_ nov, V_ alpha)
     V_ s3 = MUL_(C_(FACET_VIS_FIT_K3), sg), s5 = MUL_(C_(FACET_VIS_FIT_K5), sg);
     V_ rl = FACET_K(x_vis_fit_r)(nl, ka1, ka2, ka4, s3, s5);
     V_ rv = FACET_K(x_vis_fit_r)(nv, ka1, ka2, ka4, s3, s5);
-    return NAN0_(RCP_(ADD_(MUL_(nv, rl), MUL_(nl, rv))), nol, nov, alpha);
+    return NAN0_(DIV_(C_(1.0f), ADD_(MUL_(nv, rl), MUL_(nl, rv))), nol, nov, alpha);
 }
 
 /* ---- Hammon's GGX diffuse --------------------------------------------------- */
 
-/* pi * diffuse, from the pieces the caller shares (h = 0.5 / N.H):
+/* Hammon's diffuse from the pieces the caller shares (h = 0.5 / N.H):
  *   facing = 0.5 + 0.5 L.V = t/2, so facing (0.9 - 0.4 facing) = t (0.45 - 0.1 t)
  *   rough  = t (0.45 - 0.1 t) (1 + h)
- *   smooth = 1.05 (1 - (1-nl)^5) (1 - (1-nv)^5)
- *   pi single = (1 - alpha) smooth + alpha rough,  pi multi = 0.1159 pi alpha
- *   pi diffuse = albedo (pi single + albedo pi multi)
- * The caller applies the 1/pi (brdf_hammon folds it with the specular). */
-FACET_INLINE V_ X_DIFFUSE_SINGLE_(V_ nl, V_ nv, V_ t, V_ h, V_ a, V_ *multi)
+ *   smooth = 1.05 (1 - (1-nl)^5) (1 - (1-nv)^5) = 1.05 nl nv Q(nl) Q(nv)
+ *   single = ((1 - alpha) smooth + alpha rough) / pi,  multi = 0.1159 alpha
+ *   diffuse = albedo (single + albedo multi)
+ * the 1/pi folded into the constants (the caller passes smooth / pi). */
+#define FACET_DIF_K_ 0.334225380f /* 1.05 / pi */
+FACET_INLINE V_ X_DIFFUSE_SINGLE_(V_ at, V_ t, V_ h, V_ a, V_ smooth, V_ *multi)
 {
-    V_ rough = MUL_(MUL_(t, FNMA_(C_(0.1f), t, C_(0.45f))), ADD_(C_(1.0f), h));
-    /* 1 - alpha is exact for alpha >= 1/2; the product of the two powers is
-     * formed first so that swapping N.L and N.V gives the same bits */
-    V_ c = MUL_(C_(1.05f), SUB_(C_(1.0f), a));
-    V_ smooth = MUL_(c, MUL_(X_ONE_MINUS_POW5_(nl), X_ONE_MINUS_POW5_(nv)));
-    *multi = MUL_(C_(0.364110589f), a); /* 0.1159 pi */
-    return FMA_(a, rough, smooth);
+    /* alpha rough = ar (1 + h), ar = (alpha t) (0.45 - 0.1 t) / pi (alpha t
+     * the caller's, brdf_hammon's D numerator too): h, the last quotient to
+     * arrive, enters by one fma at the end of the chain */
+    V_ ar = MUL_(at, FNMA_(C_(0.0318309886f), t, C_(0.143239449f)));
+    /* 1 - alpha is exact for alpha >= 1/2 */
+    *multi = MUL_(C_(0.1159f), a);
+    return FMA_(ar, h, FMA_(SUB_(C_(1.0f), a), smooth, ar));
 }
 
+/* the diffuse, smooth from N.L and N.V: the product of the two Q is formed
+ * first, so that swapping N.L and N.V gives the same bits */
 FACET_INLINE V_ X_DIFFUSE_PI_(V_ nl, V_ nv, V_ t, V_ h, V_ a, V_ alb)
 {
-    V_ multi, single = X_DIFFUSE_SINGLE_(nl, nv, t, h, a, &multi);
+    V_ smooth = MUL_(C_(FACET_DIF_K_), MUL_(MUL_(nl, nv), MUL_(X_POW5_Q_(nl, 1.0f), X_POW5_Q_(nv, 1.0f))));
+    V_ multi, single = X_DIFFUSE_SINGLE_(MUL_(a, t), t, h, a, smooth, &multi);
     return MUL_(alb, FMA_(alb, multi, single));
+}
+
+/* h = 0.5 / N.H = L.H / s = sqrt(t) / (sqrt(2) s) (N.H = s / (2 L.H),
+ * L.H = sqrt(t/2)), from rt = sqrt(t): one quotient and the root, no
+ * reciprocal of N.H.  t >= s^2/2 caps N.H at 1, so h >= 1/2 but for
+ * roundings: the precise tier floors it there, the fast tier takes the
+ * rounding's worth. */
+FACET_INLINE V_ X_HALF_INV_NH_(V_ rt, V_ s)
+{
+    V_ h = DIV_(rt, MUL_(C_(1.41421354f), s));
+#if FAST_
+    return h;
+#else
+    return MAX_(h, C_(0.5f));
+#endif
 }
 
 FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
@@ -812,10 +861,8 @@ FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ alb
     V_ nl = X_COS_(nol), nv = X_COS_(nov);
     V_ s = ADD_(nl, nv);
     V_ t = MAX_(ADD_(C_(1.0f), X_LOV_(lov)), MUL_(C_(0.5f), MUL_(s, s)));
-    V_ nh = MIN_(MUL_(s, RSQRT_(ADD_(t, t))), C_(1.0f));
-    V_ d = X_DIFFUSE_PI_(nl, nv, t, MUL_(C_(0.5f), RCP_(nh)), X_ALPHA_(alpha),
-                                 X_UNIT_(albedo));
-    return NAN0_(MUL_(d, C_(FACET_INV_PI_)), nol, nov, lov, alpha, albedo);
+    V_ d = X_DIFFUSE_PI_(nl, nv, t, X_HALF_INV_NH_(SQRT_(t), s), X_ALPHA_(alpha), X_UNIT_(albedo));
+    return NAN0_(d, nol, nov, lov, alpha, albedo);
 }
 
 /* ---- more diffuse models: Burley (Disney), Oren-Nayar, Hammon's variants ---- */
@@ -829,7 +876,7 @@ FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ alb
 FACET_INLINE V_ FACET_K(diffuse_burley)(V_ nol, V_ nov, V_ loh, V_ alpha, V_ albedo)
 {
     V_ nl = X_COS_(nol), nv = X_COS_(nov), lh = X_UNIT_(loh), a = X_ALPHA_(alpha);
-    V_ r = MUL_(a, RSQRT_(a));
+    V_ r = SQRT_(a);
     V_ k = FMA_(ADD_(r, r), MUL_(lh, lh), C_(-0.5f)); /* f_d90 - 1 */
     V_ fl = FMA_(k, X_POW5_Y_(nl), C_(1.0f));
     V_ fv = FMA_(k, X_POW5_Y_(nv), C_(1.0f));
@@ -860,7 +907,7 @@ FACET_INLINE V_ FACET_K(diffuse_oren_nayar)(V_ nol, V_ nov, V_ lov, V_ alpha, V_
     V_ na = MUL_(MUL_(FMA_(C_(0.5f), q, C_(0.33f)), d2), m);
     V_ num = FMA_(MUL_(MUL_(C_(0.45f), q), d1), x, na);
     V_ den = MUL_(MUL_(d1, d2), m);
-    return NAN0_(MUL_(MUL_(X_UNIT_(albedo), MUL_(num, RCP_(den))), C_(FACET_INV_PI_)), nol, nov, lov, alpha,
+    return NAN0_(MUL_(MUL_(X_UNIT_(albedo), DIV_(num, den)), C_(FACET_INV_PI_)), nol, nov, lov, alpha,
                  albedo);
 }
 
@@ -868,13 +915,12 @@ FACET_INLINE V_ FACET_K(diffuse_oren_nayar)(V_ nol, V_ nov, V_ lov, V_ alpha, V_
 
 /* Hammon's diffuse with another smooth term S (times 1 - alpha here):
  *   pi result = albedo ((1 - alpha) S + alpha rough + albedo 0.1159 pi alpha),
- * rough, t and N.H as diffuse_hammon (the raised t, 1 rsqrt, 1 rcp). */
+ * rough, t and 0.5 / N.H as diffuse_hammon (the raised t, 1 sqrt, 1 quotient). */
 FACET_INLINE V_ X_DIFFUSE_VARIANT_(V_ nl, V_ nv, V_ lov, V_ a, V_ albedo, V_ smooth)
 {
     V_ s = ADD_(nl, nv);
     V_ t = MAX_(ADD_(C_(1.0f), X_LOV_(lov)), MUL_(C_(0.5f), MUL_(s, s)));
-    V_ nh = MIN_(MUL_(s, RSQRT_(ADD_(t, t))), C_(1.0f));
-    V_ h = MUL_(C_(0.5f), RCP_(nh));
+    V_ h = X_HALF_INV_NH_(SQRT_(t), s);
     V_ rough = MUL_(MUL_(t, FNMA_(C_(0.1f), t, C_(0.45f))), ADD_(C_(1.0f), h));
     V_ single = FMA_(a, rough, MUL_(SUB_(C_(1.0f), a), smooth));
     V_ alb = X_UNIT_(albedo);
@@ -914,62 +960,96 @@ FACET_INLINE V_ FACET_K(diffuse_hammon_cheap)(V_ nol, V_ nov, V_ lov, V_ alpha, 
  *   d = (1 - N.H^2) + alpha^2 N.H^2 = e / 2t,  e = num + alpha^2 s^2
  *   D = alpha^2 / (pi d^2) = (4/pi) (alpha t / e)^2.
  * num cancels at the peak, so it is formed exactly: s and t as unevaluated
- * sums (Fast2Sum), s^2 as p + pe with pe the exact rounding error.
- * Likewise 1 - L.H, which F raises to the fifth power, is formed without
- * cancellation as (1 - L.H^2) / (1 + L.H) = (2 - t) / (2 (1 + L.H)).
- * With Vis = 0.5/m (m = Hammon's lerp) and L.H = t rsqrt(2t):
- *   spec = (2/pi) (alpha t)^2 F / (e^2 m) = (2/pi) (u m) u F,  u = alpha t / (e m),
+ * sums (Fast2Sum), s^2 as p + pe with pe the exact rounding error (sqr_err:
+ * exact on every port, FMA or not); 2 th - p is exact near the peak
+ * (Sterbenz), the rest is tiny.  Likewise 1 - L.H, which F raises to the
+ * fifth power, is formed without cancellation as
+ * (1 - L.H^2) / (1 + L.H) = (2 - t) / (2 + 2 L.H).
+ * With Vis = 0.5/m (m = Hammon's lerp), mh = m/2 and L.H = sqrt(t/2):
+ *   pi D Vis = 2 (alpha t)^2 / (e^2 m) = (u mh) u,  u = alpha t / (e mh),
  * ordered so that no intermediate overflows at the grazing corner.
- * Three reciprocals (1/(e m), 1/(1 + L.H), 1/s) and one rsqrt in all. */
+ * Quotients: alpha t / (e mh), (2 - t) / (2 + 2 L.H), L.H / s (= 0.5 / N.H,
+ * for the diffuse), one square root: the port's div and sqrt (a divide/sqrt
+ * unit where it runs beside the FMA pipes, else a reciprocal estimate and
+ * steps).  The fast tier takes its cheaper quotient for the first and the
+ * last (errors 2x and 1x its estimate's, the 14-bit one on avx512: 2^-13),
+ * the precise one for 1 - L.H (times 5 in F), drops the 2^-23 of
+ * alpha^2 (s^2 - p) in e and the cap of 0.5 / N.H at 0.5 (a rounding's
+ * worth). */
 /* What brdf_hammon computes before f0 and albedo enter: F = f0 + (1 - f0) y5,
  * brdf = (dv2 F + albedo (single + albedo multi)) / pi.  The RGB form shares
  * it across channels; per channel the same operations run in the same order,
  * so each channel equals brdf_hammon to the bit. */
 /* The parts are out-parameters, not a struct: RVV's vector types are
  * sizeless (no struct members, no arrays), and one body serves every port. */
-FACET_INLINE void X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha,
-                                   V_ *y5_, V_ *dv2_, V_ *single_, V_ *multi_)
+/* The exact peak: e = num + alpha^2 s^2 with num = 2t - s^2 formed without
+ * cancellation, and what it leaves the rest: the ordered pair big >= small,
+ * s rounded (sh), t (raised where the triple is inconsistent) and
+ * 2 - t = min(1 - L.V, 2 - s^2/2), each side without cancellation (2 - p/2
+ * is exact for p >= 2, Sterbenz).  Its own function so that
+ * tests/f32/test_op_counts.c can count it apart (the "peak" of the budget,
+ * with X_ONE_MINUS_LH_ below). */
+FACET_INLINE V_ X_BRDF_PEAK_(V_ nl, V_ nv, V_ lv, V_ a2, V_ *big_, V_ *small_, V_ *sh_, V_ *t_, V_ *w_)
 {
-    V_ nl = X_COS_(nol), nv = X_COS_(nov);
-    V_ lv = X_LOV_(lov);
-    V_ a = X_ALPHA_(alpha);
     V_ big = MAX_(nl, nv), small = MIN_(nl, nv);
-    V_ sh = ADD_(big, small);
+    V_ sh = ADD_(nl, nv); /* = big + small, without waiting for them */
     V_ sl = SUB_(small, SUB_(sh, big));
     V_ th = ADD_(C_(1.0f), lv);
     V_ tl = SUB_(lv, SUB_(th, C_(1.0f)));
     V_ p = MUL_(sh, sh);
     V_ pe = FACET_OP(sqr_err)(sh, p);
-    /* 2t - s^2 = (2th - p) + (2tl - (s^2 - p)); 2th - p is exact near the
-     * peak (Sterbenz), the rest is tiny; s^2 - p = pe + sl (2sh + sl). */
-    V_ s2lo = FMA_(sl, ADD_(ADD_(sh, sh), sl), pe); /* s^2 - p */
-    V_ num = MAX_(ADD_(SUB_(ADD_(th, th), p), SUB_(ADD_(tl, tl), s2lo)), C_(0.0f));
-    V_ t = MAX_(th, MUL_(C_(0.5f), p));
-    V_ a2 = MUL_(a, a);
-    V_ e = FMA_(a2, p, FMA_(a2, s2lo, num));
+    /* num = (2th - p) - (s^2 - p - 2tl), s^2 - p = pe + 2 sh sl (+ sl^2 < 2^-48 s^2);
+     * 2th - p is exact near the peak (Sterbenz) */
+    V_ s2lo = FMA_(sl, ADD_(sh, sh), pe);
+    /* e = max(num, 0) + alpha^2 s^2 = max(k - x1 - x2, k), k = alpha^2 s^2,
+     * x1 = p - 2th, x2 = s^2 - p - 2tl: the exact x1 meets k before the
+     * small x2 arrives (k - x1 keeps its rounding below 2^-24 e); the fast
+     * tier leaves alpha^2 (s^2 - p) out of k (2^-23 of it) */
+#if FAST_
+    V_ k = MUL_(a2, p);
+#else
+    V_ k = FMA_(a2, p, MUL_(a2, s2lo));
+#endif
+    *big_ = big;
+    *small_ = small;
+    *sh_ = sh;
+    *t_ = MAX_(th, MUL_(C_(0.5f), p));
+    *w_ = MIN_(SUB_(C_(1.0f), lv), FNMA_(C_(0.5f), s2lo, FNMA_(C_(0.5f), p, C_(2.0f))));
+    return MAX_(SUB_(SUB_(k, FNMA_(C_(2.0f), th, p)), FNMA_(C_(2.0f), tl, s2lo)), k);
+}
+
+/* 1 - L.H = (2 - t) / (2 + 2 L.H), from w = 2 - t and rt = sqrt(t) =
+ * sqrt(2) L.H: the precise quotient in both tiers (F takes its fifth power) */
+FACET_INLINE V_ X_ONE_MINUS_LH_(V_ w, V_ rt)
+{
+    return DIV_X5_(w, FMA_(C_(1.41421354f), rt, C_(2.0f)));
+}
+
+FACET_INLINE void X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha,
+                                   V_ *y5_, V_ *dv2_, V_ *single_, V_ *multi_)
+{
+    V_ nl = X_COS_(nol), nv = X_COS_(nov);
+    V_ a = X_ALPHA_(alpha);
+    V_ big, small, sh, t, w;
+    V_ e = X_BRDF_PEAK_(nl, nv, X_LOV_(lov), MUL_(a, a), &big, &small, &sh, &t, &w);
     V_ p2 = MUL_(nl, nv);
-    V_ m = FMA_(a, sh, MUL_(SUB_(C_(1.0f), a), ADD_(p2, p2))); /* Hammon's lerp */
-    V_ r = RSQRT_X5_(ADD_(t, t));
-    V_ lh = MIN_(MUL_(t, r), C_(1.0f));
-    /* w = 2 - t = min(1 - L.V, 2 - s^2/2), each side formed without
-     * cancellation: 2 - s^2/2 = ((1 - nl) + (1 - nv)) (2 + s) / 2 */
-    V_ w = MIN_(SUB_(C_(1.0f), lv),
-                MUL_(MUL_(C_(0.5f), ADD_(SUB_(C_(1.0f), nl), SUB_(C_(1.0f), nv))),
-                     ADD_(C_(2.0f), sh)));
-    /* below L.H = 1/2, 1 - L.H itself is the better conditioned form */
-    V_ y = FACET_OP(sel_lt)(lh, C_(0.5f), SUB_(C_(1.0f), lh),
-                            MUL_(MUL_(C_(0.5f), w), RCP_X5_(ADD_(C_(1.0f), lh))));
+    /* m/2 = (1 - alpha) nl nv + alpha s/2; s/2 - nl nv >= 0 */
+    V_ mh = FMA_(a, SUB_(MUL_(C_(0.5f), sh), p2), p2);
+    /* sqrt(2) L.H = sqrt(t): the 1/sqrt(2) of L.H = sqrt(t/2) goes into
+     * the constants, off the Fresnel tail's chain */
+    V_ rt = SQRT_(t);
+    V_ y = X_ONE_MINUS_LH_(w, rt);
     V_ y2 = MUL_(y, y);
-    /* D Vis = (4/pi)(alpha t / e)^2 (0.5 / m) = (2/pi) (alpha t)^2 / (e^2 m),
-     * and 1 / (e^2 m) = m R^2 with R = 1 / (e m): one reciprocal */
-    V_ R = RCP_(MUL_(e, m));
-    V_ u = MUL_(MUL_(a, t), R);                 /* alpha t / (e m) <= 2^38 */
-    V_ dv_pi = MUL_(MUL_(u, m), u);             /* pi D Vis / 2; u m = alpha t / e <= 512 */
-    /* 0.5 / N.H = L.H / s (N.H = s / (2 L.H)), at least 0.5 */
-    V_ h = MAX_(MUL_(lh, RCP_(sh)), C_(0.5f));
+    /* u = alpha t / (e mh) <= 2^39; alpha t serves the diffuse too */
+    V_ at = MUL_(a, t);
+    V_ u = DIV_(at, MUL_(e, mh));
+    V_ h = X_HALF_INV_NH_(rt, sh);
     *y5_ = MUL_(MUL_(y2, y2), y);
-    *dv2_ = ADD_(dv_pi, dv_pi);
-    *single_ = X_DIFFUSE_SINGLE_(nl, nv, t, h, a, multi_);
+    /* D Vis = (u mh) (u / pi), u mh = alpha t / e <= 512 */
+    *dv2_ = MUL_(MUL_(u, mh), MUL_(u, C_(FACET_INV_PI_)));
+    /* smooth / pi = p2 Q(big) (1.05/pi) Q(small): symmetric in N.L, N.V */
+    *single_ = X_DIFFUSE_SINGLE_(at, t, h, a, MUL_(p2, MUL_(X_POW5_Q_(big, 1.0f), X_POW5_Q_(small, FACET_DIF_K_))),
+                                 multi_);
 }
 
 FACET_INLINE V_ X_BRDF_CHANNEL_(V_ y5, V_ dv2, V_ single, V_ multi, V_ f0, V_ albedo)
@@ -977,7 +1057,7 @@ FACET_INLINE V_ X_BRDF_CHANNEL_(V_ y5, V_ dv2, V_ single, V_ multi, V_ f0, V_ al
     V_ f0c = X_UNIT_(f0), alb = X_UNIT_(albedo);
     V_ f = FMA_(SUB_(C_(1.0f), f0c), y5, f0c);
     V_ dif = MUL_(alb, FMA_(alb, multi, single));
-    return MUL_(FMA_(dv2, f, dif), C_(FACET_INV_PI_));
+    return FMA_(dv2, f, dif);
 }
 
 FACET_INLINE V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_ albedo)
@@ -1023,6 +1103,7 @@ FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
 #undef MAX_
 #undef CLAMP_
 #undef KEEP_ORD_
+#undef KEEP_ORD4_
 #undef NAN0_
 #undef NAN0_SEL_
 #undef NAN0_1_
@@ -1037,8 +1118,15 @@ FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
 #undef RSQRT_
 #undef RCP_X5_
 #undef RSQRT_X5_
+#undef DIV_
+#undef DIV_X5_
+#undef SQRT_X5_
+#undef SQRT_
+#undef FAST_
+#undef X_POW5_Q_
 #undef RCP_EXP_
 #undef FACET_INV_PI_
+#undef FACET_DIF_K_
 #undef X_UNIT_
 #undef X_COS_
 #undef X_ALPHA_
@@ -1063,5 +1151,8 @@ FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
 #undef X_HAMMON_DEN_
 #undef X_DIFFUSE_SINGLE_
 #undef X_DIFFUSE_PI_
+#undef X_HALF_INV_NH_
 #undef X_BRDF_GEOMETRY_
+#undef X_BRDF_PEAK_
+#undef X_ONE_MINUS_LH_
 #undef X_BRDF_CHANNEL_

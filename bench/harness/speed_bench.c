@@ -1,0 +1,281 @@
+/* speed_bench.c - `facet-bench speed`: the two f32 tiers' batch functions of
+ * every port this CPU runs against the same-formula peers built for the same
+ * width (peers.h), timed in INTERLEAVED ROUNDS (issue 21): each round times
+ * one pass of every entry of a kernel (cyc_now() around the call), so the
+ * entries compared with each other meet the same load; per entry the minimum
+ * over the rounds (interruptions by other load only add time) and the
+ * median.  The ports are called through their tables (src/core/port.h, as
+ * report/symbols.c reads them), not the dispatcher.  Error of each entry
+ * against the double oracle on the timed samples (tests/lib/sample.h's
+ * generator: a quarter of them at the specular peak) and on a peak set
+ * (mirror geometry within 2^-30 .. 2^-3, alpha in [2^-10, 2^-8]) for the
+ * two-cosine kernels. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include "facet.h"
+#include "tests/lib/sample.h"
+#include "src/core/port.h"
+#include "port_tables.h"
+#include "cycles.h"
+#include "peers.h"
+#include "facet_bench.h"
+
+
+#define MAX_ROUNDS 1001
+#define MAX_ENTRIES 24
+
+/* one kernel's batch function in a port table, called on SoA columns */
+typedef void (*tab_call)(const facet_f32_port *p, float *out, const float *const *in, size_t n);
+#define COL_(q) in[q]
+#define FACET_KERNEL(name, NAME, n_in, ...)                                                   \
+    static void call_##name(const facet_f32_port *p, float *out, const float *const *in, size_t n) \
+    {                                                                                         \
+        p->name(out, FACET_EACH_INPUT(n_in, COL_), n);                                        \
+    }
+#include "src/core/kernels.def"
+#undef FACET_KERNEL
+static const tab_call calls_[] = {
+#define FACET_KERNEL(name, ...) call_##name,
+#include "src/core/kernels.def"
+#undef FACET_KERNEL
+};
+
+typedef struct entry {
+    const char *port, *tier;    /* facet port + tier, or peer name + "peer" */
+    const char *width;          /* the vector width it belongs to (port name) */
+    const facet_f32_port *tab;  /* facet: the port table */
+    peer_term_fn peer;          /* peer: the loop */
+    double t[MAX_ROUNDS];
+    double min, median, err, err_peak;
+} entry;
+
+static int cmp_d(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+static void run(entry *e, size_t ki, float *out, const float *const *in, size_t n)
+{
+    if (e->tab)
+        calls_[ki](e->tab, out, in, n);
+    else
+        e->peer(out, in, n);
+}
+
+static double max_err(entry *e, size_t ki, float *out, const float *const *in, const double *want, size_t n)
+{
+    size_t i;
+    double m = 0;
+    run(e, ki, out, in, n);
+    for (i = 0; i < n; i++) {
+        double d = out[i] != out[i] ? INFINITY : fabs(out[i] - want[i]) / fmax(fabs(want[i]), 0x1p-100);
+        if (d > m)
+            m = d;
+    }
+    return m;
+}
+
+/* the peer of width w (its facet port's name), fast-math or not */
+static const entry *find(const entry *e, int ne, const char *port, const char *tier)
+{
+    int i;
+    for (i = 0; i < ne; i++)
+        if (!strcmp(e[i].port, port) && !strcmp(e[i].tier, tier))
+            return &e[i];
+    return NULL;
+}
+
+static void usage(FILE *f)
+{
+    fprintf(f, "usage: facet-bench speed [KERNEL] [--rounds R] [--samples N] [--tsv FILE] [--quick]\n"
+               "Times both f32 tiers' batch functions on every port this CPU runs, and the\n"
+               "same-formula peers (shader and shader_fm at each port's vector width, the\n"
+               "textbook peer), in interleaved rounds: each round times one pass of every\n"
+               "entry of a kernel, so all of them meet the same load; min and median over\n"
+               "the rounds, clock units per sample.  Every kernel, or KERNEL.\n"
+               "  --rounds R    rounds (default 41, 5..%d)\n"
+               "  --samples N   samples per pass (default 4096, 16..65536)\n"
+               "  --tsv FILE    also write the table as TSV (for the report)\n"
+               "  --quick       5 rounds of 256 samples (tests)\n", MAX_ROUNDS);
+}
+
+int facet_bench_speed(int argc, char **argv)
+{
+    static const struct { const char *name; const facet_f32_port *f32, *fast; } ports[] = {
+        { "avx512", &facet_port_avx512_f32, &facet_port_avx512_f32_fast },
+        { "avx2", &facet_port_avx2_f32, &facet_port_avx2_f32_fast },
+        { "sse2", &facet_port_sse2_f32, &facet_port_sse2_f32_fast },
+        { "neon", &facet_port_neon_f32, &facet_port_neon_f32_fast },
+        { "scalar", &facet_port_scalar_f32, &facet_port_scalar_f32_fast },
+    };
+    static entry e[MAX_ENTRIES];
+    int rounds = 41, a, quick = 0;
+    size_t n = 4096, ki, nk = facet_kernel_count();
+    const char *only = NULL, *tsv = NULL;
+    FILE *tf = NULL;
+    float *in[FACET_MAX_INPUTS], *pin[FACET_MAX_INPUTS], *out;
+    double *want, *pwant;
+    for (a = 1; a < argc; a++) {
+        if (!strcmp(argv[a], "--rounds") && a + 1 < argc)
+            rounds = atoi(argv[++a]);
+        else if (!strcmp(argv[a], "--samples") && a + 1 < argc)
+            n = (size_t)atol(argv[++a]);
+        else if (!strcmp(argv[a], "--tsv") && a + 1 < argc)
+            tsv = argv[++a];
+        else if (!strcmp(argv[a], "--quick"))
+            quick = 1;
+        else if (!strcmp(argv[a], "--help")) {
+            usage(stdout);
+            return 0;
+        } else if (argv[a][0] != '-' && !only && facet_kernel_find(argv[a]))
+            only = argv[a];
+        else {
+            usage(stderr);
+            return 2;
+        }
+    }
+    if (quick) {
+        rounds = 5;
+        n = 256;
+    }
+    if (rounds < 5 || rounds > MAX_ROUNDS || n < 16 || n > 65536) {
+        usage(stderr);
+        return 2;
+    }
+    n = n / 16 * 16;
+    if (tsv && !(tf = fopen(tsv, "w"))) {
+        fprintf(stderr, "facet-bench speed: cannot write %s\n", tsv);
+        return 1;
+    }
+    cyc_init();
+    for (a = 0; a < FACET_MAX_INPUTS; a++) {
+        in[a] = malloc(n * sizeof(float));
+        pin[a] = malloc(n * sizeof(float));
+    }
+    out = malloc(n * sizeof(float));
+    want = malloc(n * sizeof(double));
+    pwant = malloc(n * sizeof(double));
+    printf("# facet-bench speed: %s per sample (clock %s%s), %zu samples per pass (%zu KiB of inputs and\n"
+           "# output: %s), %d interleaved rounds, min and median; pinned to cpu %d; ticks per core cycle %.3f\n",
+           cyc_unit(), cyc_source(), cyc_is_cycles() ? "" : ", not core cycles", n, n * 7 * 4 / 1024,
+           n * 7 * 4 <= 32768 ? "L1-resident" : "L2-resident, beyond a 32-48 KiB L1", rounds, cyc_cpu(),
+           cyc_ticks_per_cycle());
+    printf("%-22s %-16s %-8s %9s %9s %10s %10s\n", "kernel", "port", "tier", "min", "median", "max_err",
+           "peak_err");
+    if (tf)
+        fprintf(tf, "# kernel\tport\ttier\twidth\tmin\tmedian\tmax_err\tpeak_err\t(%s per sample, %zu samples, "
+                    "%d interleaved rounds)\n", cyc_unit(), n, rounds);
+    for (ki = 0; ki < nk; ki++) {
+        const facet_kernel *k = facet_kernel_at(ki);
+        smp_rng r = { 0x5eed0021ull + ki };
+        int ne = 0, i, j, two_cos = k->n_inputs >= 2 && !strcmp(k->inputs[0], "nol") && !strcmp(k->inputs[1], "nov");
+        size_t p, s, q;
+        if (only && strcmp(only, k->name))
+            continue;
+        for (q = 0; q < n; q++) {
+            float v[FACET_MAX_INPUTS];
+            double dv[FACET_MAX_INPUTS];
+            smp_inputs(&r, k, v);
+            for (j = 0; j < k->n_inputs; j++) {
+                in[j][q] = v[j];
+                dv[j] = v[j];
+            }
+            want[q] = k->oracle(dv);
+            /* the peak set: mirror azimuth, nearly equal angles, small alpha */
+            if (two_cos) {
+                double cl = fmax(smp_u01(&r), 0.05), cv = cl + (smp_u01(&r) - 0.5) * smp_log2u(&r, -30, -3);
+                double phi = M_PI + (smp_u01(&r) - 0.5) * smp_log2u(&r, -30, -3), sl, sv;
+                cv = fmin(fmax(cv, FACET_COS_MIN), 1.0);
+                sl = sqrt(1 - cl * cl);
+                sv = sqrt(1 - cv * cv);
+                v[0] = (float)cl;
+                v[1] = (float)cv;
+                if (k->n_inputs >= 3 && !strcmp(k->inputs[2], "lov"))
+                    v[2] = (float)fmin(fmax(cl * cv + sl * sv * cos(phi), -1.0), 1.0);
+                for (j = 2; j < k->n_inputs; j++)
+                    if (!strcmp(k->inputs[j], "alpha"))
+                        v[j] = (float)smp_log2u(&r, -10, -8);
+            }
+            for (j = 0; j < k->n_inputs; j++) {
+                pin[j][q] = v[j];
+                dv[j] = v[j];
+            }
+            pwant[q] = k->oracle(dv);
+        }
+        for (p = 0; p < sizeof ports / sizeof ports[0]; p++) {
+            if (!ports[p].f32 || !facet_port_supported(ports[p].name) || ne + 2 > MAX_ENTRIES)
+                continue;
+            e[ne].port = e[ne + 1].port = ports[p].name;
+            e[ne].width = e[ne + 1].width = ports[p].name;
+            e[ne].tier = "f32";
+            e[ne].tab = ports[p].f32;
+            e[ne + 1].tier = "f32_fast";
+            e[ne + 1].tab = ports[p].fast;
+            e[ne].peer = e[ne + 1].peer = NULL;
+            ne += 2;
+        }
+        for (s = 0; peer_sets[s] && ne < MAX_ENTRIES; s++) {
+            peer_term_fn fn = peer_term(peer_sets[s], k->name);
+            if (!fn || !peer_available(peer_sets[s]))
+                continue;
+            e[ne].port = peer_sets[s]->name;
+            e[ne].width = peer_sets[s]->width ? peer_sets[s]->width : "-";
+            e[ne].tier = "peer";
+            e[ne].tab = NULL;
+            e[ne].peer = fn;
+            ne++;
+        }
+        for (i = 0; i < ne; i++) {
+            e[i].err = max_err(&e[i], ki, out, (const float *const *)in, want, n);
+            e[i].err_peak = two_cos ? max_err(&e[i], ki, out, (const float *const *)pin, pwant, n) : NAN;
+            run(&e[i], ki, out, (const float *const *)in, n); /* warm-up */
+        }
+        for (j = 0; j < rounds; j++)
+            for (i = 0; i < ne; i++) {
+                uint64_t t0 = cyc_now();
+                run(&e[i], ki, out, (const float *const *)in, n);
+                e[i].t[j] = (double)(cyc_now() - t0) / (double)n;
+            }
+        for (i = 0; i < ne; i++) {
+            qsort(e[i].t, (size_t)rounds, sizeof(double), cmp_d);
+            e[i].min = e[i].t[0];
+            e[i].median = e[i].t[rounds / 2];
+            printf("%-22s %-16s %-8s %9.3f %9.3f %10.3g %10.3g\n", k->name, e[i].port, e[i].tier, e[i].min,
+                   e[i].median, e[i].err, e[i].err_peak);
+            if (tf)
+                fprintf(tf, "%s\t%s\t%s\t%s\t%.4f\t%.4f\t%.4g\t%.4g\n", k->name, e[i].port, e[i].tier, e[i].width,
+                        e[i].min, e[i].median, e[i].err, e[i].err_peak);
+        }
+        /* the ratios the issue's targets are stated in, from the minima */
+        for (p = 0; p < sizeof ports / sizeof ports[0]; p++) {
+            const entry *f = find(e, ne, ports[p].name, "f32"), *ff = find(e, ne, ports[p].name, "f32_fast");
+            char pn[40];
+            const entry *pk, *pf;
+            if (!f || !ff)
+                continue;
+            snprintf(pn, sizeof pn, "shader_%s", ports[p].name);
+            pk = find(e, ne, pn, "peer");
+            snprintf(pn, sizeof pn, "shader_%s_fm", ports[p].name);
+            pf = find(e, ne, pn, "peer");
+            printf("%-22s %-16s ratios (min): f32_fast/f32 %.2fx", k->name, ports[p].name, f->min / ff->min);
+            if (pf)
+                printf("; vs %s: f32 %.2fx, f32_fast %.2fx", pn, pf->min / f->min, pf->min / ff->min);
+            if (pk)
+                printf("; vs shader_%s: f32 %.2fx, f32_fast %.2fx", ports[p].name, pk->min / f->min, pk->min / ff->min);
+            printf("\n");
+        }
+    }
+    for (a = 0; a < FACET_MAX_INPUTS; a++) {
+        free(in[a]);
+        free(pin[a]);
+    }
+    free(out);
+    free(want);
+    free(pwant);
+    if (tf && fclose(tf) != 0)
+        return 1;
+    return fflush(stdout) != 0;
+}
