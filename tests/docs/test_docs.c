@@ -570,5 +570,7 @@ int main(void)
     header_bounds();
     doc_contracts();
     rgb_port_signature();
+    free(facet_h);
+    free(fx_h);
     return th_done();
 }
