@@ -57,6 +57,14 @@ $(BUILD)/bench/%.o: bench/%.c $(BENCH_DEPS)
 	@mkdir -p $(dir $@)
 	$(CC) $(BENCH_FLAGS) -c $< -o $@
 
+# the interactive chooser's script, inlined in index.html by sec_choose.c:
+# one C string a line (backslash, quote and '?' escaped: no trigraphs)
+$(BUILD)/bench/report/chooser_js.h: bench/report/chooser.js
+	@mkdir -p $(dir $@)
+	sed -e 's/\\/\\\\/g' -e 's/"/\\"/g' -e 's/?/\\?/g' -e 's/^/    "/' -e 's/$$/\\n",/' $< > $@.tmp && mv $@.tmp $@
+$(BUILD)/bench/report/sec_choose.o: $(BUILD)/bench/report/chooser_js.h
+$(BUILD)/bench/report/sec_choose.o: BENCH_FLAGS += -I$(BUILD)/bench/report
+
 # the inline SIMD loops and shading paths: their port's ISA flags on these
 # objects alone; each asks facet_port_supported() before it runs
 $(foreach p,$(FACET_PORTS),$(eval $(BUILD)/bench/harness/loops_$(p).o $(BUILD)/bench/raster/raster_$(p).o: \

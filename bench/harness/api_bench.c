@@ -58,6 +58,22 @@ static void rgb_material(long reps)
     for (r = 0; r < reps; r++)
         facet_brdf_hammon_rgb_f32_batch_material(o, nl, nv, lv, &mat, N);
 }
+static void rgb_textured(long reps)
+{
+    long r;
+    float *o[3] = { op[0], op[1], op[2] };
+    const float *a[3] = { abp[0], abp[1], abp[2] };
+    for (r = 0; r < reps; r++)
+        facet_brdf_hammon_rgb_f32_batch_textured(o, nl, nv, lv, &mat, a, N);
+}
+static void rgb_textured_rough(long reps)
+{
+    long r;
+    float *o[3] = { op[0], op[1], op[2] };
+    const float *a[3] = { abp[0], abp[1], abp[2] };
+    for (r = 0; r < reps; r++)
+        facet_brdf_hammon_rgb_f32_batch_textured_rough(o, nl, nv, lv, al, &mat, a, N);
+}
 static void rgb_material_interleaved(long reps)
 {
     long r;
@@ -238,6 +254,8 @@ int facet_bench_api(int argc, char **argv)
                 { pn, "brdf_hammon_rgb_f32_batch_interleaved", rgb_interleaved, N },
                 { pn, "brdf_hammon_rgb_f32_batch_material (uniform)", rgb_material, N },
                 { pn, "brdf_hammon_rgb_f32_batch_material_interleaved", rgb_material_interleaved, N },
+                { pn, "brdf_hammon_rgb_f32_batch_textured", rgb_textured, N },
+                { pn, "brdf_hammon_rgb_f32_batch_textured_rough", rgb_textured_rough, N },
                 { pn, "brdf_hammon_rgb_f32_fast_batch (planar arrays)", rgb_fast_planar, N },
                 { pn, "brdf_hammon_rgb_f32_fast_batch_material", rgb_fast_material, N },
                 { pn, "per pixel: _batch_material_interleaved, n = 1", pp_batch1, N },

@@ -8,6 +8,12 @@
 struct doc_writer {
     int kind; /* DOC_MD or DOC_HTML */
     FILE *f;
+    /* HTML: the table being written, held until its end (a long one is
+     * collapsed) */
+    FILE *tab;
+    char *tab_buf;
+    size_t tab_len;
+    int tab_rows;
     void (*heading)(doc_writer *w, int level, const char *text);
     void (*para)(doc_writer *w, const char *text);
     void (*table_head)(doc_writer *w, int n, const char *const *head);

@@ -118,7 +118,7 @@ FACET_INLINE __m256 facet_avx2_sqrt_fast(__m256 x) { return _mm256_sqrt_ps(x); }
  * inputs.  Tested at every n mod 8 (tests/f32/test_tails.c). */
 FACET_INLINE __m256i facet_avx2_mask_n_(size_t r)
 {
-    return _mm256_cmpgt_epi32(_mm256_set1_epi32((int)r), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+    return _mm256_cmpgt_epi32(_mm256_set1_epi32(FACET_CAST(int, r)), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
 }
 FACET_INLINE __m256 facet_avx2_load_n(const float *p, size_t r)
 {

@@ -106,11 +106,11 @@ FACET_INLINE __m512 facet_avx512_sqrt_fast(__m512 x) { return _mm512_mul_ps(x, f
  * inputs.  Tested at every n mod 16 (tests/f32/test_tails.c). */
 FACET_INLINE __m512 facet_avx512_load_n(const float *p, size_t r)
 {
-    return _mm512_mask_loadu_ps(_mm512_set1_ps(0.5f), (__mmask16)((1u << r) - 1u), p);
+    return _mm512_mask_loadu_ps(_mm512_set1_ps(0.5f), FACET_CAST(__mmask16, (1u << r) - 1u), p);
 }
 FACET_INLINE void facet_avx512_store_n(float *p, __m512 v, size_t r)
 {
-    _mm512_mask_storeu_ps(p, (__mmask16)((1u << r) - 1u), v);
+    _mm512_mask_storeu_ps(p, FACET_CAST(__mmask16, (1u << r) - 1u), v);
 }
 
 /* Exponent-bit ops (exp2/log2 of f32_body.h and the samplers):

@@ -22,6 +22,15 @@
 #define FACET_INLINE static inline
 #endif
 
+/* A conversion in a header, written once for C and C++: C++ gets a
+ * static_cast, so that every header is clean under g++ -Wold-style-cast
+ * (tests/suites/25-headers.sh). */
+#ifdef __cplusplus
+#define FACET_CAST(T, x) (static_cast<T>(x))
+#else
+#define FACET_CAST(T, x) ((T)(x))
+#endif
+
 /* The staged tail of a port without masked loads (sse2, neon): a tail of
  * r floats (r < lanes) is copied through a lanes-wide buffer, touching
  * nothing past p + r; the unused lanes hold 0.5, inside every kernel's

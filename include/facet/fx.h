@@ -167,6 +167,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "facet/common.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -187,6 +188,52 @@ extern "C" {
 #define FACET_FX_MAX_DIFF  0xFFFFFFFFu
 #define FACET_FX_MAX_BRDF  0xFFFFFFFFFFFFFFFFull
 #define FACET_FX_FAST_TOL_REL 0.0009765625 /* 2^-10 */
+
+/* ==== Conversions between float and fixed point ===========================
+ * For a renderer that holds floats and switches to the fixed-point kernels
+ * (or checks them against the f32 ones), inline here, no library code.
+ *
+ * facet_q15_from_f32(x): x as Q15, floor(x 32768 + 1/2) (nearest, ties up:
+ *   the rounding of the CLI and of the golden vectors), after the f32
+ *   kernels' input rules: NaN gives 0, x is clamped to [-4, 4] first (+-inf
+ *   to the bound), which holds every fixed-point input domain (dots
+ *   [-1, 1]; alpha, f0, albedo [0, 1]; GTR's gamma [0, 4]); each kernel then
+ *   clamps to its own domain as it does any int32_t.  Result in
+ *   [-131072, 131072].  Error: the rounding only, at most 1/2 LSB (2^-16)
+ *   (exact arithmetic: the scale is a power of two, floor by truncation and
+ *   an exact difference).  Cost: 1 mul, 3 compare/selects, 1 float->int,
+ *   1 int->float, 1 sub, 1 compare.  Where the CPU has no FPU, soft float.
+ * facet_q15_from_f32_batch(out, x, n): the same over n values.
+ * facet_f32_from_q15(q): q / 32768, exact for |q| <= 2^24.
+ * facet_f32_from_fx(raw, frac): an output of frac fraction bits
+ *   (FACET_FX_Q15_FRAC, _D_FRAC, _VIS_FRAC, _BRDF_FRAC; frac in [0, 63]) as
+ *   a float, raw 2^-frac, correctly rounded (one rounding, raw to float:
+ *   the scale is a power of two).  Any output container converts to
+ *   uint64_t; a Q15 output (int32_t, never negative) too. */
+static inline int32_t facet_q15_from_f32(float x)
+{
+    float v;
+    int32_t t;
+    if (!(x == x))
+        return 0;
+    x = x < -4.0f ? -4.0f : x > 4.0f ? 4.0f : x;
+    v = x * 32768.0f;                 /* exact: |v| <= 2^17 */
+    t = FACET_CAST(int32_t, v);       /* toward zero */
+    if (v < FACET_CAST(float, t))     /* floor */
+        t--;
+    return v - FACET_CAST(float, t) >= 0.5f ? t + 1 : t; /* the fraction, exact */
+}
+static inline void facet_q15_from_f32_batch(int32_t *out, const float *x, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        out[i] = facet_q15_from_f32(x[i]);
+}
+static inline float facet_f32_from_q15(int32_t q) { return FACET_CAST(float, q) * (1.0f / 32768.0f); }
+static inline float facet_f32_from_fx(uint64_t raw, int frac)
+{
+    return FACET_CAST(float, raw) / FACET_CAST(float, FACET_CAST(uint64_t, 1) << (frac & 63));
+}
 
 /* the port whose code runs the precise tier's batches (Batches, above) */
 const char *facet_fx_port_name(void); /* "avx2", "neon", "helium" or "scalar" */

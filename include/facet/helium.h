@@ -119,12 +119,12 @@ FACET_INLINE float32x4_t facet_helium_sqrt_fast(float32x4_t x) { return vmulq_f3
  * Tested at every n mod 4 (tests/f32/test_tails.c, on the M55 image). */
 FACET_INLINE float32x4_t facet_helium_load_n(const float *p, size_t r)
 {
-    mve_pred16_t m = vctp32q((uint32_t)(r < 4 ? r : 4));
+    mve_pred16_t m = vctp32q(FACET_CAST(uint32_t, r < 4 ? r : 4));
     return vpselq_f32(vldrwq_z_f32(p, m), vdupq_n_f32(0.5f), m);
 }
 FACET_INLINE void facet_helium_store_n(float *p, float32x4_t v, size_t r)
 {
-    vstrwq_p_f32(p, v, vctp32q((uint32_t)(r < 4 ? r : 4)));
+    vstrwq_p_f32(p, v, vctp32q(FACET_CAST(uint32_t, r < 4 ? r : 4)));
 }
 
 /* Exponent-bit ops (exp2/log2 of f32_body.h and the samplers):

@@ -133,14 +133,14 @@ FACET_INLINE float facet_scalar_sqrt_fast(float x) { return x * facet_scalar_rsq
 FACET_INLINE float facet_scalar_exp2i(float k)
 {
     union { float f; uint32_t u; } b;
-    b.u = (uint32_t)((int32_t)k + 127) << 23;
+    b.u = FACET_CAST(uint32_t, FACET_CAST(int32_t, k) + 127) << 23;
     return b.f;
 }
 FACET_INLINE float facet_scalar_getexp(float x)
 {
     union { float f; uint32_t u; } b;
     b.f = x;
-    return (float)((int32_t)(b.u >> 23) - 127);
+    return FACET_CAST(float, FACET_CAST(int32_t, b.u >> 23) - 127);
 }
 FACET_INLINE float facet_scalar_getmant(float x)
 {

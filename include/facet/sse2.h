@@ -50,7 +50,7 @@ FACET_INLINE __m128 facet_sse2_rcp(__m128 x) { return _mm_div_ps(_mm_set1_ps(1.0
 FACET_INLINE __m128 facet_sse2_rsqrt(__m128 x) { return _mm_div_ps(_mm_set1_ps(1.0f), _mm_sqrt_ps(x)); }
 FACET_INLINE __m128 facet_sse2_sqr_err(__m128 a, __m128 p)
 {
-    __m128 hi = _mm_and_ps(a, _mm_castsi128_ps(_mm_set1_epi32((int)0xfffff000u)));
+    __m128 hi = _mm_and_ps(a, _mm_castsi128_ps(_mm_set1_epi32(FACET_CAST(int, 0xfffff000u))));
     __m128 lo = _mm_sub_ps(a, hi);
     __m128 t = _mm_sub_ps(_mm_mul_ps(hi, hi), p);
     t = _mm_add_ps(t, _mm_mul_ps(_mm_add_ps(hi, hi), lo));

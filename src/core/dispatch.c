@@ -154,7 +154,7 @@ const facet_fx_port *facet_fx_active_port(int fast)
  * every layout a set of strides ------------------------------------------- */
 static void rgb_run_(int fast, float *const out[3], ptrdiff_t os, const float *nol, const float *nov,
                      const float *lov, const float *alpha, ptrdiff_t as, const float *const f0[3],
-                     const float *const alb[3], ptrdiff_t ms, size_t n)
+                     const float *const alb[3], ptrdiff_t fs, ptrdiff_t abs_, size_t n)
 {
     facet_rgb_io io;
     int c;
@@ -166,7 +166,8 @@ static void rgb_run_(int fast, float *const out[3], ptrdiff_t os, const float *n
     io.out_stride = os;
     io.alpha = alpha;
     io.alpha_stride = as;
-    io.material_stride = ms;
+    io.f0_stride = fs;
+    io.albedo_stride = abs_;
     (fast ? port()->f32_fast : port()->f32)->brdf_hammon_rgb(&io, nol, nov, lov, n);
 }
 
@@ -176,7 +177,7 @@ static void rgb_run_(int fast, float *const out[3], ptrdiff_t os, const float *n
                                               const float *alpha, const float *const f0[3],        \
                                               const float *const albedo[3], size_t n)              \
     {                                                                                               \
-        rgb_run_(fast, out, 1, nol, nov, lov, alpha, 1, f0, albedo, 1, n);                          \
+        rgb_run_(fast, out, 1, nol, nov, lov, alpha, 1, f0, albedo, 1, 1, n);                          \
     }                                                                                               \
     void facet_brdf_hammon_rgb_##tier##_batch_interleaved(float *out, const float *nol,            \
                                                           const float *nov, const float *lov,      \
@@ -185,7 +186,7 @@ static void rgb_run_(int fast, float *const out[3], ptrdiff_t os, const float *n
     {                                                                                               \
         float *const o[3] = { out, out + 1, out + 2 };                                              \
         const float *const f[3] = { f0, f0 + 1, f0 + 2 }, *const a[3] = { albedo, albedo + 1, albedo + 2 }; \
-        rgb_run_(fast, o, 3, nol, nov, lov, alpha, 1, f, a, 3, n);                                  \
+        rgb_run_(fast, o, 3, nol, nov, lov, alpha, 1, f, a, 3, 3, n);                                  \
     }                                                                                               \
     void facet_brdf_hammon_rgb_##tier##_batch_material(float *const out[3], const float *nol,      \
                                                        const float *nov, const float *lov,         \
@@ -193,7 +194,7 @@ static void rgb_run_(int fast, float *const out[3], ptrdiff_t os, const float *n
     {                                                                                               \
         const float *const f[3] = { &m->f0[0], &m->f0[1], &m->f0[2] };                              \
         const float *const a[3] = { &m->albedo[0], &m->albedo[1], &m->albedo[2] };                  \
-        rgb_run_(fast, out, 1, nol, nov, lov, &m->alpha, 0, f, a, 0, n);                            \
+        rgb_run_(fast, out, 1, nol, nov, lov, &m->alpha, 0, f, a, 0, 0, n);                            \
     }                                                                                               \
     void facet_brdf_hammon_rgb_##tier##_batch_material_interleaved(float *out, const float *nol,   \
                                                                    const float *nov,               \
@@ -204,7 +205,24 @@ static void rgb_run_(int fast, float *const out[3], ptrdiff_t os, const float *n
         float *const o[3] = { out, out + 1, out + 2 };                                              \
         const float *const f[3] = { &m->f0[0], &m->f0[1], &m->f0[2] };                              \
         const float *const a[3] = { &m->albedo[0], &m->albedo[1], &m->albedo[2] };                  \
-        rgb_run_(fast, o, 3, nol, nov, lov, &m->alpha, 0, f, a, 0, n);                              \
+        rgb_run_(fast, o, 3, nol, nov, lov, &m->alpha, 0, f, a, 0, 0, n);                           \
+    }                                                                                               \
+    void facet_brdf_hammon_rgb_##tier##_batch_textured(float *const out[3], const float *nol,      \
+                                                       const float *nov, const float *lov,         \
+                                                       const facet_material_f32 *m,                \
+                                                       const float *const albedo[3], size_t n)     \
+    {                                                                                               \
+        const float *const f[3] = { &m->f0[0], &m->f0[1], &m->f0[2] };                              \
+        rgb_run_(fast, out, 1, nol, nov, lov, &m->alpha, 0, f, albedo, 0, 1, n);                    \
+    }                                                                                               \
+    void facet_brdf_hammon_rgb_##tier##_batch_textured_rough(float *const out[3], const float *nol,\
+                                                             const float *nov, const float *lov,   \
+                                                             const float *alpha,                   \
+                                                             const facet_material_f32 *m,          \
+                                                             const float *const albedo[3], size_t n) \
+    {                                                                                               \
+        const float *const f[3] = { &m->f0[0], &m->f0[1], &m->f0[2] };                              \
+        rgb_run_(fast, out, 1, nol, nov, lov, alpha, 1, f, albedo, 0, 1, n);                        \
     }
 RGB_ENTRIES_(f32, 0)
 RGB_ENTRIES_(f32_fast, 1)

@@ -14,14 +14,15 @@
 #define FACET_FX_PARAM_(q) const int32_t *x##q
 
 /* The streams of an RGB batch (src/f32/f32_rgb_batch_body.h): each a pointer and an
- * element stride, 1 = planar, 3 = interleaved, 0 = one uniform value. */
+ * element stride, 1 = planar, 3 = interleaved, 0 = one uniform value (f0 and
+ * albedo each: a textured material has per-pixel albedo and uniform f0). */
 typedef struct facet_rgb_io {
     float *out[3];
     ptrdiff_t out_stride;
     const float *alpha;
     ptrdiff_t alpha_stride;
     const float *f0[3], *albedo[3];
-    ptrdiff_t material_stride;
+    ptrdiff_t f0_stride, albedo_stride;
 } facet_rgb_io;
 
 /* f32: out[i] = facet_<name>_f32(x0[i], ...), any n, out may be an input */

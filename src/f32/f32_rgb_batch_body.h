@@ -14,7 +14,7 @@
 /* one material stream (f0 or albedo) of channel c: strided, or the value
  * broadcast before the loop (no arrays of vectors: RVV's are sizeless) */
 #define BATCH_RGB_MAT_(m, c, u) \
-    (io->material_stride ? BATCH_LOAD_S(io->m[c], io->material_stride, i, r) : (u))
+    (io->m##_stride ? BATCH_LOAD_S(io->m[c], io->m##_stride, i, r) : (u))
 
 static void BATCH_FN(brdf_hammon_rgb)(const facet_rgb_io *io, const float *nol, const float *nov,
                                       const float *lov, size_t count)

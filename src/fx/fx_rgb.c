@@ -8,14 +8,14 @@
 #include <stddef.h>
 #include "facet/fx.h"
 
-/* One loop per tier: channel c of sample i is p[c][s * i] (planar: the
- * channel arrays, s = 1; interleaved: the array from its c-th element,
- * s = 3). */
+/* Per tier: the planar loop gathers each sample's channels (three arrays:
+ * no contiguous copy a compiler could turn into memcpy); the interleaved
+ * batch calls the RGB kernel on its arrays in place. */
 #define RGB_FX_(tier)                                                                          \
     static void rgb_loop_##tier(uint64_t *const out[3], const int32_t *nol, const int32_t *nov, \
                                 const int32_t *lov, const int32_t *alpha,                       \
                                 const int32_t *const f0[3], const int32_t *const albedo[3],     \
-                                size_t s, size_t n)                                             \
+                                size_t n)                                                        \
     {                                                                                           \
         size_t i;                                                                               \
         for (i = 0; i < n; i++) {                                                               \
@@ -23,12 +23,12 @@
             uint64_t o[3];                                                                      \
             int c;                                                                              \
             for (c = 0; c < 3; c++) {                                                           \
-                f[c] = f0[c][s * i];                                                            \
-                a[c] = albedo[c][s * i];                                                        \
+                f[c] = f0[c][i];                                                                  \
+                a[c] = albedo[c][i];                                                              \
             }                                                                                   \
             facet_brdf_hammon_rgb_##tier(o, nol[i], nov[i], lov[i], alpha[i], f, a);            \
             for (c = 0; c < 3; c++)                                                             \
-                out[c][s * i] = o[c];                                                           \
+                out[c][i] = o[c];                                                                 \
         }                                                                                       \
     }                                                                                           \
     void facet_brdf_hammon_rgb_##tier##_batch(uint64_t *const out[3], const int32_t *nol,       \
@@ -36,7 +36,7 @@
                                               const int32_t *alpha, const int32_t *const f0[3], \
                                               const int32_t *const albedo[3], size_t n)         \
     {                                                                                           \
-        rgb_loop_##tier(out, nol, nov, lov, alpha, f0, albedo, 1, n);                           \
+        rgb_loop_##tier(out, nol, nov, lov, alpha, f0, albedo, n);                              \
     }                                                                                           \
     void facet_brdf_hammon_rgb_##tier##_batch_interleaved(uint64_t *out, const int32_t *nol,    \
                                                           const int32_t *nov,                   \
@@ -44,13 +44,11 @@
                                                           const int32_t *alpha,                 \
                                                           const int32_t *f0,                    \
                                                           const int32_t *albedo, size_t n)      \
-    {                                                                                           \
-        if (n) { /* no offset into a null array */                                              \
-            uint64_t *const o3[3] = { out, out + 1, out + 2 };                                  \
-            const int32_t *const f3[3] = { f0, f0 + 1, f0 + 2 };                                \
-            const int32_t *const a3[3] = { albedo, albedo + 1, albedo + 2 };                    \
-            rgb_loop_##tier(o3, nol, nov, lov, alpha, f3, a3, 3, n);                            \
-        }                                                                                       \
+    {   /* in place: no copies (copy loops of 3 became memcpy calls at -Os on M0); */           \
+        size_t i; /* out overlaps no input (facet/fx.h) */                                      \
+        for (i = 0; i < n; i++)                                                                 \
+            facet_brdf_hammon_rgb_##tier(out + 3 * i, nol[i], nov[i], lov[i], alpha[i], f0 + 3 * i, \
+                                         albedo + 3 * i);                                       \
     }
 RGB_FX_(fx)
 RGB_FX_(fx_fast)

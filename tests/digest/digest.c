@@ -6,7 +6,7 @@
  *
  * Covered: every kernel of the table in both f32 tiers through the batch API
  * on every port this CPU runs and the per-sample call; the oracle; the RGB
- * batches (planar, interleaved, material) and the RGB per-sample call and
+ * batches (planar, interleaved, material, textured) and the RGB per-sample call and
  * the shade entry; every sampler (batch on every port, per sample, oracle);
  * every fixed-point kernel in both tiers (per sample, and the batch on every
  * port), and the fixed-point RGB forms.  Inputs: the tests' generators
@@ -188,6 +188,17 @@ static void rgb(void)
                   : facet_brdf_hammon_rgb_f32_batch_material_interleaved)(oil, in_[0], in_[1], in_[2], &m, N);
             h = fnv(h, oil, sizeof oil);
             printf("rgb-batch brdf_hammon_rgb %s %s %016llx\n", tn, port_name[p], (unsigned long long)h);
+            /* the textured forms (their own line: the lines above predate them) */
+            h = H0;
+            (tier ? facet_brdf_hammon_rgb_f32_fast_batch_textured : facet_brdf_hammon_rgb_f32_batch_textured)(
+                o, in_[0], in_[1], in_[2], &m, alb, N);
+            for (c = 0; c < 3; c++)
+                h = fnv(h, out_[c], N * sizeof(float));
+            (tier ? facet_brdf_hammon_rgb_f32_fast_batch_textured_rough : facet_brdf_hammon_rgb_f32_batch_textured_rough)(
+                o, in_[0], in_[1], in_[2], in_[3], &m, alb, N);
+            for (c = 0; c < 3; c++)
+                h = fnv(h, out_[c], N * sizeof(float));
+            printf("rgb-textured brdf_hammon_rgb %s %s %016llx\n", tn, port_name[p], (unsigned long long)h);
         }
     }
     (void)il;

@@ -13,6 +13,7 @@
  *   - contracts stated in prose that the code relies on.
  * Run from the source tree's top.  Each failure names the file, the row
  * and both values. */
+#include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <math.h>
@@ -496,6 +497,65 @@ static void doc_contracts(void)
     CHECK(ok, "src/cli/README.md does not say: %s", m);
 }
 
+
+/* the parameter list after `open` in text (up to its ")"), comment
+ * leaders ("\n *") and runs of blanks as one space, `from` words as `to`
+ * ("V_" -> "V"); NULL if absent.  malloc'd */
+static char *param_list(const char *text, const char *open, const char *from, const char *to)
+{
+    const char *p = text ? strstr(text, open) : NULL, *e;
+    char *out, *o;
+    if (!p)
+        return NULL;
+    p += strlen(open);
+    e = strchr(p, ')');
+    if (!e)
+        return NULL;
+    out = malloc((size_t)(e - p) * 2 + 1);
+    if (!out)
+        return NULL;
+    for (o = out; p < e; p++) {
+        if (*p == '\n') {
+            while (p + 1 < e && (p[1] == ' ' || p[1] == '*'))
+                p++;
+            *o++ = ' ';
+        } else if (!strncmp(p, from, strlen(from)) && (p == text || !(isalnum((unsigned char)p[-1]) || p[-1] == '_')) &&
+                   !(isalnum((unsigned char)p[strlen(from)]) || p[strlen(from)] == '_')) {
+            strcpy(o, to);
+            o += strlen(to);
+            p += strlen(from) - 1;
+        } else {
+            *o++ = *p == '\t' ? ' ' : *p;
+        }
+        if (o - out >= 2 && o[-1] == ' ' && o[-2] == ' ')
+            o--;
+    }
+    *o = 0;
+    return out;
+}
+
+/* include/facet.h states the RGB port-header signature
+ * (facet_brdf_hammon_rgb_f32_<port>(V *out_r, ...)): it is the parameter
+ * list of the one body, include/facet/detail/f32_body.h's
+ * FACET_K(brdf_hammon_rgb), with its V_ written V (it once named arrays,
+ * which no longer compiled) */
+static void rgb_port_signature(void)
+{
+    char *body = slurp("include/facet/detail/f32_body.h");
+    char *doc = param_list(facet_h, "facet_brdf_hammon_rgb_f32_<port>(", "V", "V");
+    char *code = param_list(body, "FACET_K(brdf_hammon_rgb)(", "V_", "V");
+    CHECK(doc != NULL, "include/facet.h does not state facet_brdf_hammon_rgb_f32_<port>(...)");
+    CHECK(code != NULL, "include/facet/detail/f32_body.h has no FACET_K(brdf_hammon_rgb)(...)");
+    if (doc && code)
+        CHECK(!strcmp(doc, code), "include/facet.h states facet_brdf_hammon_rgb_f32_<port>(%s), the body has (%s)", doc,
+              code);
+    CHECK(strstr(facet_h, "facet_brdf_hammon_rgb_f32_fast_<port>(") != NULL,
+          "include/facet.h does not name facet_brdf_hammon_rgb_f32_fast_<port>");
+    free(doc);
+    free(code);
+    free(body);
+}
+
 int main(void)
 {
     th_name = "docs";
@@ -508,6 +568,8 @@ int main(void)
     which_one();
     header_bounds();
     doc_contracts();
+    rgb_port_signature();
     free(facet_h);
+    free(fx_h);
     return th_done();
 }

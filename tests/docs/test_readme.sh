@@ -101,5 +101,41 @@ $line" 2>&1) && [ "$(printf '%s\n' "$out" | tail -n 1)" = "$want" ]; then
     case $want in 0.*) pass=$((pass + 1)) ;; *) echo "FAIL readme: installed facet eval printed \"$want\""; fail=$((fail + 1)) ;; esac
     rm -rf "$qs"
 fi
+# ---- the firmware objects ----------------------------------------------------
+# The block after "<!-- firmware objects: fw -->" (src/fx/README.md), run as written in a copy
+# of the tree's sources: every target's objects land in build/fw/<target>/
+# (one per `make fx-sources` file) and none in the source tree (the block
+# once ran `gcc -c $FX`, which writes the objects into the current
+# directory, the tree's top).  Default build only; a missing cross
+# compiler skips it.
+if [ "$build" = build ]; then
+    awk '$0 == "<!-- firmware objects: fw -->" { want = 1; next }
+         want && /^```/ && !inside { inside = 1; next }
+         inside && /^```$/ { exit }
+         inside { print }' src/fx/README.md > "$dir/fw.block"
+    if [ ! -s "$dir/fw.block" ]; then
+        echo "FAIL readme: no firmware objects block"; fail=$((fail + 1))
+    elif ! command -v arm-none-eabi-gcc > /dev/null 2>&1 || ! command -v riscv64-linux-gnu-gcc > /dev/null 2>&1; then
+        echo "SKIP readme: the firmware objects block needs arm-none-eabi-gcc and riscv64-linux-gnu-gcc"; skip=$((skip + 1))
+    else
+        fw=$(mktemp -d)
+        cp -R Makefile include src tests bench ports "$fw/" 2> /dev/null
+        find "$fw" -name '*.o' -exec rm -f {} +
+        nsrc=$(make -s fx-sources | wc -w)
+        block_file=$(cd "$dir" && pwd)/fw.block
+        if (cd "$fw" && sh -e "$block_file") > "$dir/fw.log" 2>&1; then
+            stray=$(cd "$fw" && find . -name '*.o' ! -path './build/fw/*' | tr '\n' ' ')
+            bad_dirs=
+            for t in m0 m4 m33 rv32; do
+                [ "$(ls "$fw/build/fw/$t"/*.o 2> /dev/null | wc -l)" -eq "$nsrc" ] || bad_dirs="$bad_dirs $t"
+            done
+            if [ -z "$stray" ] && [ -z "$bad_dirs" ]; then pass=$((pass + 1))
+            else echo "FAIL readme: the firmware objects block: objects outside build/fw: $stray; build/fw dirs without $nsrc objects:$bad_dirs"; fail=$((fail + 1)); fi
+        else
+            echo "FAIL readme: the firmware objects block fails:"; tail -n 10 "$dir/fw.log"; fail=$((fail + 1))
+        fi
+        rm -rf "$fw"
+    fi
+fi
 echo "readme: $pass passed, $fail failed, $skip skipped"
 [ $fail -eq 0 ]

@@ -1,6 +1,7 @@
 /* test_f32_rgb.c - the RGB batches of facet.h on every port this CPU runs,
  * both tiers, every layout (planar, interleaved, uniform material planar and
- * interleaved): each channel bit-equal to the port's brdf_hammon batch at
+ * interleaved, textured: uniform alpha and f0 with per-sample albedo, and
+ * the same with per-sample alpha): each channel bit-equal to the port's brdf_hammon batch at
  * that channel's f0 and albedo (and, for the material forms, the material's
  * alpha), at every n mod the lane count (0 .. 3W + 1, and long runs), from
  * unaligned pointers, with an output that is the very same array as an
@@ -33,28 +34,30 @@ typedef void (*mono_fn)(float *, const float *, const float *, const float *, co
 
 static float nol[MAXN], nov[MAXN], lov[MAXN], alpha[MAXN], f0p[3][MAXN], albp[3][MAXN];
 
-/* the reference: the port's mono batch per channel */
-static void reference(int fast, float ref[3][MAXN], size_t n, const facet_material_f32 *m)
+/* which streams of a layout are the material's uniform values rather
+ * than per-sample arrays: bit 0 alpha, bit 1 f0, bit 2 albedo */
+static int uniform_of(int lay) { return lay == 2 || lay == 3 ? 7 : lay == 4 ? 3 : lay == 5 ? 2 : 0; }
+
+/* the reference: the port's mono batch per channel, with the uniform
+ * streams (uniform_of) m's values */
+static void reference(int fast, float ref[3][MAXN], size_t n, const facet_material_f32 *m, int uni)
 {
     mono_fn f = fast ? facet_brdf_hammon_f32_fast_batch : facet_brdf_hammon_f32_batch;
     static float ua[MAXN], uf[MAXN], ub[MAXN];
     size_t i;
     int c;
     for (c = 0; c < 3; c++) {
-        if (m) {
-            for (i = 0; i < n; i++) {
-                ua[i] = m->alpha;
-                uf[i] = m->f0[c];
-                ub[i] = m->albedo[c];
-            }
-            f(ref[c], nol, nov, lov, ua, uf, ub, n);
-        } else
-            f(ref[c], nol, nov, lov, alpha, f0p[c], albp[c], n);
+        for (i = 0; i < n; i++) {
+            ua[i] = uni & 1 ? m->alpha : alpha[i];
+            uf[i] = uni & 2 ? m->f0[c] : f0p[c][i];
+            ub[i] = uni & 4 ? m->albedo[c] : albp[c][i];
+        }
+        f(ref[c], nol, nov, lov, ua, uf, ub, n);
     }
 }
 
 /* runs layout `lay` (0 planar, 1 interleaved, 2 material planar, 3 material
- * interleaved) on n samples, inputs copied to exact-size buffers at float
+ * interleaved, 4 textured, 5 textured with per-sample roughness) on n samples, inputs copied to exact-size buffers at float
  * offset `mis`; out[c][i] back */
 static void run(int fast, int lay, size_t n, int mis, const facet_material_f32 *m, float out[3][MAXN])
 {
@@ -92,13 +95,21 @@ static void run(int fast, int lay, size_t n, int mis, const facet_material_f32 *
         (fast ? facet_brdf_hammon_rgb_f32_fast_batch_material : facet_brdf_hammon_rgb_f32_batch_material)(
             o, b[0], b[1], b[2], m, n);
         break;
-    default:
+    case 3:
         (fast ? facet_brdf_hammon_rgb_f32_fast_batch_material_interleaved
               : facet_brdf_hammon_rgb_f32_batch_material_interleaved)(oi, b[0], b[1], b[2], m, n);
+        break;
+    case 4:
+        (fast ? facet_brdf_hammon_rgb_f32_fast_batch_textured : facet_brdf_hammon_rgb_f32_batch_textured)(
+            o, b[0], b[1], b[2], m, ap, n);
+        break;
+    default:
+        (fast ? facet_brdf_hammon_rgb_f32_fast_batch_textured_rough
+              : facet_brdf_hammon_rgb_f32_batch_textured_rough)(o, b[0], b[1], b[2], b[3], m, ap, n);
     }
     for (c = 0; c < 3; c++)
         for (i = 0; i < n; i++)
-            out[c][i] = (lay & 1) ? oi[3 * i + c] : o[c][i];
+            out[c][i] = (lay == 1 || lay == 3) ? oi[3 * i + c] : o[c][i];
     for (c = 0; c < 4; c++)
         free(b[c] - mis);
     for (c = 0; c < 3; c++)
@@ -126,12 +137,12 @@ static void test_port(const char *pn, int lanes, int fast)
     static float ref[3][MAXN], out[3][MAXN];
     smp_rng rng = { 4242 };
     facet_material_f32 m = { 0.0625f, { 0.04f, 0.5f, 0.95f }, { 0.8f, 0.2f, 0.0f } };
-    int lay, bad[4] = { 0, 0, 0, 0 }, bad_alias = 0, bad_nan = 0, c;
+    int lay, bad[6] = { 0, 0, 0, 0, 0, 0 }, bad_alias = 0, bad_nan = 0, c;
     size_t n, i;
     fill(&rng);
-    for (lay = 0; lay < 4; lay++) {
+    for (lay = 0; lay < 6; lay++) {
         const facet_material_f32 *mm = lay >= 2 ? &m : NULL;
-        reference(fast, ref, MAXN, mm);
+        reference(fast, ref, MAXN, &m, uniform_of(lay));
         /* every n mod W, from 0 to 3W + 1, and long runs; misaligned */
         for (n = 0; n <= (size_t)(3 * lanes + 1) || n == 3 * (size_t)lanes + 2; n++) {
             run(fast, lay, n, (int)(n % 4), mm, out);
@@ -150,9 +161,12 @@ static void test_port(const char *pn, int lanes, int fast)
     CHECK(bad[1] == 0, "%s%s: interleaved RGB batch differs (%d)", pn, fast ? "/fast" : "", bad[1]);
     CHECK(bad[2] == 0, "%s%s: material RGB batch differs (%d)", pn, fast ? "/fast" : "", bad[2]);
     CHECK(bad[3] == 0, "%s%s: material interleaved RGB batch differs (%d)", pn, fast ? "/fast" : "", bad[3]);
+    CHECK(bad[4] == 0, "%s%s: textured RGB batch (uniform alpha, f0) differs (%d)", pn, fast ? "/fast" : "", bad[4]);
+    CHECK(bad[5] == 0, "%s%s: textured RGB batch with per-sample roughness (uniform f0) differs (%d)", pn,
+          fast ? "/fast" : "", bad[5]);
 
     /* aliasing: planar out[0] is nol, out[2] is lov; interleaved out is f0 */
-    reference(fast, ref, 77, NULL);
+    reference(fast, ref, 77, &m, 0);
     {
         float a_nl[77], a_nv[77], a_lv[77], a_al[77], o1[77], fi[3 * 77], ai[3 * 77];
         float *o[3];
@@ -207,6 +221,17 @@ static void test_port(const char *pn, int lanes, int fast)
             if (zero && !same(out[c][i], 0.0f))
                 bad_nan++;
         }
+    /* the textured forms: alpha uniform (4) or per sample (5), f0 uniform,
+     * albedo per sample */
+    for (lay = 4; lay < 6; lay++) {
+        run(fast, lay, n, 0, &m, out);
+        for (i = 0; i < n; i++)
+            for (c = 0; c < 3; c++) {
+                int s = (int)(i % 10), zero = s < (lay == 4 ? 3 : 4) || s - 7 == c;
+                if (zero ? !same(out[c][i], 0.0f) : !(out[c][i] >= 0.0f && out[c][i] <= FLT_MAX))
+                    bad_nan++;
+            }
+    }
     m.alpha = nan_at(2);
     run(fast, 2, n, 0, &m, out);
     for (i = 0; i < n; i++)

@@ -6,7 +6,10 @@
 # image at all; keeps a screenshot of the page's top 1280 x 4000 px at
 # REPORT_DIR/../report-screenshot.png (under build/).  It proves it can
 # fail: the same check on copies with one image's data removed (an <img>,
-# an SVG <image>) and on a copy with a failing script must fail.  Called by
+# an SVG <image>) and on a copy with a failing script must fail.  The
+# interactive chooser is driven by tests/report/chooser_check.js (its
+# answers against REPORT_DIR/choose.tsv), which must fail on a copy whose
+# chooser answers wrongly and on one without the chooser's script.  Called by
 # tests/suites/60-bench.sh on its quick report; skipped, with the reason,
 # when chromium is not installed.
 #
@@ -63,12 +66,31 @@ must_fail() {
     esac
 }
 cp "$rep/index.html" "$work/report.html"
-# relative links (none today: PNGs are data URIs) resolve as in the report
-for f in "$abs_rep"/*.png; do [ -e "$f" ] && ln -sf "$f" "$work/"; done
+# relative links (none today: PNGs are data URIs) resolve as in the report;
+# choose.tsv: the chooser's data, which tests/report/chooser_check.js reads
+for f in "$abs_rep"/*.png "$abs_rep"/choose.tsv; do [ -e "$f" ] && ln -sf "$f" "$work/"; done
 shot=$top/report-screenshot.png
 rm -f "$shot"
-if v=$(check "$work/report.html" --screenshot "$shot"); then ok; else bad "$rep/index.html in $browser: $v"; fi
+chooser="--script tests/report/chooser_check.js"
+# shellcheck disable=SC2086
+if v=$(check "$work/report.html" --screenshot "$shot" $chooser); then ok; else bad "$rep/index.html in $browser: $v"; fi
 echo "report-browser: $rep/index.html: $v"
+grep '^chooser: ' "$work/verdict" | sed 's/^/report-browser: /'
+# the interactive chooser must fail its check on a page whose rule is
+# reversed (the most expensive candidate that meets the need) and on one
+# without its script (the static tables alone)
+sed 's|a\.cost - b\.cost /\*facet-rule\*/|b.cost - a.cost /*facet-rule*/|' "$rep/index.html" > "$work/chooser-wrong.html"
+sed '/^(function () {$/,/^})();$/d' "$rep/index.html" > "$work/chooser-no-script.html"
+for c in wrong no-script; do
+    if cmp -s "$rep/index.html" "$work/chooser-$c.html"; then bad "no chooser script to break ($c)"; continue; fi
+    # shellcheck disable=SC2086
+    v=$(check "$work/chooser-$c.html" $chooser)
+    case $? in
+    1) ok ;;
+    0) bad "the chooser check passes on a page with the chooser $c: $v" ;;
+    *) bad "chooser $c: no verdict ($v)" ;;
+    esac
+done
 # the screenshot, of the report itself: the top 1280 x 4000 px
 if [ -s "$shot" ] && [ "$(od -An -tx1 -N8 "$shot" | tr -d ' ')" = 89504e470d0a1a0a ]; then ok
 else bad "no screenshot"; fi

@@ -48,6 +48,21 @@ for h in $headers; do
     if have tcc; then try tcc $h tcc -Wall -Werror; fi
     if have pcc; then try pcc $h pcc; fi
 done
+# C++ users build with -Wold-style-cast: every header is clean under it (a
+# conversion in a header is FACET_CAST, facet/common.h), on x86 with g++
+# and, for the Arm port headers, with arm-none-eabi-g++ (Helium on M55,
+# NEON on an A53 in A32) where it is installed
+for h in $headers; do
+    f=$(isa $h)
+    [ "$f" = skip ] && continue
+    if have g++; then try c++17-old-style-cast $h g++ -std=c++17 -Wall -Wextra -Wold-style-cast -Werror $f; fi
+done
+if have arm-none-eabi-g++; then
+    try c++17-old-style-cast facet/helium.h arm-none-eabi-g++ -std=c++17 -Wall -Wextra -Wold-style-cast -Werror \
+        -mcpu=cortex-m55 -mfloat-abi=hard -mthumb
+    try c++17-old-style-cast facet/neon.h arm-none-eabi-g++ -std=c++17 -Wall -Wextra -Wold-style-cast -Werror \
+        -mcpu=cortex-a53 -mfpu=neon-fp-armv8 -mfloat-abi=hard -marm
+fi
 for c in clang g++ tcc pcc; do
     if ! have $c; then
         echo "SKIP headers: $c not installed (apt-get install $c)"

@@ -8,6 +8,10 @@
 #   fx-cortex-m-calls  the M0/M4 kernel objects (precise and fx_fast) call no helper (no soft
 #                  float, no __aeabi_lmul/llsl/uidiv): nm -u lists only fx's own
 #   fx-rv32        freestanding RV32IMC link with -nostdlib: no undefined symbol
+#   fx-fw-undefined  every firmware source compiled alone for M0, M4, M33 and
+#                  RV32 at -Os and -O2 needs no symbol the sources do not
+#                  define (no memcpy, no libgcc or libm call); a memcpy probe
+#                  must be reported
 #   fx-firmware    the README's firmware link (`make fx-sources`, -Os,
 #                  --gc-sections, newlib) on M0 and M4, both tiers' batch:
 #                  runs on qemu (batch == scalar kernel), holds no symbol of
@@ -118,3 +122,33 @@ else
     echo "FAIL fx-rv32: freestanding RV32IMC link has undefined symbols"
     echo "fx-rv32: 0 passed, 1 failed, 0 skipped"
 fi
+
+# fx-fw-undefined: every firmware source (`make fx-sources`) compiled on its
+# own for Cortex-M0, M4, M33 (arm-none-eabi-gcc) and RV32IMC (freestanding),
+# at -Os (the README's firmware flag) and -O2, leaves no symbol undefined
+# that the sources do not define themselves: no libc (memcpy), libgcc or
+# libm call (tests/fx/fw_undef.sh).  It can fail: a probe that calls memcpy
+# must be reported on each target.
+fx_src=$($MAKE -s fx-sources)
+p=0 f=0 s=0
+for t in cortex-m0 cortex-m4 cortex-m33 rv32; do
+    case $t in
+    rv32) cc="riscv64-linux-gnu-gcc -march=rv32imc -mabi=ilp32 -ffreestanding"; nm=riscv64-linux-gnu-nm ;;
+    *) cc="arm-none-eabi-gcc -mcpu=$t -mthumb"; nm=arm-none-eabi-nm ;;
+    esac
+    if ! have "${cc%% *}" || ! have $nm; then
+        echo "SKIP fx-fw-undefined: ${cc%% *} missing for $t"; s=$((s + 1)); continue
+    fi
+    for o in -Os -O2; do
+        # shellcheck disable=SC2086
+        if u=$(sh tests/fx/fw_undef.sh $B/fx/undef/$t$o $nm $cc $o -std=c99 -Wall -Wextra -Werror -Iinclude -- $fx_src 2>&1)
+        then p=$((p + 1)); else f=$((f + 1)); echo "FAIL fx-fw-undefined: $t $o: $(echo $u)"; fi
+    done
+    # shellcheck disable=SC2086
+    u=$(sh tests/fx/fw_undef.sh $B/fx/undef/$t-probe $nm $cc -Os -std=c99 -Iinclude -- $fx_src tests/fx/fw_undef_probe.c 2>&1)
+    case $?:$u in
+    1:*memcpy*) p=$((p + 1)) ;;
+    *) f=$((f + 1)); echo "FAIL fx-fw-undefined: $t: the memcpy probe is not reported ($u)" ;;
+    esac
+done
+echo "fx-fw-undefined: $p passed, $f failed, $s skipped"

@@ -140,7 +140,11 @@ cp $r/report.md $r/report.md.full
 # fixture with NEON costed and Helium skipped, so both chooser paths show
 { echo "# format port kernel measure value"
   echo "f32 neon brdf_hammon mca-cortex-a57 44.50"; echo "f32_fast neon brdf_hammon mca-cortex-a57 43.25"
-  echo "fx_fast neon brdf_hammon mca-cortex-a57 99.75"; echo "f32 neon brdf_hammon qemu-insn 44.9"; } > $r/arm_vec.tsv
+  echo "fx_fast neon brdf_hammon mca-cortex-a57 99.75"; echo "f32 neon brdf_hammon qemu-insn 44.9"
+  # smith_vis: f32_fast the cheapest, so the chooser check has an f32_fast
+  # answer whatever this machine's timings are
+  echo "f32 neon smith_vis mca-cortex-a57 9.50"; echo "f32_fast neon smith_vis mca-cortex-a57 7.25"
+  echo "fx_fast neon smith_vis mca-cortex-a57 21.00"; } > $r/arm_vec.tsv
 printf 'neon ok llvm-mca fixture\nhelium skipped: a 60-bench fixture reason\n' > $r/arm_vec.status
 # the RTL port's cost (what make rtl leaves in ports/rtl/cost.tsv): a
 # fixture with one module placed on an UP5K and one that fits no iCE40, so
@@ -148,6 +152,14 @@ printf 'neon ok llvm-mca fixture\nhelium skipped: a 60-bench fixture reason\n' >
 { printf 'module\tlatency\tcells\tgate_equivalents\tdepth\tluts\tdsps\tfmax_mhz\tdevice\tlcs\tebr\tffs\tluts_no_dsp\n'
   printf 'fresnel_schlick\t12\t11790\t21174\t38\t792\t8\t25.59\tup5k\t1687\t0\t896\t-\n'
   printf 'brdf_hammon\t49\t90001\t170002\t40\t9001\t40\t-\tnone\t-\t9\t5001\t-\n'; } > $r/rtl_cost.tsv
+# Cortex-M figures (what bench/cortexm/cortexm.sh leaves in arm.tsv; these
+# from a full run) for the visibility kernels, so that the interactive
+# chooser has targets whose answer is fixed point (tests/report/chooser_check.js)
+awk '{ split("fx-m0cyc fxfast-m0cyc f32soft-m0cyc fx-mca fxfast-mca f32soft-mca f32fpu-mca", w, " ")
+       for (i = 1; i <= 7; i++) print w[i], $1, (i <= 3 ? "cortex-m0" : "cortex-m4"), $(i + 1), "fixture" }' > $r/arm.tsv <<'EOF'
+smith_vis 2141.8 461.0 9115.5 367.3 126.0 2851.5 144.0
+smith_vis_fit 1845.8 384.5 4249.8 546.5 133.1 1521.0 98.0
+EOF
 if build/facet-bench report $r --quick > $r.log 2>&1; then ok; else bad "facet-bench report --quick failed (log $r.log)"; fi
 n=$(grep -c '^<h1>Benchmarks (bench/)' $r/index.html)
 [ "$n" -eq 1 ] && ok || bad "index.html has $n Benchmarks sections, want 1"
@@ -252,9 +264,9 @@ build/facet-bench report --facts $(printf '%s\n' $kernels | sed 1d) > /dev/null 
 # (a measurement the set does not record would differ: timings vary)
 r2=build/bench-suite-replay
 rm -rf $r2 && mkdir -p $r2
-cp $r/accuracy.md $r/arm_vec.tsv $r/arm_vec.status $r/rtl_cost.tsv $r2/
+cp $r/accuracy.md $r/arm_vec.tsv $r/arm_vec.status $r/rtl_cost.tsv $r/arm.tsv $r2/
 if build/facet-bench report $r2 --replay $r/measured.tsv > $r2.log 2>&1; then ok; else bad "facet-bench report --replay failed (log $r2.log)"; fi
-for f in bench.md report.md index.html sampling.svg image_variants_model.png raster_oracle.png; do
+for f in bench.md report.md index.html choose.tsv sampling.svg image_variants_model.png raster_oracle.png; do
     cmp -s $r/$f $r2/$f && ok || bad "the replayed report's $f differs from the recorded run's"
 done
 # the report in a browser: no missing image, no script error; screenshot
