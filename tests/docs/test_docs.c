@@ -570,6 +570,5 @@ int main(void)
     doc_contracts();
     rgb_port_signature();
     free(facet_h);
-    free(fx_h);
     return th_done();
 }
