@@ -104,7 +104,10 @@ uint32_t facet_fx_isqrt64_rem(uint64_t x, uint64_t *rem)
     (void)t;
     (void)gg;
     (void)p;
-    g = fxp_sqrtrem64n_udiv((uint32_t)(xn >> 32), (uint32_t)xn, rem, RSQRT_SEED) >> (s / 2);
+    /* two statements: pcc 1.2 drops bits when the call and the shift are
+     * one expression (tests/suites/26-compilers.sh) */
+    g = fxp_sqrtrem64n_udiv((uint32_t)(xn >> 32), (uint32_t)xn, rem, RSQRT_SEED);
+    g >>= s / 2;
     if (s)
         *rem = x - fxp_mul64(g, g);
     return g;

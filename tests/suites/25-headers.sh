@@ -3,8 +3,9 @@
 # library: gcc and clang as strict C99 (-pedantic -Werror), gcc with
 # __GNUC__ undefined (the branch a non-GNU compiler takes; the generic
 # headers: the ISA headers' intrinsics need a GNU compiler's headers), tcc
-# and pcc (non-GNU C compilers), and g++ as C++17 (-pedantic -Wall -Wextra
-# -Werror).  The port headers that need ISA flags get them (x86 only; the
+# and pcc (non-GNU C compilers), and g++ as C++11 and C++17 (-pedantic
+# -Wall -Wextra -Werror; C++11 has no hex-float literals, so the headers
+# spell their powers of two as exact decimals).  The port headers that need ISA flags get them (x86 only; the
 # ARM and RISC-V headers are compiled by their suites).  A compiler that is
 # missing is named and its checks skipped.
 pass=0 fail=0 skip=0
@@ -42,7 +43,10 @@ for h in $headers; do
     try gcc-c99 $h gcc -std=c99 -pedantic -Wall -Wextra -Werror $f
     [ -z "$f" ] && try gcc-no-gnuc $h gcc -std=c99 -U__GNUC__ -Wall -Wextra -Werror
     if have clang; then try clang-c99 $h clang -std=c99 -pedantic -Wall -Wextra -Werror $f; fi
-    if have g++; then try c++17 $h g++ -std=c++17 -pedantic -Wall -Wextra -Werror $f; fi
+    if have g++; then
+        try c++11 $h g++ -std=c++11 -pedantic -Wall -Wextra -Werror $f
+        try c++17 $h g++ -std=c++17 -pedantic -Wall -Wextra -Werror $f
+    fi
     # tcc and pcc take no ISA flags: the generic headers only
     [ -n "$f" ] && continue
     if have tcc; then try tcc $h tcc -Wall -Werror; fi

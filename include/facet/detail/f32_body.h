@@ -355,17 +355,19 @@ FACET_INLINE V_ FACET_K(fresnel_schlick_f90)(V_ f0, V_ f90, V_ voh)
 FACET_INLINE V_ FACET_K(fresnel_cook_torrance)(V_ f0, V_ voh)
 {
     V_ f = X_UNIT_(f0), c = X_UNIT_(voh);
-    V_ fs = MUL_(f, C_(0x1p64f));
-    V_ s = MUL_(MUL_(fs, RSQRT_X5_(MAX_(fs, C_(0x1p-100f)))), C_(0x1p-32f));
+    /* 2^64, 2^-100, 2^-32 (and below 2^-120, 2^-126) as exact decimals: hex
+     * floats are C99 but not C++ before C++17 (the headers are C++11 too) */
+    V_ fs = MUL_(f, C_(18446744073709551616.0f));
+    V_ s = MUL_(MUL_(fs, RSQRT_X5_(MAX_(fs, C_(7.88860905221011805411728565283e-31f)))), C_(2.3283064365386962890625e-10f));
     V_ s1 = ADD_(C_(1.0f), s);
     V_ k = MUL_(MUL_(C_(4.0f), s), MUL_(s1, s1));
     V_ u = SUB_(C_(1.0f), f);
     V_ cu = MUL_(c, u);
     V_ g2 = FMA_(cu, cu, k);
-    V_ p = ADD_(MUL_(g2, RSQRT_X5_(MAX_(g2, C_(0x1p-100f)))), cu);
+    V_ p = ADD_(MUL_(g2, RSQRT_X5_(MAX_(g2, C_(7.88860905221011805411728565283e-31f)))), cu);
     V_ p2 = MUL_(p, p);
     V_ e = FMA_(k, c, MUL_(u, p));
-    V_ rw = RCP_X5_(MAX_(MUL_(p2, e), C_(0x1p-120f)));
+    V_ rw = RCP_X5_(MAX_(MUL_(p2, e), C_(7.52316384526264005099991383822e-37f)));
     V_ er = MUL_(e, rw);                                   /* 1 / P^2 */
     V_ s2 = MUL_(s1, s1);
     V_ r2 = MUL_(MUL_(MUL_(MUL_(C_(16.0f), f), MUL_(s2, s2)), er), er);
@@ -664,7 +666,7 @@ FACET_INLINE V_ FACET_K(smith_g1_gtr)(V_ nov, V_ alpha, V_ gamma)
      * y (d0 d1 ...), which underflow for a tiny N.V (the y go as N.V):
      * they are formed on the differences scaled by sc = 2^-floor(log2 N.V)
      * (exact), and the slope term is scaled back by 1 / sc. */
-    ex = FACET_OP(getexp)(MAX_(n, C_(0x1p-126f)));
+    ex = FACET_OP(getexp)(MAX_(n, C_(1.17549435082228750796873653722e-38f)));
     sc = FACET_OP(exp2i)(SUB_(C_(0.0f), ex));
     d0 = MUL_(SUB_(y1, y0), sc);
     d1 = MUL_(SUB_(y2, y1), sc);
