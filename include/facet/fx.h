@@ -54,6 +54,26 @@
  * with that instead (Cortex-M3/M4/M7/M33: two 32-bit UDIV digits; 64-bit
  * hosts: the native division) with the same bits (src/fx/fx_prims.h fxp_div64).
  *
+ * Stack (bytes; every call's worst case: its own frame from -fstack-usage
+ * plus the deepest chain of its callees in gcc's call graph; the sources
+ * have no recursion, no dynamic frame, no indirect call and call nothing
+ * outside themselves), arm-none-eabi-gcc 12.2.1 -mthumb on the firmware
+ * sources (make fx-sources); the maxima over every precise kernel
+ * (facet_*_fx), every fast kernel (facet_*_fx_fast) and every batch and
+ * RGB call (both tiers), held exactly by tests/suites/27-stack.sh, which
+ * prints each call's figure:
+ *                          fx  fx_fast  batch/RGB
+ *   cortex-m0 -O2          492      160        724
+ *   cortex-m0 -Os          600      120        696
+ *   cortex-m4 -O2          240       88        320
+ *   cortex-m4 -Os          488       80        640
+ *   cortex-m33 -O2         260       88        332
+ *   cortex-m33 -Os         488       80        640
+ * The deepest call is brdf_hammon's (its RGB batch above all); a kernel's
+ * own figure is at most its tier's column.  FACET_FX_STACK_BYTES: no call
+ * needs more on any of these builds. */
+#define FACET_FX_STACK_BYTES 724
+/*
  * How this header is organised: as facet.h, one block per kernel family
  * (the geometry identities, Fresnel, D, shadowing and visibility, diffuse,
  * the whole BRDF), then the shared primitives and the kernel table.  A
