@@ -63,7 +63,7 @@
  * RGB call (both tiers), held exactly by tests/suites/27-stack.sh, which
  * prints each call's figure:
  *                          fx  fx_fast  batch/RGB
- *   cortex-m0 -O2          492      160        724
+ *   cortex-m0 -O2          492      152        724
  *   cortex-m0 -Os          600      120        696
  *   cortex-m4 -O2          240       88        320
  *   cortex-m4 -Os          488       80        640
