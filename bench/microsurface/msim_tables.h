@@ -7,13 +7,13 @@
 #include "msim_grid.h"
 
 /* the parts each material's table keeps, in column order */
-static const int msim_table_cols[MSIM_NMAT][10] = {
+static const int msim_table_cols[MSIM_NMAT][12] = {
     {MSIM_TOTAL, MSIM_SINGLE, MSIM_MULTI, MSIM_SPEC1, MSIM_SPECM, MSIM_D100, MSIM_D075, MSIM_D050,
-     MSIM_D025, MSIM_DIFF1},
+     MSIM_D025, MSIM_DIFF1, MSIM_DIFF1M, MSIM_K2},
     {MSIM_TOTAL, MSIM_SINGLE, MSIM_MULTI, MSIM_D075, MSIM_D050, MSIM_D025},
     {MSIM_TOTAL, MSIM_SINGLE, MSIM_MULTI},
 };
-static const int msim_table_ncols[MSIM_NMAT] = {10, 6, 3};
+static const int msim_table_ncols[MSIM_NMAT] = {12, 6, 3};
 
 typedef struct {
     double alpha, nl, nv, phi, lv;
