@@ -510,7 +510,12 @@ static int walk(const ctx *c, msim_rng *rng, double *nee_row, double *alb_row, d
         }
         n++;
         w = v3(-d.x, -d.y, -d.z);
-        m = msim_sample_vndf(w, alpha, msim_uniform(rng), msim_uniform(rng));
+        {
+            /* drawn in sequence (the order of a call's arguments is unspecified:
+             * gcc and clang differ): u2 first, the order these tables were made with */
+            double u2 = msim_uniform(rng), u1 = msim_uniform(rng);
+            m = msim_sample_vndf(w, alpha, u1, u2);
+        }
         wm = dot(w, m);
         if (wm < 0.0)
             wm = 0.0;

@@ -420,26 +420,38 @@ static double model_pt(const double *p, const fpt *q)
     return q->rho * (single + q->rho * p[4] * q->a);
 }
 
-static void fit_errors(const double *p, double *mx, double *mean)
+/* max and mean |e| over the whole grid ([0], [1]) and over N.L, N.V >= 0.2 ([2], [3]) */
+static void fit_errors(const double *p, double *err)
 {
-    int i;
-    double m = 0, s = 0;
+    int i, n1 = 0;
+    double m = 0, s = 0, m1 = 0, s1 = 0;
     for (i = 0; i < npts; i++) {
         double e = fabs(model_pt(p, &pts[i]) / pts[i].ref - 1.0);
         if (e > m)
             m = e;
         s += e;
+        if (pts[i].nl >= COS_D1 && pts[i].nv >= COS_D1) {
+            if (e > m1)
+                m1 = e;
+            s1 += e;
+            n1++;
+        }
     }
-    *mx = m;
-    *mean = s / npts;
+    err[0] = m;
+    err[1] = s / npts;
+    err[2] = m1;
+    err[3] = s1 / n1;
 }
 
-static int fit_mode; /* 0: minimise the max, 1: the mean */
+#define NFIT 3
+static const char *const fit_name[NFIT] = {"min max", "min mean", "min max, N.L, N.V >= 0.2"};
+static const int fit_obj[NFIT] = {0, 1, 2}; /* which of fit_errors' figures each minimises */
+static int fit_mode;
 static double objective(const double *p)
 {
-    double mx, mean;
-    fit_errors(p, &mx, &mean);
-    return fit_mode ? mean : mx;
+    double err[4];
+    fit_errors(p, err);
+    return err[fit_obj[fit_mode]];
 }
 
 /* Nelder-Mead over n <= 8 parameters of f, restarted from its best point
@@ -575,7 +587,7 @@ int msim_cmd_refit(const char *dir)
     char path[1024];
     FILE *md;
     int i, ir, j;
-    double pmax[NP], pmean[NP], e[3][2];
+    double pf[NFIT][NP], e[NFIT + 1][4];
     if (load_refs(dir))
         return 2;
     pts = calloc((size_t)tab[REF_HAMMON].n * NRHO, sizeof *pts);
@@ -609,15 +621,13 @@ int msim_cmd_refit(const char *dir)
             return 2;
         }
     }
-    memcpy(pmax, hammon_pub, sizeof pmax);
-    memcpy(pmean, hammon_pub, sizeof pmean);
-    fit_mode = 0;
-    nelder_mead(objective, pmax, NP, 0.2);
-    fit_mode = 1;
-    nelder_mead(objective, pmean, NP, 0.2);
-    fit_errors(hammon_pub, &e[0][0], &e[0][1]);
-    fit_errors(pmax, &e[1][0], &e[1][1]);
-    fit_errors(pmean, &e[2][0], &e[2][1]);
+    for (j = 0; j < NFIT; j++) {
+        memcpy(pf[j], hammon_pub, sizeof pf[j]);
+        fit_mode = j;
+        nelder_mead(objective, pf[j], NP, 0.2);
+        fit_errors(pf[j], e[j + 1]);
+    }
+    fit_errors(hammon_pub, e[0]);
     snprintf(path, sizeof path, "%s/hammon_refit.md", dir);
     md = fopen(path, "w");
     if (!md)
@@ -630,34 +640,53 @@ int msim_cmd_refit(const char *dir)
                 "    smooth = p3 (1 - (1 - N.L)^5) (1 - (1 - N.V)^5)\n    single = lerp(smooth, rough, alpha) / pi\n"
                 "    result = albedo (single + albedo p4 alpha)\n\n"
                 "(the same operations as the kernel: a refit changes constants only; with Hammon's constants it "
-                "equals facet_oracle_diffuse_hammon at every point, checked). Fitted over every point of the "
-                "tables' grid and albedo in {1, 0.75, 0.5, 0.25} (%d points) by Nelder-Mead from Hammon's "
-                "constants, once minimising the maximum relative error and once the mean.\n\n",
+                "equals facet_oracle_diffuse_hammon at every point, checked). Fitted over the tables' grid and "
+                "albedo in {1, 0.75, 0.5, 0.25} (%d points) by Nelder-Mead from Hammon's constants, minimising "
+                "the maximum relative error, the mean, and the maximum over N.L, N.V >= 0.2.\n\n",
             npts);
-    fprintf(md, "| constant | Hammon | refit (min max) | refit (min mean) |\n|---|---|---|---|\n");
-    for (j = 0; j < NP; j++)
-        fprintf(md, "| %s | %.4g | %.4f | %.4f |\n", pname[j], hammon_pub[j], pmax[j], pmean[j]);
+    fprintf(md, "| constant | Hammon |");
+    for (j = 0; j < NFIT; j++)
+        fprintf(md, " refit (%s) |", fit_name[j]);
+    fprintf(md, "\n|---|---|");
+    for (j = 0; j < NFIT; j++)
+        fprintf(md, "---|");
+    fprintf(md, "\n");
+    for (i = 0; i < NP; i++) {
+        fprintf(md, "| %s | %.4g |", pname[i], hammon_pub[i]);
+        for (j = 0; j < NFIT; j++)
+            fprintf(md, " %.4f |", pf[j][i]);
+        fprintf(md, "\n");
+    }
     {
-        char a[3][2][32];
-        for (i = 0; i < 3; i++)
-            for (j = 0; j < 2; j++)
-                pct(a[i][j], sizeof a[i][j], e[i][j]);
-        fprintf(md, "| **max abs e** | %s | %s | %s |\n| **mean abs e** | %s | %s | %s |\n\n", a[0][0], a[1][0], a[2][0],
-                a[0][1], a[1][1], a[2][1]);
+        static const char *const row[4] = {"max abs e", "mean abs e", "N.L, N.V >= 0.2: max abs e",
+                                           "N.L, N.V >= 0.2: mean abs e"};
+        int r;
+        for (r = 0; r < 4; r++) {
+            fprintf(md, "| **%s** |", row[r]);
+            for (j = 0; j <= NFIT; j++) {
+                char b[32];
+                pct(b, sizeof b, e[j][r]);
+                fprintf(md, " %s |", b);
+            }
+            fprintf(md, "\n");
+        }
     }
     per_alpha(md, hammon_pub, "Hammon's constants (diffuse_hammon)");
-    per_alpha(md, pmax, "Refit, minimising the maximum");
-    per_alpha(md, pmean, "Refit, minimising the mean");
+    for (j = 0; j < NFIT; j++) {
+        char label[96];
+        snprintf(label, sizeof label, "Refit (%s)", fit_name[j]);
+        per_alpha(md, pf[j], label);
+    }
     fclose(md);
-    printf("microsurface refit: published max %.4f mean %.4f; min-max refit max %.4f mean %.4f; min-mean refit max %.4f "
-           "mean %.4f\n  min-max constants:",
-           e[0][0], e[0][1], e[1][0], e[1][1], e[2][0], e[2][1]);
-    for (j = 0; j < NP; j++)
-        printf(" %.5f", pmax[j]);
-    printf("\n  min-mean constants:");
-    for (j = 0; j < NP; j++)
-        printf(" %.5f", pmean[j]);
-    printf("\n");
+    printf("microsurface refit: max / mean / max (cos >= 0.2) / mean (cos >= 0.2): Hammon %.4f %.4f %.4f %.4f\n",
+           e[0][0], e[0][1], e[0][2], e[0][3]);
+    for (j = 0; j < NFIT; j++) {
+        printf("  refit (%s): %.4f %.4f %.4f %.4f, constants", fit_name[j], e[j + 1][0], e[j + 1][1], e[j + 1][2],
+               e[j + 1][3]);
+        for (i = 0; i < NP; i++)
+            printf(" %.5f", pf[j][i]);
+        printf("\n");
+    }
     free(pts);
     for (i = 0; i < NREF; i++)
         msim_table_free(&tab[i]);

@@ -91,7 +91,8 @@ static void check_vndf(void)
                   wz[iw], tot);
             msim_rng_init(&rng, 77, (uint64_t)(ia * 5 + iw));
             for (i = 0; i < NS; i++) {
-                msim_v3 m = msim_sample_vndf(w, a, msim_uniform(&rng), msim_uniform(&rng));
+                double u1 = msim_uniform(&rng), u2 = msim_uniform(&rng);
+                msim_v3 m = msim_sample_vndf(w, a, u1, u2);
                 double ph = atan2(m.y, m.x), wm = m.x * w.x + m.y * w.y + m.z * w.z;
                 int bt = (int)(m.z * NT), bp;
                 if (ph < 0)
