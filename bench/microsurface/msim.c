@@ -166,6 +166,12 @@ double msim_proj_area(msim_v3 w, double alpha)
     return w.z > 0.0 ? w.z + zl : zl;
 }
 
+msim_v3 msim_dir(double z, double phi_deg)
+{
+    double s = sqrt(fmax(0.0, 1.0 - z * z)), p = phi_deg * PI / 180.0;
+    return z >= 1.0 ? v3(0.0, 0.0, 1.0) : v3(s * cos(p), s * sin(p), z);
+}
+
 double msim_ggx_d(msim_v3 h, double alpha)
 {
     /* alpha^2 / (pi (alpha^2 cos^2 + sin^2)^2) with cos^2 = hz^2 / |h|^2 */

@@ -116,6 +116,8 @@ double msim_lambda(double z, double r2, double alpha);
 msim_v3 msim_sample_vndf(msim_v3 w, double alpha, double u1, double u2);
 double msim_proj_area(msim_v3 w, double alpha);
 double msim_ggx_d(msim_v3 h, double alpha); /* D of normalize(h), h any length */
+/* the unit direction with cos theta = z and azimuth phi_deg (degrees) from +x */
+msim_v3 msim_dir(double z, double phi_deg);
 /* the BRDF bin's projected solid angle: integral of cos theta over the bin
  * (both azimuth signs: the bins fold phi and -phi) */
 double msim_bin_measure(int i_mu, int nb_mu, int nb_phi);

@@ -51,6 +51,18 @@ static int load_refs(const char *dir)
     return 0;
 }
 
+/* DIR/NAME for writing (NULL and a message when it cannot be) */
+static FILE *open_out(const char *dir, const char *name)
+{
+    char path[1024];
+    FILE *f;
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    f = fopen(path, "w");
+    if (!f)
+        fprintf(stderr, "microsurface: cannot write %s\n", path);
+    return f;
+}
+
 static void ref_value(int ref, const msim_row *r, int irho, double *v, double *se)
 {
     double s = ref == REF_HAMMON ? 1.0 / (1.0 - f0_hammon) : 1.0;
@@ -200,6 +212,27 @@ static void fig(char *buf, size_t n, double x, double sig)
         snprintf(buf, n, "%s (+- %s)", a, b);
 }
 
+/* a Markdown table's rule under a header of 1 + n columns */
+static void md_rule(FILE *md, int n)
+{
+    int i;
+    fputs("\n|---|", md);
+    for (i = 0; i < n; i++)
+        fputs("---|", md);
+    fputs("\n", md);
+}
+
+/* x[0], x[1], ... separated by ", " */
+static void md_list(FILE *md, const char *fmt, const double *x, int n)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        if (i)
+            fputs(", ", md);
+        fprintf(md, fmt, x[i]);
+    }
+}
+
 static void agg_point(int k, int fm, int rf, const msim_row *r, int ir, int ai)
 {
     double v, se, rho = msim_rho[ir], kv, e, sig, u, usig, lam;
@@ -250,10 +283,7 @@ static void md_per_alpha(FILE *md, int d)
     fprintf(md, "Each cell: max abs e (sigma) at (N.L, N.V, phi, albedo); mean abs e.\n\n| alpha |");
     for (k = 0; k < NKERN; k++)
         fprintf(md, " %s |", kern[k].name);
-    fprintf(md, "\n|---|");
-    for (k = 0; k < NKERN; k++)
-        fprintf(md, "---|");
-    fprintf(md, "\n");
+    md_rule(md, NKERN);
     for (ia = 0; ia < MSIM_NALPHA; ia++) {
         fprintf(md, "| %g |", msim_grid_alpha[ia]);
         for (k = 0; k < NKERN; k++) {
@@ -270,7 +300,6 @@ static void md_per_alpha(FILE *md, int d)
 int msim_cmd_error(const char *dir)
 {
     int k, fm, rf, ir, i, ia, d;
-    char path[1024];
     FILE *t, *md;
     if (load_refs(dir))
         return 2;
@@ -286,10 +315,8 @@ int msim_cmd_error(const char *dir)
                     for (fm = 0; fm < NFORM; fm++)
                         agg_point(k, fm, rf, r, ir, ai);
         }
-    snprintf(path, sizeof path, "%s/model_error.tsv", dir);
-    t = fopen(path, "w");
-    snprintf(path, sizeof path, "%s/model_error.md", dir);
-    md = fopen(path, "w");
+    t = open_out(dir, "model_error.tsv");
+    md = open_out(dir, "model_error.md");
     if (!t || !md)
         return 2;
     fprintf(t, "# model error of facet's diffuse kernels against the microsurface simulation "
@@ -330,11 +357,9 @@ int msim_cmd_error(const char *dir)
     fprintf(md, "Made by `build/microsurface/microsurface error --dir bench/microsurface` from the reference "
                 "tables (`ref_hammon.tsv`, `ref_lambert.tsv`; README.md says how they were made). Relative "
                 "error e = kernel / reference - 1 over the tables' grid: alpha in {");
-    for (ia = 0; ia < MSIM_NALPHA; ia++)
-        fprintf(md, "%s%g", ia ? ", " : "", msim_grid_alpha[ia]);
+    md_list(md, "%g", msim_grid_alpha, MSIM_NALPHA);
     fprintf(md, "}, N.L and N.V in {");
-    for (i = 0; i < MSIM_NCOS; i++)
-        fprintf(md, "%s%g", i ? ", " : "", msim_grid_cos[i]);
+    md_list(md, "%g", msim_grid_cos, MSIM_NCOS);
     fprintf(md, "}, the azimuth phi between L and V in {0, 30, ..., 180} degrees (0: V on L's side), and the "
                 "facet albedo in {1, 0.75, 0.5, 0.25} (the kernel's albedo input). Beside every figure: the "
                 "simulation's standard error of that relative error (sigma); a maximum inside 3 sigma is given "
@@ -584,7 +609,6 @@ static void per_alpha(FILE *md, const double *p, const char *label)
 
 int msim_cmd_refit(const char *dir)
 {
-    char path[1024];
     FILE *md;
     int i, ir, j;
     double pf[NFIT][NP], e[NFIT + 1][4];
@@ -628,8 +652,7 @@ int msim_cmd_refit(const char *dir)
         fit_errors(pf[j], e[j + 1]);
     }
     fit_errors(hammon_pub, e[0]);
-    snprintf(path, sizeof path, "%s/hammon_refit.md", dir);
-    md = fopen(path, "w");
+    md = open_out(dir, "hammon_refit.md");
     if (!md)
         return 2;
     fprintf(md, "# Hammon's diffuse fit, refitted to the microsurface reference\n\n");
@@ -647,10 +670,7 @@ int msim_cmd_refit(const char *dir)
     fprintf(md, "| constant | Hammon |");
     for (j = 0; j < NFIT; j++)
         fprintf(md, " refit (%s) |", fit_name[j]);
-    fprintf(md, "\n|---|---|");
-    for (j = 0; j < NFIT; j++)
-        fprintf(md, "---|");
-    fprintf(md, "\n");
+    md_rule(md, NFIT + 1);
     for (i = 0; i < NP; i++) {
         fprintf(md, "| %s | %.4g |", pname[i], hammon_pub[i]);
         for (j = 0; j < NFIT; j++)
@@ -917,10 +937,8 @@ int msim_cmd_energy(const char *dir)
     nelder_mead(obj_avg, q, NQ, 0.5);
     nelder_mead(obj_avg, q, NQ, 0.1);
 
-    snprintf(path, sizeof path, "%s/spec_loss.tsv", dir);
-    t = fopen(path, "w");
-    snprintf(path, sizeof path, "%s/spec_loss.md", dir);
-    md = fopen(path, "w");
+    t = open_out(dir, "spec_loss.tsv");
+    md = open_out(dir, "spec_loss.md");
     if (!t || !md)
         return 2;
     fprintf(t, "# the energy single-scattering GGX loses, 1 - E(N.V, alpha) (F = 1, height-correlated Smith): by "
@@ -964,10 +982,7 @@ int msim_cmd_energy(const char *dir)
     fprintf(md, "## 1 - E (quadrature), with the simulation's multiple-scattering albedo beside (+- its standard error)\n\n| alpha |");
     for (j = 0; j < MSIM_NCOS; j++)
         fprintf(md, " N.V %g |", msim_grid_cos[j]);
-    fprintf(md, "\n|---|");
-    for (j = 0; j < MSIM_NCOS; j++)
-        fprintf(md, "---|");
-    fprintf(md, "\n");
+    md_rule(md, MSIM_NCOS);
     for (ia = 0; ia < MSIM_NALPHA; ia++) {
         fprintf(md, "| %g |", msim_grid_alpha[ia]);
         for (j = 0; j < MSIM_NCOS; j++)
@@ -990,11 +1005,9 @@ int msim_cmd_energy(const char *dir)
                     "own directional albedo is loss(N.L) times (the mean of loss) / avg, so added to the "
                     "single-scattering GGX BRDF of a white conductor it returns the lost energy up to the fits' "
                     "errors. Constants: c = {");
-        for (j = 0; j < NC; j++)
-            fprintf(md, "%s%.6g", j ? ", " : "", c[j]);
+        md_list(md, "%.6g", c, NC);
         fprintf(md, "}, q = {");
-        for (j = 0; j < NQ; j++)
-            fprintf(md, "%s%.6g", j ? ", " : "", q[j]);
+        md_list(md, "%.6g", q, NQ);
         fprintf(md, "}. Cost: the two losses and avg share one reciprocal (of the product of their three "
                     "denominators): about 30 operations and 1 reciprocal.\n\n");
         fprintf(md, "- loss vs 1 - E (absolute): max %.4f at alpha %g, N.V %g over the tables' grid (%.4f over the "

@@ -16,7 +16,6 @@
 #include <string.h>
 #include <time.h>
 
-#define PI 3.14159265358979323846
 
 static void usage(void)
 {
@@ -116,18 +115,6 @@ static int parse(int argc, char **argv, opts *o)
     return 0;
 }
 
-static msim_v3 out_dir(double nv, double phi_deg)
-{
-    msim_v3 o;
-    double s = sqrt(fmax(0.0, 1.0 - nv * nv)), p = phi_deg * PI / 180.0;
-    o.x = s * cos(p);
-    o.y = s * sin(p);
-    o.z = nv;
-    if (nv >= 1.0)
-        o.x = o.y = 0.0;
-    return o;
-}
-
 static void base_run(msim_run *r, const opts *o)
 {
     memset(r, 0, sizeof *r);
@@ -145,7 +132,7 @@ static int cmd_point(const opts *o)
 {
     msim_run r;
     msim_result res;
-    msim_v3 v = out_dir(o->nv, o->phi);
+    msim_v3 v = msim_dir(o->nv, o->phi);
     int a;
     base_run(&r, o);
     r.n_out = 1;
@@ -260,7 +247,7 @@ static int cmd_table(const opts *o)
                     for (ip = 0; ip < (iv == 0 ? 1 : MSIM_NPHI); ip++) {
                         oiv[n] = iv;
                         oip[n] = ip;
-                        out[n] = out_dir(msim_grid_cos[iv], msim_grid_phi[ip]);
+                        out[n] = msim_dir(msim_grid_cos[iv], msim_grid_phi[ip]);
                         n++;
                     }
                 memset(&r, 0, sizeof r);
@@ -299,7 +286,7 @@ static int cmd_table(const opts *o)
                         double nl = msim_grid_cos[il], nv = msim_grid_cos[iv];
                         int rl = iv <= il ? il : iv, rv = iv <= il ? iv : il; /* the run and its V */
                         int rp = rv == 0 ? 0 : ip;
-                        msim_v3 v = out_dir(nv, msim_grid_phi[ip]);
+                        msim_v3 v = msim_dir(nv, msim_grid_phi[ip]);
                         double lv = sqrt(fmax(0.0, 1.0 - nl * nl)) * v.x + nl * v.z;
                         fprintf(f, "%.17g\t%.17g\t%.17g\t%g\t%.17g\t%.17g\t%.0f", msim_grid_alpha[ia], nl, nv,
                                 msim_grid_phi[ip], lv, msim_grid_cos[rl], npaths[rl]);

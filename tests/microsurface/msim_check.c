@@ -19,15 +19,7 @@
 
 #define PI 3.14159265358979323846
 
-static msim_v3 dir(double z, double phi_deg)
-{
-    msim_v3 o;
-    double s = sqrt(fmax(0.0, 1.0 - z * z)), p = phi_deg * PI / 180.0;
-    o.x = s * cos(p);
-    o.y = s * sin(p);
-    o.z = z;
-    return o;
-}
+#define dir msim_dir
 
 static void setup(msim_run *r, int facet, double alpha, double f0, double nl, uint64_t paths, uint64_t seed)
 {
