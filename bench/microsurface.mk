@@ -13,7 +13,7 @@ MSIM_OBJ   := $(MSIM_CORE:%=$(BUILD)/microsurface/%.o)
 MSIM_TOOL_OBJ := $(MSIM_OBJ) $(BUILD)/microsurface/msim_main.o $(BUILD)/microsurface/msim_analyse.o
 MSIM_FLAGS  = $(BASEFLAGS) -D_DEFAULT_SOURCE -I$(MSIM_DIR) -pthread
 MSIM_DEPS  := $(wildcard $(MSIM_DIR)/*.h) $(HEADERS)
-MSIM_PATHS   ?= 2000000
+MSIM_PATHS   ?= 1000000
 MSIM_THREADS ?= 2
 MSIM_SEED    ?= 1
 
@@ -30,7 +30,7 @@ $(BUILD)/tests/msim_check: tests/microsurface/msim_check.c $(MSIM_OBJ) $(BUILD)/
 
 # the tables, then the analyses that read them (model error, refit, energy)
 microsurface: $(BUILD)/microsurface/microsurface
-	nice -n 19 $(BUILD)/microsurface/microsurface table --out $(MSIM_DIR) --paths $(MSIM_PATHS) \
+	nice -n 10 $(BUILD)/microsurface/microsurface table --out $(MSIM_DIR) --paths $(MSIM_PATHS) \
 	    --threads $(MSIM_THREADS) --seed $(MSIM_SEED) 2> $(MSIM_DIR)/generation.log
 	$(BUILD)/microsurface/microsurface error --dir $(MSIM_DIR)
 	$(BUILD)/microsurface/microsurface refit --dir $(MSIM_DIR)
