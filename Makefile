@@ -43,7 +43,7 @@ TEST_SRC := $(wildcard tests/*/test_*.c)
 TEST_BIN := $(addprefix $(BUILD)/tests/,$(notdir $(TEST_SRC:.c=)))
 TEST_DIRS := $(sort $(dir $(wildcard tests/*/*.c)))
 vpath %.c $(TEST_DIRS)
-HEADERS  := $(wildcard include/*.h include/facet/*.h include/facet/detail/*.h) src/core/kernels.def src/core/sample_kernels.def
+HEADERS  := $(wildcard include/*.h include/facet/*.h include/facet/detail/*.h src/core/*.def)
 SRC_HDRS := $(wildcard src/*/*.h)
 # The fixed-point kernels on their own (firmware): the kernels of both tiers,
 # their batch API as plain loops (no port table, no dispatcher: with
@@ -53,9 +53,13 @@ FX_SOURCES := src/fx/fx_prims.c src/fx/fx_kernels.c src/fx/fx_fast.c src/fx/fx_t
               src/fx/fx_firmware_batch.c
 
 # Parts add their own rules here (ports/<isa>/port.mk, tests/*/*.mk, bench/*.mk);
-# they may append to LIB_OBJ, CLI_OBJ, TEST_BIN and EXTRA_TESTS.
+# they may append to LIB_OBJ, CLI_OBJ, TEST_BIN and EXTRA_TESTS.  The ports
+# first: each adds its name to FACET_PORTS (and its ISA flags,
+# PORT_FLAGS_<name>), which the others read.
 EXTRA_TESTS :=
--include $(sort $(wildcard ports/*/port.mk tests/*/*.mk bench/*.mk))
+FACET_PORTS :=
+-include $(sort $(wildcard ports/*/port.mk))
+-include $(sort $(wildcard tests/*/*.mk bench/*.mk))
 
 .PHONY: all lib tests check report install uninstall clean fx-sources
 all: lib $(BUILD)/facet

@@ -29,11 +29,19 @@ BENCH_SHADER_PEERS := peers_shader_avx2 peers_shader_avx2_fm peers_shader_avx512
 else
 BENCH_SHADER_PEERS := peers_shader peers_shader_fm
 endif
-BENCH_HARNESS := cycles bench cli_bench api_bench loops_scalar loops_call loops_sse2 loops_avx2 loops_neon \
+# Per port: bench/harness/loops_<port>.c (its inline loops) is built where
+# the port is compiled in (FACET_PORTS, ports/<isa>/port.mk) and listed in
+# loops_tables.c; bench/raster/raster_<port>.c (its inline shading path,
+# called by name: a stub where the port is not compiled in) is built on
+# every target.  Both get the port's own ISA flags (PORT_FLAGS_<port>).
+BENCH_LOOP_PORTS := $(filter $(patsubst bench/harness/loops_%.c,%,$(wildcard bench/harness/loops_*.c)),$(FACET_PORTS))
+BENCH_HARNESS := cycles bench cli_bench api_bench loops_scalar loops_call $(BENCH_LOOP_PORTS:%=loops_%) \
                  loops_batch loops_tables peers peers_textbook peers_sample fxhook $(BENCH_SHADER_PEERS)
 BENCH_HARNESS_OBJ := $(BENCH_HARNESS:%=$(BUILD)/bench/harness/%.o)
-BENCH_RASTER_OBJ  := $(patsubst %,$(BUILD)/bench/raster/%.o,raster raster_avx2 raster_sse2 raster_neon)
-BENCH_REPORT_OBJ  := $(patsubst %,$(BUILD)/bench/report/%.o,report symbols pictures png image_error geom samplers)
+BENCH_RASTER_OBJ  := $(patsubst bench/raster/%.c,$(BUILD)/bench/raster/%.o,$(wildcard bench/raster/raster*.c))
+BENCH_REPORT_OBJ  := $(patsubst %,$(BUILD)/bench/report/%.o,report data doc doc_md doc_html svg kernel_facts \
+                     sec_choose sec_clock sec_pareto sec_image sec_furnace sec_model sec_pictures sec_samplers \
+                     sec_arm sec_raster sec_targets sec_kernels symbols pictures png image_error geom)
 BENCH_OBJ := $(BUILD)/bench/facet_bench.o $(BENCH_HARNESS_OBJ) $(BENCH_REPORT_OBJ) $(BENCH_RASTER_OBJ)
 
 TEST_BIN    += $(BUILD)/tests/test_bench
@@ -49,19 +57,15 @@ $(BUILD)/bench/%.o: bench/%.c $(BENCH_DEPS)
 	@mkdir -p $(dir $@)
 	$(CC) $(BENCH_FLAGS) -c $< -o $@
 
-# the inline SIMD loops and shading paths: that ISA's flags on these objects
-# alone; each asks facet_port_supported() before it runs
-BENCH_SIMD_OBJ := $(patsubst %,$(BUILD)/bench/harness/loops_%.o,sse2 avx2 neon) \
-                  $(patsubst %,$(BUILD)/bench/raster/raster_%.o,sse2 avx2 neon)
-ifneq ($(BENCH_X86),)
-$(BUILD)/bench/harness/loops_avx2.o $(BUILD)/bench/raster/raster_avx2.o: BENCH_ISA = -mavx2 -mfma
-$(BUILD)/bench/harness/loops_sse2.o $(BUILD)/bench/raster/raster_sse2.o: BENCH_ISA = -msse2
-endif
-# armv7: NEON objects alone get the NEON flags
-ifneq ($(filter arm%,$(BENCH_TARGET)),)
-$(BUILD)/bench/harness/loops_neon.o $(BUILD)/bench/raster/raster_neon.o: BENCH_ISA = -mfpu=neon-vfpv4 -mfloat-abi=hard
-endif
-$(BENCH_SIMD_OBJ): $(BUILD)/bench/%.o: bench/%.c $(BENCH_DEPS)
+# the inline SIMD loops and shading paths: their port's ISA flags on these
+# objects alone; each asks facet_port_supported() before it runs
+$(foreach p,$(FACET_PORTS),$(eval $(BUILD)/bench/harness/loops_$(p).o $(BUILD)/bench/raster/raster_$(p).o: \
+    BENCH_ISA = $(PORT_FLAGS_$(p))))
+$(BUILD)/bench/harness/loops_tables.o: BENCH_ISA = '-DBENCH_INLINE_PORTS(X)=$(foreach p,$(BENCH_LOOP_PORTS),X($(p)))'
+$(BUILD)/bench/harness/loops_%.o: bench/harness/loops_%.c $(BENCH_DEPS)
+	@mkdir -p $(dir $@)
+	$(CC) $(BENCH_FLAGS) $(BENCH_ISA) -c $< -o $@
+$(BUILD)/bench/raster/raster_%.o: bench/raster/raster_%.c $(BENCH_DEPS)
 	@mkdir -p $(dir $@)
 	$(CC) $(BENCH_FLAGS) $(BENCH_ISA) -c $< -o $@
 

@@ -56,55 +56,112 @@ extern "C" {
 
 #define FACET_VERSION "0.1.0"
 
-/* ---- measured bounds (relative error vs oracle), enforced by the tests --- */
-#define FACET_ERR_NOH_FROM_DOTS_F32         3.372e-07 /* 2^-21.5 */
-#define FACET_ERR_LOH_FROM_DOTS_F32         2.384e-07 /* 2^-22 */
-#define FACET_ERR_FRESNEL_SCHLICK_F32       4.769e-07 /* 2^-21 */
-#define FACET_ERR_FRESNEL_COOK_TORRANCE_F32 1.907e-06 /* 2^-19 */
-#define FACET_ERR_FRESNEL_SCHLICK_F90_F32   4.769e-07 /* 2^-21 */
-#define FACET_ERR_FRESNEL_SCHLICK_SG_F32    1.349e-06 /* 2^-19.5 */
-#define FACET_ERR_GGX_D_F32                 9.538e-07 /* 2^-20 */
-#define FACET_ERR_BLINN_PHONG_D_F32         3.052e-05 /* 2^-15 */
-#define FACET_ERR_BECKMANN_D_F32            3.052e-05 /* 2^-15 */
-#define FACET_ERR_GGX_ANISO_D_F32           6.744e-07 /* 2^-20.5 */
-#define FACET_ERR_GTR_D_F32                 1.079e-05 /* 2^-16.5 */
-#define FACET_ERR_SMITH_G1_F32              4.769e-07 /* 2^-21 */
-#define FACET_ERR_SMITH_G2_F32              4.769e-07 /* 2^-21 */
-#define FACET_ERR_SMITH_G2_UNCORRELATED_F32 6.744e-07 /* 2^-20.5 */
-#define FACET_ERR_SMITH_VIS_F32             4.769e-07 /* 2^-21 */
-#define FACET_ERR_SMITH_G1_HAMMON_F32       3.372e-07 /* 2^-21.5 */
-#define FACET_ERR_SMITH_G1_GTR_F32          9.538e-07 /* 2^-20 */
-#define FACET_ERR_SMITH_G2_HAMMON_F32       4.769e-07 /* 2^-21 */
-#define FACET_ERR_SMITH_VIS_HAMMON_F32      3.372e-07 /* 2^-21.5 */
-#define FACET_ERR_DIFFUSE_HAMMON_F32        9.538e-07 /* 2^-20 */
-#define FACET_ERR_DIFFUSE_BURLEY_F32        6.744e-07 /* 2^-20.5 */
-#define FACET_ERR_DIFFUSE_OREN_NAYAR_F32    6.744e-07 /* 2^-20.5 */
-#define FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32 6.744e-07 /* 2^-20.5 */
-#define FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32  6.744e-07 /* 2^-20.5 */
-#define FACET_ERR_BRDF_HAMMON_F32           2.698e-06 /* 2^-18.5 */
-#define FACET_ERR_LAMBERT_F32               1.686e-07 /* 2^-22.5 */
+/* ---- how this header is organised ---------------------------------------
+ * One block per kernel family: the geometry identities, Fresnel, D,
+ * shadowing and visibility, diffuse, the whole BRDF; then the ports, the
+ * kernel table and the importance samplers.  A family block opens with what
+ * its kernels share and the bounds of both tiers (FACET_ERR_<NAME>_F32 and
+ * FACET_ERR_<NAME>_F32_FAST: relative error vs the oracle, enforced by the
+ * tests); then, per kernel, its contract (formula, domain, behaviour outside
+ * it, model error where it approximates an exact term, the error of both
+ * tiers, cost) and its four declarations:
+ *   facet_<kernel>_f32(...)                    one sample, precise tier
+ *   facet_<kernel>_f32_fast(...)               one sample, fast tier
+ *   facet_<kernel>_f32_batch(out, ..., n)      n samples on the active port
+ *   facet_<kernel>_f32_fast_batch(out, ..., n) the same, fast tier
+ *
+ * The two tiers.  facet_<kernel>_f32_fast, facet_<kernel>_f32_fast_batch
+ * and, in each port header, facet_<kernel>_f32_fast_<port>: the same
+ * formula, domain, out-of-domain behaviour (finite, >= 0 for every input),
+ * symmetry and operation count as the precise kernel, the same formulation
+ * (the specular peak's cancellation is still formed exactly), and each
+ * port's cheaper reciprocal and rsqrt: scalar rsqrt with 2 Newton steps
+ * (not 3, the reciprocal is the division in both tiers); sse2 rcpps /
+ * rsqrtps and avx2 estimates with one Newton step (the precise tier: IEEE
+ * division / square root, and one third-order step); avx512 the 14-bit
+ * estimates unrefined (the precise tier: one Newton step); neon 2 steps
+ * (not 3); helium (a bit-level seed: MVE has no estimate) 2 steps (not 3);
+ * rvv (vfrec7 / vfrsqrt7) 1 step (not 2).  Where an error is raised to the
+ * fifth power (brdf_hammon's 1 - L.H) both tiers refine fully; a kernel
+ * with no reciprocal or rsqrt is the same code in both tiers.  Fast-tier
+ * bounds: relative error vs the oracle, measured over the precise tier's
+ * sweep on every port, also with estimates at the architectural bound
+ * (tests/suites/15-worst-estimates.sh; the worst port is avx512), enforced
+ * by the same tests; all <= 2^-12.
+ *
+ * Batch API.  facet_<kernel>_f32_batch(out, in1, ..., n): out[i] =
+ * kernel(in1[i], ...) for i < n, structure-of-arrays, inputs in the order of
+ * the one-sample call.  Any n (tails are handled), no alignment requirement.
+ * out may be exactly the same array as any input (out == in: each element is
+ * read before it is written); no other overlap (out shifted against an input
+ * gives results that depend on the port's vector width).  Runs on the best
+ * port for this CPU, chosen once and thread-safely on first use: avx512 >
+ * avx2 > sse2 on x86, neon on ARM, helium on Armv8.1-M with MVE, rvv on
+ * riscv64 with V, else scalar ("Ports" below).  Every port meets the bounds
+ * (tests/f32/test_f32_accuracy.c runs each kernel on each port); results may
+ * differ between ports by rounding, within those bounds. */
+
+/* ==== Geometry: N.H and L.H from the dots ===================================
+ * The shader identities that give N.H and L.H from N.L, N.V and L.V without
+ * building H (|L + V|^2 = 2 + 2 L.V); exact identities, no model error. */
+#define FACET_ERR_NOH_FROM_DOTS_F32                   3.372e-07 /* 2^-21.5 */
+#define FACET_ERR_NOH_FROM_DOTS_F32_FAST              8.632e-05 /* 2^-13.5 */
+#define FACET_ERR_LOH_FROM_DOTS_F32                   2.384e-07 /* 2^-22 */
+#define FACET_ERR_LOH_FROM_DOTS_F32_FAST              8.632e-05 /* 2^-13.5 */
 
 /* N.H from the dots, without building H:
  *   N.H = (N.L + N.V) / sqrt(2 + 2 L.V)        (|L + V|^2 = 2 + 2 L.V)
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1]; result in [0, 1].
  * Error: <= FACET_ERR_NOH_FROM_DOTS_F32 (2^-21.5); measured max 2^-22.12 (worst port,
  * 30 M samples) at (0.0587858558, 0.458401412, -0.495318681).
+ * f32_fast: <= FACET_ERR_NOH_FROM_DOTS_F32_FAST (2^-13.5).
  * Cost: 17 ops (1 rsqrt, 0 rcp). */
 float facet_noh_from_dots_f32(float nol, float nov, float lov);
+float facet_noh_from_dots_f32_fast(float nol, float nov, float lov);
+void facet_noh_from_dots_f32_batch(float *out, const float *nol, const float *nov,
+                                   const float *lov, size_t n);
+void facet_noh_from_dots_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                   const float *lov, size_t n);
 
 /* L.H = V.H = |L + V| / 2 = sqrt((1 + L.V) / 2), via the same rsqrt.
  * Domain: L.V in [-1, 1]; L.V = -1 gives 0.
  * Error: <= FACET_ERR_LOH_FROM_DOTS_F32 (2^-22); measured max 2^-22.64 (worst port,
  * 30 M samples) at (0.0295905489).
+ * f32_fast: <= FACET_ERR_LOH_FROM_DOTS_F32_FAST (2^-13.5).
  * Cost: 9 ops (1 rsqrt, 0 rcp). */
 float facet_loh_from_dots_f32(float lov);
+float facet_loh_from_dots_f32_fast(float lov);
+void facet_loh_from_dots_f32_batch(float *out, const float *lov, size_t n);
+void facet_loh_from_dots_f32_fast_batch(float *out, const float *lov, size_t n);
+
+/* ==== Fresnel =================================================================
+ * c = V.H (= L.H).  fresnel_cook_torrance is the exact dielectric Fresnel,
+ * the reference of the others' model error (relative; fresnel_schlick's is
+ * stated in fresnel_cook_torrance's contract, fresnel_schlick_sg's, against
+ * fresnel_schlick, in its own).  Every Fresnel kernel is the same code in
+ * both tiers: three have no reciprocal or rsqrt, and fresnel_cook_torrance
+ * refines its estimates fully (its F goes as the fourth power of a rooted
+ * term). */
+#define FACET_ERR_FRESNEL_SCHLICK_F32                 4.769e-07 /* 2^-21 */
+#define FACET_ERR_FRESNEL_SCHLICK_F32_FAST            4.769e-07 /* 2^-21 */
+#define FACET_ERR_FRESNEL_COOK_TORRANCE_F32           1.907e-06 /* 2^-19 */
+#define FACET_ERR_FRESNEL_COOK_TORRANCE_F32_FAST      1.907e-06 /* 2^-19 */
+#define FACET_ERR_FRESNEL_SCHLICK_F90_F32             4.769e-07 /* 2^-21 */
+#define FACET_ERR_FRESNEL_SCHLICK_F90_F32_FAST        4.769e-07 /* 2^-21 */
+#define FACET_ERR_FRESNEL_SCHLICK_SG_F32              1.349e-06 /* 2^-19.5 */
+#define FACET_ERR_FRESNEL_SCHLICK_SG_F32_FAST         1.349e-06 /* 2^-19.5 */
 
 /* Schlick's Fresnel: F = F0 + (1 - F0) (1 - cos)^5, the power by three
  * multiplies.  Domain: f0, cos in [0, 1].  F(f0, 1) = f0, F(f0, 0) = 1.
  * Error: <= FACET_ERR_FRESNEL_SCHLICK_F32 (2^-21); measured max 2^-21.40 (worst port,
  * 30 M samples) at (2.34035488e-05, 0.494028538).
+ * f32_fast: the same code (no reciprocal),
+ * FACET_ERR_FRESNEL_SCHLICK_F32_FAST (2^-21).
  * Cost: 15 ops (0 rsqrt, 0 rcp). */
 float facet_fresnel_schlick_f32(float f0, float cos_theta);
+float facet_fresnel_schlick_f32_fast(float f0, float cos_theta);
+void facet_fresnel_schlick_f32_batch(float *out, const float *f0, const float *cos_theta, size_t n);
+void facet_fresnel_schlick_f32_fast_batch(float *out, const float *f0, const float *cos_theta, size_t n);
 
 /* Exact Fresnel reflectance of a dielectric (unpolarised), the reference the
  * Schlick forms approximate: with eta = (1 + sqrt f0) / (1 - sqrt f0) (so
@@ -127,8 +184,14 @@ float facet_fresnel_schlick_f32(float f0, float cos_theta);
  * both tiers are the same code with fully refined estimates.
  * Error: <= FACET_ERR_FRESNEL_COOK_TORRANCE_F32 (2^-19), both tiers; measured max
  * 2^-19.71 (worst port, 3 M samples) at (6.10115691e-08, 0.528173864).
+ * f32_fast: the same code, fully refined:
+ * FACET_ERR_FRESNEL_COOK_TORRANCE_F32_FAST (2^-19).
  * Cost: 43 ops (2 rsqrt, 1 rcp). */
 float facet_fresnel_cook_torrance_f32(float f0, float voh);
+float facet_fresnel_cook_torrance_f32_fast(float f0, float voh);
+void facet_fresnel_cook_torrance_f32_batch(float *out, const float *f0, const float *voh, size_t n);
+void facet_fresnel_cook_torrance_f32_fast_batch(float *out, const float *f0, const float *voh,
+                                                size_t n);
 
 /* Schlick's Fresnel with a free grazing value (f90; fresnel_schlick is
  * f90 = 1):  F = f0 + (f90 - f0)(1 - V.H)^5, evaluated as the convex
@@ -138,8 +201,14 @@ float facet_fresnel_cook_torrance_f32(float f0, float voh);
  * No reciprocal or rsqrt: both tiers are the same code.
  * Error: <= FACET_ERR_FRESNEL_SCHLICK_F90_F32 (2^-21); measured max 2^-21.54 (worst port,
  * 3 M samples) at (2.63928523e-08, 0.999971151, 0.499411613).
+ * f32_fast: FACET_ERR_FRESNEL_SCHLICK_F90_F32_FAST (2^-21).
  * Cost: 25 ops (0 rsqrt, 0 rcp). */
 float facet_fresnel_schlick_f90_f32(float f0, float f90, float voh);
+float facet_fresnel_schlick_f90_f32_fast(float f0, float f90, float voh);
+void facet_fresnel_schlick_f90_f32_batch(float *out, const float *f0, const float *f90,
+                                         const float *voh, size_t n);
+void facet_fresnel_schlick_f90_f32_fast_batch(float *out, const float *f0, const float *f90,
+                                              const float *voh, size_t n);
 
 /* Schlick's Fresnel with the spherical-Gaussian power (Karis):
  *   F = F0 + (1 - F0) 2^((-5.55473 cos - 6.98316) cos)
@@ -155,24 +224,21 @@ float facet_fresnel_schlick_f90_f32(float f0, float f90, float voh);
  * y's two roundings times |y| ln 2 <= 8.7, and the constants rounded to float.
  * Error: <= FACET_ERR_FRESNEL_SCHLICK_SG_F32 (2^-19.5); measured max 2^-20.03 (sse2 and
  * scalar, no FMA; 2^-20.45 with FMA), 300 k samples, at (4.17905432e-10, 0.999937892).
+ * f32_fast: FACET_ERR_FRESNEL_SCHLICK_SG_F32_FAST (2^-19.5).
  * Cost: 23 ops (0 rsqrt, 0 rcp). */
 float facet_fresnel_schlick_sg_f32(float f0, float cos_theta);
+float facet_fresnel_schlick_sg_f32_fast(float f0, float cos_theta);
+void facet_fresnel_schlick_sg_f32_batch(float *out, const float *f0, const float *cos_theta,
+                                        size_t n);
+void facet_fresnel_schlick_sg_f32_fast_batch(float *out, const float *f0,
+                                             const float *cos_theta, size_t n);
 
-/* GGX / Trowbridge-Reitz normal distribution:
- *   D = alpha^2 / (pi ((N.H)^2 (alpha^2 - 1) + 1)^2)
- * evaluated as (1/pi) (alpha / d)^2 with d = (1 - N.H)(1 + N.H) + (N.H alpha)^2,
- * which has no cancellation at the peak.  D(1) = 1/(pi alpha^2) (<= 3.3e5),
- * D(0) = alpha^2/pi.  Domain: N.H in [0, 1], alpha in [FACET_ALPHA_MIN, 1].
- * Error: <= FACET_ERR_GGX_D_F32 (2^-20); measured max 2^-20.60 (worst port,
- * 30 M samples) at (0.999949455, 0.254411191).
- * Cost: 14 ops (0 rsqrt, 1 rcp). */
-float facet_ggx_d_f32(float noh, float alpha);
-
-/* ---- D terms beyond GGX ------------------------------------------------------
- * Every D here is a normal distribution in the same sense as ggx_d: the
- * integral of D(m) (N.M) over the hemisphere is 1 (checked by quadrature in
- * tests/oracle/test_oracle.c for alpha 2^-10 .. 1).  alpha is the same width as
- * GGX's (perceptual roughness^2); no model error: each is the exact term.
+/* ==== D: normal distributions =================================================
+ * Every D is a normal distribution: the integral of D(m) (N.M) over the
+ * hemisphere is 1 (checked by quadrature in tests/oracle/test_oracle.c for
+ * alpha 2^-10 .. 1).  alpha is GGX's width (perceptual roughness^2) in every
+ * one; no model error: each is the exact term, and the variants are
+ * different looks, not approximations of one another.
  * No libm: the powers and exponentials are 2^y and log2 from the exponent
  * bits and polynomials (include/facet/detail/f32_body.h, "2^y and log2":
  * x_exp2, x_log2_x, x_exp2m1r).  The exponential terms carry what any float
@@ -182,6 +248,30 @@ float facet_ggx_d_f32(float noh, float alpha);
  * f32_fast tier keeps the precise reciprocals wherever the result is raised
  * to a power (facet/detail/f32_body.h, RCP_EXP_), so blinn_phong_d and
  * beckmann_d are the same code in both tiers. */
+#define FACET_ERR_GGX_D_F32                           9.538e-07 /* 2^-20 */
+#define FACET_ERR_GGX_D_F32_FAST                      1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_BLINN_PHONG_D_F32                   3.052e-05 /* 2^-15 */
+#define FACET_ERR_BLINN_PHONG_D_F32_FAST              3.052e-05 /* 2^-15 */
+#define FACET_ERR_BECKMANN_D_F32                      3.052e-05 /* 2^-15 */
+#define FACET_ERR_BECKMANN_D_F32_FAST                 3.052e-05 /* 2^-15 */
+#define FACET_ERR_GGX_ANISO_D_F32                     6.744e-07 /* 2^-20.5 */
+#define FACET_ERR_GGX_ANISO_D_F32_FAST                8.632e-05 /* 2^-13.5 */
+#define FACET_ERR_GTR_D_F32                           1.079e-05 /* 2^-16.5 */
+#define FACET_ERR_GTR_D_F32_FAST                      1.726e-04 /* 2^-12.5 */
+
+/* GGX / Trowbridge-Reitz normal distribution:
+ *   D = alpha^2 / (pi ((N.H)^2 (alpha^2 - 1) + 1)^2)
+ * evaluated as (1/pi) (alpha / d)^2 with d = (1 - N.H)(1 + N.H) + (N.H alpha)^2,
+ * which has no cancellation at the peak.  D(1) = 1/(pi alpha^2) (<= 3.3e5),
+ * D(0) = alpha^2/pi.  Domain: N.H in [0, 1], alpha in [FACET_ALPHA_MIN, 1].
+ * Error: <= FACET_ERR_GGX_D_F32 (2^-20); measured max 2^-20.60 (worst port,
+ * 30 M samples) at (0.999949455, 0.254411191).
+ * f32_fast: <= FACET_ERR_GGX_D_F32_FAST (2^-12.5).
+ * Cost: 14 ops (0 rsqrt, 1 rcp). */
+float facet_ggx_d_f32(float noh, float alpha);
+float facet_ggx_d_f32_fast(float noh, float alpha);
+void facet_ggx_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_ggx_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
 
 /* Normalised Blinn-Phong, alpha-parametrised (Karis):
  *   D = N.H^p / (pi alpha^2),  p = 2 / alpha^2 - 2
@@ -192,8 +282,13 @@ float facet_ggx_d_f32(float noh, float alpha);
  * Error: <= FACET_ERR_BLINN_PHONG_D_F32 (2^-15); measured max 2^-15.42 (every port,
  * 300 k samples) at (0.776722491, 0.0863524303), where D = 2.6e-28: the exponent
  * p log2 N.H = -88.6 and its few roundings.
+ * f32_fast: the precise code (every reciprocal is raised to a power),
+ * FACET_ERR_BLINN_PHONG_D_F32_FAST (2^-15).
  * Cost: 58 ops (0 rsqrt, 2 rcp). */
 float facet_blinn_phong_d_f32(float noh, float alpha);
+float facet_blinn_phong_d_f32_fast(float noh, float alpha);
+void facet_blinn_phong_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_blinn_phong_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
 
 /* Beckmann:
  *   D = exp(-tan^2(theta_h) / alpha^2) / (pi alpha^2 N.H^4),
@@ -205,8 +300,13 @@ float facet_blinn_phong_d_f32(float noh, float alpha);
  * D(1) = 1/(pi alpha^2), D(0) = 0.
  * Error: <= FACET_ERR_BECKMANN_D_F32 (2^-15); measured max 2^-15.59 (every port,
  * 300 k samples) at (0.997685969, 0.00783577561), where D = 7.4e-30 (y = -109).
+ * f32_fast: the precise code (every reciprocal is raised to a power),
+ * FACET_ERR_BECKMANN_D_F32_FAST (2^-15).
  * Cost: 36 ops (0 rsqrt, 1 rcp). */
 float facet_beckmann_d_f32(float noh, float alpha);
+float facet_beckmann_d_f32_fast(float noh, float alpha);
+void facet_beckmann_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_beckmann_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
 
 /* Anisotropic GGX with widths alpha_x (along the tangent T) and alpha_y
  * (along the bitangent B); toh = T.H, boh = B.H, noh = N.H, the components
@@ -220,8 +320,16 @@ float facet_beckmann_d_f32(float noh, float alpha);
  * has: K is floored at ax^2 ay^2 / 2 (the bracket at 1/2), so D <= 4 / (pi ax ay).
  * Error: <= FACET_ERR_GGX_ANISO_D_F32 (2^-20.5); measured max 2^-20.78 (every port,
  * 300 k samples) at (0.998403668, 0.0521120951, -0.0217817482, 0.621842802, 0.203452751).
+ * f32_fast: <= FACET_ERR_GGX_ANISO_D_F32_FAST (2^-13.5); measured 2^-14.18
+ * (avx512).
  * Cost: 32 ops (0 rsqrt, 1 rcp). */
 float facet_ggx_aniso_d_f32(float noh, float toh, float boh, float alpha_x, float alpha_y);
+float facet_ggx_aniso_d_f32_fast(float noh, float toh, float boh, float alpha_x, float alpha_y);
+void facet_ggx_aniso_d_f32_batch(float *out, const float *noh, const float *toh, const float *boh,
+                                 const float *alpha_x, const float *alpha_y, size_t n);
+void facet_ggx_aniso_d_f32_fast_batch(float *out, const float *noh, const float *toh,
+                                      const float *boh, const float *alpha_x,
+                                      const float *alpha_y, size_t n);
 
 /* Generalized Trowbridge-Reitz (GTR, Burley 2012; Dimov 2015) with tail
  * exponent gamma:
@@ -240,16 +348,75 @@ float facet_ggx_aniso_d_f32(float noh, float toh, float boh, float alpha_x, floa
  * 300 k samples) at (0.999999762, 0.00208001724, 3.75617146): at the peak of a
  * heavy tail, 2^(-gamma log2 d) with -gamma log2 d = 66.7 (its rounding and
  * log2's) against c = 2^-60.
+ * f32_fast: <= FACET_ERR_GTR_D_F32_FAST (2^-12.5); measured 2^-13.63
+ * (avx512; 2^-12.95 with estimates at the architectural bound).
  * Cost: 136 ops (0 rsqrt, 5 rcp). */
 float facet_gtr_d_f32(float noh, float alpha, float gamma);
+float facet_gtr_d_f32_fast(float noh, float alpha, float gamma);
+void facet_gtr_d_f32_batch(float *out, const float *noh, const float *alpha, const float *gamma,
+                           size_t n);
+void facet_gtr_d_f32_fast_batch(float *out, const float *noh, const float *alpha,
+                                const float *gamma, size_t n);
+
+/* ==== Shadowing and visibility ===============================================
+ * G terms are G of D F G / (4 N.L N.V); the Vis kernels are G / (4 N.L N.V)
+ * already (the 4 N.L N.V cancelled).  Exact Smith for GGX (smith_g1,
+ * smith_g2, smith_g2_uncorrelated, smith_vis) and for GTR (smith_g1_gtr, up
+ * to its interpolation in gamma), Hammon's approximations, and the rest of
+ * Karis's menu: the classic G terms, Beckmann's Smith G1 in Walter's and
+ * Schlick's approximations, the joint approximation engines ship, and a
+ * fitted visibility.  Each is evaluated as stated (implementation error:
+ * the bound, vs the oracle of that same formula); where it approximates an
+ * exact term, its model error against that term is in its contract and in
+ * the report's model-error table (`make report`).  Fast-tier bounds of the
+ * menu: the kernels with a reciprocal 2^-13, smith_g1_beckmann (rsqrt and
+ * rcp) 2^-12.5, measured worst on avx512's unrefined estimates (2^-13.96 ..
+ * 2^-14.18 on this sweep). */
+#define FACET_ERR_SMITH_G1_F32                        4.769e-07 /* 2^-21 */
+#define FACET_ERR_SMITH_G1_F32_FAST                   1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_SMITH_G2_F32                        4.769e-07 /* 2^-21 */
+#define FACET_ERR_SMITH_G2_F32_FAST                   1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_SMITH_G2_UNCORRELATED_F32           6.744e-07 /* 2^-20.5 */
+#define FACET_ERR_SMITH_G2_UNCORRELATED_F32_FAST      2.441e-04 /* 2^-12 */
+#define FACET_ERR_SMITH_VIS_F32                       4.769e-07 /* 2^-21 */
+#define FACET_ERR_SMITH_VIS_F32_FAST                  1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_SMITH_G1_HAMMON_F32                 3.372e-07 /* 2^-21.5 */
+#define FACET_ERR_SMITH_G1_HAMMON_F32_FAST            8.632e-05 /* 2^-13.5 */
+#define FACET_ERR_SMITH_G1_GTR_F32                    9.538e-07 /* 2^-20 */
+#define FACET_ERR_SMITH_G1_GTR_F32_FAST               1.221e-04 /* 2^-13 */
+#define FACET_ERR_SMITH_G2_HAMMON_F32                 4.769e-07 /* 2^-21 */
+#define FACET_ERR_SMITH_G2_HAMMON_F32_FAST            8.632e-05 /* 2^-13.5 */
+#define FACET_ERR_SMITH_VIS_HAMMON_F32                3.372e-07 /* 2^-21.5 */
+#define FACET_ERR_SMITH_VIS_HAMMON_F32_FAST           8.632e-05 /* 2^-13.5 */
+#define FACET_ERR_G_IMPLICIT_F32                      8.429e-08 /* 2^-23.5 */
+#define FACET_ERR_G_IMPLICIT_F32_FAST                 8.429e-08 /* 2^-23.5 */
+#define FACET_ERR_G_NEUMANN_F32                       9.313e-10 /* 2^-30; exact, measured 0 */
+#define FACET_ERR_G_NEUMANN_F32_FAST                  9.313e-10 /* 2^-30; exact, measured 0 */
+#define FACET_ERR_G_COOK_TORRANCE_F32                 2.384e-07 /* 2^-22 */
+#define FACET_ERR_G_COOK_TORRANCE_F32_FAST            1.221e-04 /* 2^-13 */
+#define FACET_ERR_G_KELEMEN_F32                       3.372e-07 /* 2^-21.5 */
+#define FACET_ERR_G_KELEMEN_F32_FAST                  1.221e-04 /* 2^-13 */
+#define FACET_ERR_SMITH_G1_BECKMANN_F32               6.744e-07 /* 2^-20.5 */
+#define FACET_ERR_SMITH_G1_BECKMANN_F32_FAST          1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_SMITH_G1_SCHLICK_BECKMANN_F32       3.372e-07 /* 2^-21.5 */
+#define FACET_ERR_SMITH_G1_SCHLICK_BECKMANN_F32_FAST  1.221e-04 /* 2^-13 */
+#define FACET_ERR_SMITH_VIS_JOINT_APPROX_F32          3.372e-07 /* 2^-21.5 */
+#define FACET_ERR_SMITH_VIS_JOINT_APPROX_F32_FAST     1.221e-04 /* 2^-13 */
+#define FACET_ERR_SMITH_VIS_FIT_F32                   4.769e-07 /* 2^-21 */
+#define FACET_ERR_SMITH_VIS_FIT_F32_FAST              1.221e-04 /* 2^-13 */
+#define FACET_MODEL_ERR_SMITH_VIS_FIT 0.05
 
 /* Exact Smith masking for GGX:
  *   G1 = 2 N.V / (N.V + sqrt(alpha^2 + (1 - alpha^2) N.V^2)) = 1 / (1 + Lambda)
  * Domain: N.V in [0, 1]; G1(0) = 0, G1(1) = 1.
  * Error: <= FACET_ERR_SMITH_G1_F32 (2^-21); measured max 2^-21.66 (worst port,
  * 30 M samples) at (0.000242657741, 0.00600074418).
+ * f32_fast: <= FACET_ERR_SMITH_G1_F32_FAST (2^-12.5).
  * Cost: 17 ops (1 rsqrt, 1 rcp). */
 float facet_smith_g1_f32(float nov, float alpha);
+float facet_smith_g1_f32_fast(float nov, float alpha);
+void facet_smith_g1_f32_batch(float *out, const float *nov, const float *alpha, size_t n);
+void facet_smith_g1_f32_fast_batch(float *out, const float *nov, const float *alpha, size_t n);
 
 /* Exact height-correlated Smith G2 for GGX:
  *   G2 = 2 N.L N.V / (N.V sqrt(alpha^2 + (1-alpha^2) N.L^2)
@@ -257,29 +424,52 @@ float facet_smith_g1_f32(float nov, float alpha);
  * Domain: N.L, N.V in [FACET_COS_MIN, 1].
  * Error: <= FACET_ERR_SMITH_G2_F32 (2^-21); measured max 2^-21.40 (worst port,
  * 30 M samples) at (0.492564738, 4.08501137e-06, 0.00407959009).
+ * f32_fast: <= FACET_ERR_SMITH_G2_F32_FAST (2^-12.5).
  * Cost: 30 ops (2 rsqrt, 1 rcp). */
 float facet_smith_g2_f32(float nol, float nov, float alpha);
+float facet_smith_g2_f32_fast(float nol, float nov, float alpha);
+void facet_smith_g2_f32_batch(float *out, const float *nol, const float *nov, const float *alpha,
+                              size_t n);
+void facet_smith_g2_f32_fast_batch(float *out, const float *nol, const float *nov, const float *alpha,
+                              size_t n);
 
 /* Uncorrelated Smith G2 = G1(N.L) G1(N.V), with one reciprocal.
  * Domain: as smith_g2.  Error: <= FACET_ERR_SMITH_G2_UNCORRELATED_F32 (2^-20.5); measured max 2^-20.95 (worst port,
  * 30 M samples) at (1.06287043e-05, 4.67698592e-05, 0.0156806652).
+ * f32_fast: <= FACET_ERR_SMITH_G2_UNCORRELATED_F32_FAST (2^-12); measured
+ * worst 2^-12.43 (avx512).
  * Cost: 30 ops (2 rsqrt, 1 rcp). */
 float facet_smith_g2_uncorrelated_f32(float nol, float nov, float alpha);
+float facet_smith_g2_uncorrelated_f32_fast(float nol, float nov, float alpha);
+void facet_smith_g2_uncorrelated_f32_batch(float *out, const float *nol, const float *nov,
+                                           const float *alpha, size_t n);
+void facet_smith_g2_uncorrelated_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                           const float *alpha, size_t n);
 
 /* Visibility: correlated G2 / (4 N.L N.V) with the numerator cancelled:
  *   Vis = 0.5 / (N.V sqrt(alpha^2 + (1-alpha^2) N.L^2) + N.L sqrt(...N.V...))
  * Domain: as smith_g2; largest at N.L = N.V = FACET_COS_MIN, alpha_min:
  * 0.5 / (2 COS_MIN alpha_min) = 2^28.  Error: <= FACET_ERR_SMITH_VIS_F32 (2^-21); measured max 2^-21.62 (worst port,
  * 30 M samples) at (3.14775752e-06, 0.126348287, 0.00824174657).
+ * f32_fast: <= FACET_ERR_SMITH_VIS_F32_FAST (2^-12.5).
  * Cost: 27 ops (2 rsqrt, 1 rcp). */
 float facet_smith_vis_f32(float nol, float nov, float alpha);
+float facet_smith_vis_f32_fast(float nol, float nov, float alpha);
+void facet_smith_vis_f32_batch(float *out, const float *nol, const float *nov, const float *alpha,
+                               size_t n);
+void facet_smith_vis_f32_fast_batch(float *out, const float *nol, const float *nov, const float *alpha,
+                               size_t n);
 
 /* Hammon's G1 approximation (= Schlick-GGX with k = alpha/2):
  *   G1 ~ 2 N.V / (N.V (2 - alpha) + alpha)
  * Domain: N.V in [0, 1].  Error: <= FACET_ERR_SMITH_G1_HAMMON_F32 (2^-21.5); measured max 2^-22.26 (worst port,
  * 30 M samples) at (0.516059339, 0.018353641).
+ * f32_fast: <= FACET_ERR_SMITH_G1_HAMMON_F32_FAST (2^-13.5).
  * Cost: 11 ops (0 rsqrt, 1 rcp). */
 float facet_smith_g1_hammon_f32(float nov, float alpha);
+float facet_smith_g1_hammon_f32_fast(float nov, float alpha);
+void facet_smith_g1_hammon_f32_batch(float *out, const float *nov, const float *alpha, size_t n);
+void facet_smith_g1_hammon_f32_fast_batch(float *out, const float *nov, const float *alpha, size_t n);
 
 /* Smith G1 for the GTR distribution (gtr_d), Dimov 2015: the exact
  * G1 = 1 / (1 + Lambda) has closed forms at gamma = 0, 1, 2, 3, 4, here in
@@ -317,60 +507,62 @@ float facet_smith_g1_hammon_f32(float nov, float alpha);
  * facet_oracle_smith_g1_gtr): <= FACET_ERR_SMITH_G1_GTR_F32 (2^-20); measured
  * max 2^-20.89 (sse2, 300 k samples) at (0.00778461341, 0.126742497, 3.8678031);
  * f32_fast 2^-14.27 (avx512; 2^-14.01 with estimates at the bound).
+ * f32_fast: <= FACET_ERR_SMITH_G1_GTR_F32_FAST (2^-13).
  * Cost: 275 ops (1 rsqrt, 15 rcp). */
 float facet_smith_g1_gtr_f32(float nov, float alpha, float gamma);
+float facet_smith_g1_gtr_f32_fast(float nov, float alpha, float gamma);
+void facet_smith_g1_gtr_f32_batch(float *out, const float *nov, const float *alpha,
+                                  const float *gamma, size_t n);
+void facet_smith_g1_gtr_f32_fast_batch(float *out, const float *nov, const float *alpha,
+                                       const float *gamma, size_t n);
 
 /* Hammon's G2 approximation:
  *   G2 ~ 2 N.L N.V / lerp(2 N.L N.V, N.L + N.V, alpha)
  * the lerp evaluated as (1 - alpha) 2 N.L N.V + alpha (N.L + N.V).
  * Domain: N.L, N.V in [FACET_COS_MIN, 1].  Error: <= FACET_ERR_SMITH_G2_HAMMON_F32 (2^-21); measured max 2^-21.83 (worst port,
  * 30 M samples) at (1.45550921e-05, 0.00873631984, 0.00181798683).
+ * f32_fast: <= FACET_ERR_SMITH_G2_HAMMON_F32_FAST (2^-13.5).
  * Cost: 20 ops (0 rsqrt, 1 rcp). */
 float facet_smith_g2_hammon_f32(float nol, float nov, float alpha);
+float facet_smith_g2_hammon_f32_fast(float nol, float nov, float alpha);
+void facet_smith_g2_hammon_f32_batch(float *out, const float *nol, const float *nov,
+                                     const float *alpha, size_t n);
+void facet_smith_g2_hammon_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                     const float *alpha, size_t n);
 
 /* Hammon's visibility: G2_hammon / (4 N.L N.V) = 0.5 / lerp(2 N.L N.V, N.L + N.V, alpha).
  * Domain: as smith_g2_hammon; max 0.5/(2 alpha_min COS_MIN) = 2.7e8.
  * Error: <= FACET_ERR_SMITH_VIS_HAMMON_F32 (2^-21.5); measured max 2^-22.09 (worst port,
  * 30 M samples) at (0.713193238, 0.713202953, 0.00830200501).
+ * f32_fast: <= FACET_ERR_SMITH_VIS_HAMMON_F32_FAST (2^-13.5).
  * Cost: 17 ops (0 rsqrt, 1 rcp). */
 float facet_smith_vis_hammon_f32(float nol, float nov, float alpha);
-
-/* ---- shadowing and visibility: the rest of the menu -------------------------
- * Karis's list of G terms (G as in D F G / (4 N.L N.V); the Vis kernels are
- * G / (4 N.L N.V) already), Beckmann's Smith G1 in Walter's and Schlick's
- * approximations, the joint approximation engines ship, and a fitted
- * visibility.  Each is evaluated as stated (implementation error: the
- * bound, vs the oracle of that same formula); where it approximates an
- * exact term, its model error against that term is in the report's
- * model-error table (`make report`) and the README. */
-#define FACET_ERR_G_IMPLICIT_F32                         8.429e-08 /* 2^-23.5 */
-#define FACET_ERR_G_NEUMANN_F32                          9.313e-10 /* 2^-30; exact, measured 0 */
-#define FACET_ERR_G_COOK_TORRANCE_F32                    2.384e-07 /* 2^-22 */
-#define FACET_ERR_G_KELEMEN_F32                          3.372e-07 /* 2^-21.5 */
-#define FACET_ERR_SMITH_G1_BECKMANN_F32                  6.744e-07 /* 2^-20.5 */
-#define FACET_ERR_SMITH_G1_SCHLICK_BECKMANN_F32          3.372e-07 /* 2^-21.5 */
-#define FACET_ERR_SMITH_VIS_JOINT_APPROX_F32             3.372e-07 /* 2^-21.5 */
-#define FACET_ERR_SMITH_VIS_FIT_F32                      4.769e-07 /* 2^-21 */
-#define FACET_ERR_G_IMPLICIT_F32_FAST                    8.429e-08 /* 2^-23.5 */
-#define FACET_ERR_G_NEUMANN_F32_FAST                     9.313e-10 /* 2^-30; exact, measured 0 */
-#define FACET_ERR_G_COOK_TORRANCE_F32_FAST               1.221e-04 /* 2^-13 */
-#define FACET_ERR_G_KELEMEN_F32_FAST                     1.221e-04 /* 2^-13 */
-#define FACET_ERR_SMITH_G1_BECKMANN_F32_FAST             1.726e-04 /* 2^-12.5 */
-#define FACET_ERR_SMITH_G1_SCHLICK_BECKMANN_F32_FAST     1.221e-04 /* 2^-13 */
-#define FACET_ERR_SMITH_VIS_JOINT_APPROX_F32_FAST        1.221e-04 /* 2^-13 */
-#define FACET_ERR_SMITH_VIS_FIT_F32_FAST                 1.221e-04 /* 2^-13 */
+float facet_smith_vis_hammon_f32_fast(float nol, float nov, float alpha);
+void facet_smith_vis_hammon_f32_batch(float *out, const float *nol, const float *nov,
+                                      const float *alpha, size_t n);
+void facet_smith_vis_hammon_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                      const float *alpha, size_t n);
 
 /* Implicit G = N.L N.V (no roughness: the plain cosine product).
  * Domain: N.L, N.V in [0, 1]; symmetric.  G(1, 1) = 1, G(0, x) = 0.
  * Error: <= FACET_ERR_G_IMPLICIT_F32 (2^-23.5; both tiers: one rounding).
+ * f32_fast: the same rounding, FACET_ERR_G_IMPLICIT_F32_FAST (2^-23.5).
  * Cost: 7 ops (0 rsqrt, 0 rcp). */
 float facet_g_implicit_f32(float nol, float nov);
+float facet_g_implicit_f32_fast(float nol, float nov);
+void facet_g_implicit_f32_batch(float *out, const float *nol, const float *nov, size_t n);
+void facet_g_implicit_f32_fast_batch(float *out, const float *nol, const float *nov, size_t n);
 
 /* Neumann G = N.L N.V / max(N.L, N.V), which is min(N.L, N.V): evaluated
  * so, exact (0 at N.L = N.V = 0, where the quotient form is 0/0).
  * Domain: N.L, N.V in [0, 1]; symmetric.
- * Error: exact, measured 0; the tests enforce FACET_ERR_G_NEUMANN_F32 (2^-30), both tiers.  Cost: 7 ops (0 rsqrt, 0 rcp). */
+ * Error: exact, measured 0; the tests enforce FACET_ERR_G_NEUMANN_F32 (2^-30), both tiers.
+ * f32_fast: the same, FACET_ERR_G_NEUMANN_F32_FAST (2^-30).
+ * Cost: 7 ops (0 rsqrt, 0 rcp). */
 float facet_g_neumann_f32(float nol, float nov);
+float facet_g_neumann_f32_fast(float nol, float nov);
+void facet_g_neumann_f32_batch(float *out, const float *nol, const float *nov, size_t n);
+void facet_g_neumann_f32_fast_batch(float *out, const float *nol, const float *nov, size_t n);
 
 /* Cook-Torrance (V-groove) G = min(1, 2 N.H N.V / V.H, 2 N.H N.L / V.H)
  *   = min(1, 2 N.H min(N.L, N.V) / V.H).
@@ -378,8 +570,14 @@ float facet_g_neumann_f32(float nol, float nov);
  * N.L, N.V.  Where 2 N.H min(N.L, N.V) >= V.H the result is 1 exactly
  * (V.H = 0 included); the reciprocal sees V.H >= FACET_COS_MIN only.
  * Error: <= FACET_ERR_G_COOK_TORRANCE_F32 (2^-22).
+ * f32_fast: <= FACET_ERR_G_COOK_TORRANCE_F32_FAST (2^-13).
  * Cost: 24 ops (0 rsqrt, 1 rcp). */
 float facet_g_cook_torrance_f32(float nol, float nov, float noh, float voh);
+float facet_g_cook_torrance_f32_fast(float nol, float nov, float noh, float voh);
+void facet_g_cook_torrance_f32_batch(float *out, const float *nol, const float *nov,
+                                     const float *noh, const float *voh, size_t n);
+void facet_g_cook_torrance_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                          const float *noh, const float *voh, size_t n);
 
 /* Kelemen G = N.L N.V / (V.H)^2 (Kelemen and Szirmay-Kalos: G / (4 N.L N.V)
  * = 1 / (4 (V.H)^2) = 1 / (2 (1 + L.V))), capped at 1: for any real pair
@@ -387,8 +585,14 @@ float facet_g_cook_torrance_f32(float nol, float nov, float noh, float voh);
  * triples (V.H = 0 gives 1).  Domain: N.L, N.V in [FACET_COS_MIN, 1], V.H
  * in [0, 1]; symmetric in N.L, N.V.
  * Error: <= FACET_ERR_G_KELEMEN_F32 (2^-21.5).
+ * f32_fast: <= FACET_ERR_G_KELEMEN_F32_FAST (2^-13).
  * Cost: 16 ops (0 rsqrt, 1 rcp). */
 float facet_g_kelemen_f32(float nol, float nov, float voh);
+float facet_g_kelemen_f32_fast(float nol, float nov, float voh);
+void facet_g_kelemen_f32_batch(float *out, const float *nol, const float *nov, const float *voh,
+                               size_t n);
+void facet_g_kelemen_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                    const float *voh, size_t n);
 
 /* Smith G1 for Beckmann, Walter's rational approximation of 1 / (1 + Lambda):
  *   c = N.V / (alpha sqrt(1 - N.V^2)),
@@ -401,30 +605,50 @@ float facet_g_kelemen_f32(float nol, float nov, float voh);
  * at N.V = 1).  Domain: N.V in [0, 1], alpha in [FACET_ALPHA_MIN, 1];
  * G1(0) = 0, G1(1) = 1.  Model error vs the exact Beckmann G1
  * (1 / (1 + Lambda), Lambda from erf; facet_oracle_smith_g1_beckmann_exact):
- * see the README's model-error table.
+ * max 0.00313 relative over N.V = i/2000 (i = 1 .. 2000) x 40 alphas
+ * log-spaced in [2^-10, 1] (tests/f32/test_vis_fit.c, enforced < 0.01).
  * Error: <= FACET_ERR_SMITH_G1_BECKMANN_F32 (2^-20.5).
+ * f32_fast: <= FACET_ERR_SMITH_G1_BECKMANN_F32_FAST (2^-12.5).
  * Cost: 24 ops (1 rsqrt, 1 rcp). */
 float facet_smith_g1_beckmann_f32(float nov, float alpha);
+float facet_smith_g1_beckmann_f32_fast(float nov, float alpha);
+void facet_smith_g1_beckmann_f32_batch(float *out, const float *nov, const float *alpha, size_t n);
+void facet_smith_g1_beckmann_f32_fast_batch(float *out, const float *nov, const float *alpha,
+                                            size_t n);
 
 /* Schlick's approximation of Beckmann's Smith G1:
  *   G1 = N.V / (N.V (1 - k) + k),  k = alpha sqrt(2/pi).
  * The same function as smith_g1_hammon (Schlick-GGX, k = alpha/2) at
  * alpha' = 2 sqrt(2/pi) alpha = 1.596 alpha (for alpha <= 0.627, where
  * alpha' <= 1).  Domain: N.V in [0, 1], alpha in [FACET_ALPHA_MIN, 1];
- * G1(0) = 0, G1(1) = 1.  Model error vs the exact Beckmann G1: README.
+ * G1(0) = 0, G1(1) = 1.  Model error vs the exact Beckmann G1: max 0.646
+ * relative (at grazing N.V) on smith_g1_beckmann's grid.
  * Error: <= FACET_ERR_SMITH_G1_SCHLICK_BECKMANN_F32 (2^-21.5).
+ * f32_fast: <= FACET_ERR_SMITH_G1_SCHLICK_BECKMANN_F32_FAST (2^-13).
  * Cost: 11 ops (0 rsqrt, 1 rcp). */
 float facet_smith_g1_schlick_beckmann_f32(float nov, float alpha);
+float facet_smith_g1_schlick_beckmann_f32_fast(float nov, float alpha);
+void facet_smith_g1_schlick_beckmann_f32_batch(float *out, const float *nov, const float *alpha,
+                                               size_t n);
+void facet_smith_g1_schlick_beckmann_f32_fast_batch(float *out, const float *nov,
+                                                    const float *alpha, size_t n);
 
 /* The joint approximation of correlated Smith visibility (UE4's form):
  *   Vis = 0.5 / (N.L (N.V (1 - a) + a) + N.V (N.L (1 - a) + a))
  * which expands to 0.5 / ((1 - a) 2 N.L N.V + a (N.L + N.V)): the same
  * function as smith_vis_hammon (equal within both bounds), in this form.
  * Domain: as smith_vis_hammon; symmetric.  Model error vs exact smith_vis:
- * Hammon's, up to 29% (README).
+ * Hammon's, max 0.291 at N.L = N.V = 0.0043, alpha = 0.0042 over N.L, N.V in
+ * [2^-8, 1], alpha in [2^-10, 1] (tests/f32/test_vis_fit.c).
  * Error: <= FACET_ERR_SMITH_VIS_JOINT_APPROX_F32 (2^-21.5).
+ * f32_fast: <= FACET_ERR_SMITH_VIS_JOINT_APPROX_F32_FAST (2^-13).
  * Cost: 17 ops (0 rsqrt, 1 rcp). */
 float facet_smith_vis_joint_approx_f32(float nol, float nov, float alpha);
+float facet_smith_vis_joint_approx_f32_fast(float nol, float nov, float alpha);
+void facet_smith_vis_joint_approx_f32_batch(float *out, const float *nol, const float *nov,
+                                            const float *alpha, size_t n);
+void facet_smith_vis_joint_approx_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                                 const float *alpha, size_t n);
 
 /* A fitted visibility at Hammon's cost (one reciprocal, no square root):
  * exact correlated Smith is 0.5 / (N.V r(N.L) + N.L r(N.V)) with
@@ -437,53 +661,43 @@ float facet_smith_vis_joint_approx_f32(float nol, float nov, float alpha);
  * model error of Vis is bounded by that of r, since Vis~/Vis - 1 lies
  * between the values of r/r~ - 1 at N.L and at N.V).
  * Model error vs exact smith_vis: <= FACET_MODEL_ERR_SMITH_VIS_FIT over
- * N.L, N.V in [2^-8, 1], alpha in [2^-10, 1] (tests/f32/test_vis_fit.c).
+ * N.L, N.V in [2^-8, 1], alpha in [2^-10, 1] (tests/f32/test_vis_fit.c);
+ * measured 0.0315 at N.L = N.V = 0.35, alpha = 0.69.  Below N.L = 2^-8 (to
+ * the f32 floor 2^-20) it stays within 0.031 (r~ tends to k1 a / 2 there).
  * Domain: as smith_vis; symmetric.
  * Error: <= FACET_ERR_SMITH_VIS_FIT_F32 (2^-21), vs the oracle of this formula.
+ * f32_fast: <= FACET_ERR_SMITH_VIS_FIT_F32_FAST (2^-13).
  * Cost: 28 ops (0 rsqrt, 1 rcp). */
-#define FACET_MODEL_ERR_SMITH_VIS_FIT 0.05
 float facet_smith_vis_fit_f32(float nol, float nov, float alpha);
-
-/* the fast tier (facet_<kernel>_f32_fast: see "the fast tier" below) and
- * the batches (see "batch API" below) of the kernels above.  Fast-tier
- * bounds (FACET_ERR_*_F32_FAST above): the kernels with a reciprocal
- * 2^-13, smith_g1_beckmann (rsqrt and rcp) 2^-12.5, measured worst on
- * avx512's unrefined estimates (2^-13.96 .. 2^-14.18 on this sweep). */
-float facet_g_implicit_f32_fast(float nol, float nov);
-float facet_g_neumann_f32_fast(float nol, float nov);
-float facet_g_cook_torrance_f32_fast(float nol, float nov, float noh, float voh);
-float facet_g_kelemen_f32_fast(float nol, float nov, float voh);
-float facet_smith_g1_beckmann_f32_fast(float nov, float alpha);
-float facet_smith_g1_schlick_beckmann_f32_fast(float nov, float alpha);
-float facet_smith_vis_joint_approx_f32_fast(float nol, float nov, float alpha);
 float facet_smith_vis_fit_f32_fast(float nol, float nov, float alpha);
-void facet_g_implicit_f32_batch(float *out, const float *nol, const float *nov, size_t n);
-void facet_g_neumann_f32_batch(float *out, const float *nol, const float *nov, size_t n);
-void facet_g_cook_torrance_f32_batch(float *out, const float *nol, const float *nov,
-                                     const float *noh, const float *voh, size_t n);
-void facet_g_kelemen_f32_batch(float *out, const float *nol, const float *nov, const float *voh,
-                               size_t n);
-void facet_smith_g1_beckmann_f32_batch(float *out, const float *nov, const float *alpha, size_t n);
-void facet_smith_g1_schlick_beckmann_f32_batch(float *out, const float *nov, const float *alpha,
-                                               size_t n);
-void facet_smith_vis_joint_approx_f32_batch(float *out, const float *nol, const float *nov,
-                                            const float *alpha, size_t n);
 void facet_smith_vis_fit_f32_batch(float *out, const float *nol, const float *nov,
                                    const float *alpha, size_t n);
-void facet_g_implicit_f32_fast_batch(float *out, const float *nol, const float *nov, size_t n);
-void facet_g_neumann_f32_fast_batch(float *out, const float *nol, const float *nov, size_t n);
-void facet_g_cook_torrance_f32_fast_batch(float *out, const float *nol, const float *nov,
-                                          const float *noh, const float *voh, size_t n);
-void facet_g_kelemen_f32_fast_batch(float *out, const float *nol, const float *nov,
-                                    const float *voh, size_t n);
-void facet_smith_g1_beckmann_f32_fast_batch(float *out, const float *nov, const float *alpha,
-                                            size_t n);
-void facet_smith_g1_schlick_beckmann_f32_fast_batch(float *out, const float *nov,
-                                                    const float *alpha, size_t n);
-void facet_smith_vis_joint_approx_f32_fast_batch(float *out, const float *nol, const float *nov,
-                                                 const float *alpha, size_t n);
 void facet_smith_vis_fit_f32_fast_batch(float *out, const float *nol, const float *nov,
                                         const float *alpha, size_t n);
+
+/* ==== Diffuse =================================================================
+ * BRDF values (not yet times N.L).  Lambert, Hammon's GGX diffuse and its
+ * hybrid and cheaper variants, Burley's and Oren-Nayar's.  These models have
+ * no exact reference in facet (Hammon fitted his to a path-traced
+ * microsurface), so no model error is stated; their directional albedo
+ * (albedo = 1, by quadrature over N.V in {1, 0.5, 0.1, 0.01} and alpha in
+ * {2^-10, 1/4, 1/2, 1}, tests/oracle/test_oracle.c) is what separates them:
+ * Lambert 1 exactly, diffuse_hammon 0.050 .. 1.162, the others in their
+ * contracts.  Fast tier, measured (3 M samples, avx512, the worst port) and
+ * with estimates at the architectural bound (tests/suites/15-worst-estimates.sh,
+ * 30 k samples): in each contract. */
+#define FACET_ERR_DIFFUSE_HAMMON_F32                  9.538e-07 /* 2^-20 */
+#define FACET_ERR_DIFFUSE_HAMMON_F32_FAST             1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_DIFFUSE_BURLEY_F32                  6.744e-07 /* 2^-20.5 */
+#define FACET_ERR_DIFFUSE_BURLEY_F32_FAST             1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_DIFFUSE_OREN_NAYAR_F32              6.744e-07 /* 2^-20.5 */
+#define FACET_ERR_DIFFUSE_OREN_NAYAR_F32_FAST         1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32           6.744e-07 /* 2^-20.5 */
+#define FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32_FAST      1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32            6.744e-07 /* 2^-20.5 */
+#define FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32_FAST       1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_LAMBERT_F32                         1.686e-07 /* 2^-22.5 */
+#define FACET_ERR_LAMBERT_F32_FAST                    1.686e-07 /* 2^-22.5 */
 
 /* Hammon's GGX diffuse (a BRDF value, not yet times N.L):
  *   facing = 0.5 + 0.5 L.V
@@ -497,8 +711,16 @@ void facet_smith_vis_fit_f32_fast_batch(float *out, const float *nol, const floa
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, albedo.
  * Error: <= FACET_ERR_DIFFUSE_HAMMON_F32 (2^-20); measured max 2^-20.59 (worst port,
  * 30 M samples) at (0.331329554, 0.331329554, 0.999999702, 0.0131228399, 0.645663142).
+ * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_F32_FAST (2^-12.5).
  * Cost: 50 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, float albedo);
+float facet_diffuse_hammon_f32_fast(float nol, float nov, float lov, float alpha, float albedo);
+void facet_diffuse_hammon_f32_batch(float *out, const float *nol, const float *nov,
+                                    const float *lov, const float *alpha, const float *albedo,
+                                    size_t n);
+void facet_diffuse_hammon_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                    const float *lov, const float *alpha, const float *albedo,
+                                    size_t n);
 
 /* Burley's diffuse ("Disney", 2012), a BRDF value:
  *   f_d90  = 0.5 + 2 r L.H^2,  r = sqrt(alpha), Disney's roughness (the
@@ -513,8 +735,17 @@ float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, flo
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.H, alpha, albedo.
  * Error: <= FACET_ERR_DIFFUSE_BURLEY_F32 (2^-20.5); measured max 2^-21.09 (worst port,
  * 3 M samples) at (0.00749915093, 0.00748796575, 0.00142297987, 0.191616133, 0.978153765).
+ * f32_fast: <= FACET_ERR_DIFFUSE_BURLEY_F32_FAST (2^-12.5); measured
+ * 2^-13.55 (avx512, 3 M samples).
  * Cost: 39 ops (1 rsqrt, 0 rcp). */
 float facet_diffuse_burley_f32(float nol, float nov, float loh, float alpha, float albedo);
+float facet_diffuse_burley_f32_fast(float nol, float nov, float loh, float alpha, float albedo);
+void facet_diffuse_burley_f32_batch(float *out, const float *nol, const float *nov,
+                                    const float *loh, const float *alpha, const float *albedo,
+                                    size_t n);
+void facet_diffuse_burley_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                         const float *loh, const float *alpha,
+                                         const float *albedo, size_t n);
 
 /* Oren-Nayar's qualitative diffuse with sigma = alpha / 2 (radians; the
  * mapping of Hammon's comparison), a BRDF value:
@@ -531,8 +762,17 @@ float facet_diffuse_burley_f32(float nol, float nov, float loh, float alpha, flo
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, albedo.
  * Error: <= FACET_ERR_DIFFUSE_OREN_NAYAR_F32 (2^-20.5); measured max 2^-21.19 (worst port,
  * 3 M samples) at (0.0482582487, 0.0482582487, 1, 0.223686263, 2.82182633e-08).
+ * f32_fast: <= FACET_ERR_DIFFUSE_OREN_NAYAR_F32_FAST (2^-12.5); measured
+ * 2^-14.17 (avx512, 3 M samples).
  * Cost: 34 ops (0 rsqrt, 1 rcp). */
 float facet_diffuse_oren_nayar_f32(float nol, float nov, float lov, float alpha, float albedo);
+float facet_diffuse_oren_nayar_f32_fast(float nol, float nov, float lov, float alpha, float albedo);
+void facet_diffuse_oren_nayar_f32_batch(float *out, const float *nol, const float *nov,
+                                        const float *lov, const float *alpha, const float *albedo,
+                                        size_t n);
+void facet_diffuse_oren_nayar_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                             const float *lov, const float *alpha,
+                                             const float *albedo, size_t n);
 
 /* Hammon's hybrid diffuse: diffuse_hammon with the smooth term taken from
  * Disney's at f_d90 = 1/2,
@@ -545,9 +785,20 @@ float facet_diffuse_oren_nayar_f32(float nol, float nov, float lov, float alpha,
  * Domain: as diffuse_hammon.
  * Error: <= FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32 (2^-20.5); measured max 2^-20.88 (worst port,
  * 3 M samples) at (0.000297121675, 2.25166241e-06, 0.855512679, 0.0379198343, 0.816826582).
+ * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32_FAST (2^-12.5); measured
+ * 2^-13.47 (avx512, 3 M samples), 2^-13.01 with estimates at the
+ * architectural bound (avx512).
  * Cost: 53 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_hybrid_f32(float nol, float nov, float lov, float alpha,
                                       float albedo);
+float facet_diffuse_hammon_hybrid_f32_fast(float nol, float nov, float lov, float alpha,
+                                           float albedo);
+void facet_diffuse_hammon_hybrid_f32_batch(float *out, const float *nol, const float *nov,
+                                           const float *lov, const float *alpha,
+                                           const float *albedo, size_t n);
+void facet_diffuse_hammon_hybrid_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                                const float *lov, const float *alpha,
+                                                const float *albedo, size_t n);
 
 /* Hammon's cheaper diffuse: diffuse_hammon with smooth = 1 (Lambert):
  *   result = albedo (((1 - alpha) + alpha rough) / pi + albedo 0.1159 alpha).
@@ -556,9 +807,39 @@ float facet_diffuse_hammon_hybrid_f32(float nol, float nov, float lov, float alp
  * Domain: as diffuse_hammon.
  * Error: <= FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32 (2^-20.5); measured max 2^-20.86 (worst port,
  * 3 M samples) at (9.97556413e-07, 2.99169169e-05, -0.263197154, 0.189148799, 0.589178443).
+ * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32_FAST (2^-12.5); measured
+ * 2^-13.42 (avx512, 3 M samples), 2^-13.01 with estimates at the
+ * architectural bound (avx512).
  * Cost: 36 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_cheap_f32(float nol, float nov, float lov, float alpha,
                                      float albedo);
+float facet_diffuse_hammon_cheap_f32_fast(float nol, float nov, float lov, float alpha,
+                                          float albedo);
+void facet_diffuse_hammon_cheap_f32_batch(float *out, const float *nol, const float *nov,
+                                          const float *lov, const float *alpha,
+                                          const float *albedo, size_t n);
+void facet_diffuse_hammon_cheap_f32_fast_batch(float *out, const float *nol, const float *nov,
+                                               const float *lov, const float *alpha,
+                                               const float *albedo, size_t n);
+
+/* Lambert: albedo / pi.  Domain: albedo in [0, 1].
+ * Error: <= FACET_ERR_LAMBERT_F32 (2^-22.5); measured max 2^-23.26 (worst port,
+ * 30 M samples) at (0.196352884).
+ * f32_fast: the same code (no reciprocal), FACET_ERR_LAMBERT_F32_FAST
+ * (2^-22.5).
+ * Cost: 5 ops (0 rsqrt, 0 rcp). */
+float facet_lambert_f32(float albedo);
+float facet_lambert_f32_fast(float albedo);
+void facet_lambert_f32_batch(float *out, const float *albedo, size_t n);
+void facet_lambert_f32_fast_batch(float *out, const float *albedo, size_t n);
+
+/* ==== The whole BRDF ==========================================================
+ * Hammon's model, per light: GGX D, Hammon's visibility, Schlick's Fresnel
+ * and Hammon's diffuse from the three dots; then its RGB forms (one
+ * geometry, three channels), the batches over uniform materials, and the
+ * vector entry that takes N, L, V. */
+#define FACET_ERR_BRDF_HAMMON_F32                     2.698e-06 /* 2^-18.5 */
+#define FACET_ERR_BRDF_HAMMON_F32_FAST                1.726e-04 /* 2^-12.5 */
 
 /* The whole model, per light:
  *   brdf = D(N.H) Vis_hammon(N.L, N.V) F(f0, L.H) + diffuse_hammon
@@ -571,83 +852,34 @@ float facet_diffuse_hammon_cheap_f32(float nol, float nov, float lov, float alph
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, f0, albedo.
  * Error: <= FACET_ERR_BRDF_HAMMON_F32 (2^-18.5); measured max 2^-19.30 (worst port,
  * 30 M samples) at (0.683041394, 0.683041394, -0.0669089183, 0.00208292552, 3.8500432e-11, 4.40309833e-09).
+ * f32_fast: <= FACET_ERR_BRDF_HAMMON_F32_FAST (2^-12.5); the Fresnel tail's
+ * 1 - L.H, raised to the fifth power, is refined fully in both tiers;
+ * measured worst 2^-13.00 (avx512).
  * Cost: 103 ops (1 rsqrt, 3 rcp). */
 float facet_brdf_hammon_f32(float nol, float nov, float lov, float alpha,
                             float f0, float albedo);
+float facet_brdf_hammon_f32_fast(float nol, float nov, float lov, float alpha,
+                            float f0, float albedo);
+void facet_brdf_hammon_f32_batch(float *out, const float *nol, const float *nov, const float *lov,
+                                 const float *alpha, const float *f0, const float *albedo, size_t n);
+void facet_brdf_hammon_f32_fast_batch(float *out, const float *nol, const float *nov, const float *lov,
+                                 const float *alpha, const float *f0, const float *albedo, size_t n);
 
 /* brdf_hammon for an RGB f0 and albedo, the geometry (D, Vis, 1 - L.H, the
  * diffuse shape) computed once: out[c] equals
- * facet_brdf_hammon_f32(nol, nov, lov, alpha, f0[c], albedo[c]) bit for bit.
- * Every port header has the same as facet_brdf_hammon_rgb_f32_<port>(out[3],
- * ..., const V f0[3], const V albedo[3]) on its vector type. */
+ * facet_brdf_hammon_f32(nol, nov, lov, alpha, f0[c], albedo[c]) bit for bit
+ * (_f32_fast: facet_brdf_hammon_f32_fast's).  Every port header has the same
+ * on its vector type V, one pointer per output channel and one argument per
+ * input channel (sizeless vector types such as RVV's cannot be array
+ * elements):
+ *   facet_brdf_hammon_rgb_f32_<port>(V *out_r, V *out_g, V *out_b, V nol,
+ *       V nov, V lov, V alpha, V f0_r, V f0_g, V f0_b, V albedo_r,
+ *       V albedo_g, V albedo_b)
+ * and facet_brdf_hammon_rgb_f32_fast_<port>(...) likewise. */
 void facet_brdf_hammon_rgb_f32(float out[3], float nol, float nov, float lov,
                                float alpha, const float f0[3], const float albedo[3]);
-
-/* Lambert: albedo / pi.  Domain: albedo in [0, 1].
- * Error: <= FACET_ERR_LAMBERT_F32 (2^-22.5); measured max 2^-23.26 (worst port,
- * 30 M samples) at (0.196352884).
- * Cost: 5 ops (0 rsqrt, 0 rcp). */
-float facet_lambert_f32(float albedo);
-
-/* ---- batch API -------------------------------------------------------------
- * facet_<kernel>_f32_batch(out, in1, ..., n): out[i] = kernel(in1[i], ...)
- * for i < n, structure-of-arrays, inputs in the order above.  Any n (tails
- * are handled), no alignment requirement.  out may be exactly the same array
- * as any input (out == in: each element is read before it is written); no
- * other overlap (out shifted against an input gives results that depend on
- * the port's vector width).  Runs on
- * the best port for this CPU, chosen once and thread-safely on first use:
- * avx512 > avx2 > sse2 on x86, neon on ARM, else scalar.  Every port meets the
- * bounds above (tests/f32/test_f32_accuracy.c runs each kernel on each port);
- * results may differ between ports by rounding, within those bounds. */
-void facet_noh_from_dots_f32_batch(float *out, const float *nol, const float *nov,
-                                   const float *lov, size_t n);
-void facet_loh_from_dots_f32_batch(float *out, const float *lov, size_t n);
-void facet_fresnel_schlick_f32_batch(float *out, const float *f0, const float *cos_theta, size_t n);
-void facet_fresnel_cook_torrance_f32_batch(float *out, const float *f0, const float *voh, size_t n);
-void facet_fresnel_schlick_f90_f32_batch(float *out, const float *f0, const float *f90,
-                                         const float *voh, size_t n);
-void facet_fresnel_schlick_sg_f32_batch(float *out, const float *f0, const float *cos_theta,
-                                        size_t n);
-void facet_ggx_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
-void facet_blinn_phong_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
-void facet_beckmann_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
-void facet_ggx_aniso_d_f32_batch(float *out, const float *noh, const float *toh, const float *boh,
-                                 const float *alpha_x, const float *alpha_y, size_t n);
-void facet_gtr_d_f32_batch(float *out, const float *noh, const float *alpha, const float *gamma,
-                           size_t n);
-void facet_smith_g1_f32_batch(float *out, const float *nov, const float *alpha, size_t n);
-void facet_smith_g2_f32_batch(float *out, const float *nol, const float *nov, const float *alpha,
-                              size_t n);
-void facet_smith_g2_uncorrelated_f32_batch(float *out, const float *nol, const float *nov,
-                                           const float *alpha, size_t n);
-void facet_smith_vis_f32_batch(float *out, const float *nol, const float *nov, const float *alpha,
-                               size_t n);
-void facet_smith_g1_hammon_f32_batch(float *out, const float *nov, const float *alpha, size_t n);
-void facet_smith_g1_gtr_f32_batch(float *out, const float *nov, const float *alpha,
-                                  const float *gamma, size_t n);
-void facet_smith_g2_hammon_f32_batch(float *out, const float *nol, const float *nov,
-                                     const float *alpha, size_t n);
-void facet_smith_vis_hammon_f32_batch(float *out, const float *nol, const float *nov,
-                                      const float *alpha, size_t n);
-void facet_diffuse_hammon_f32_batch(float *out, const float *nol, const float *nov,
-                                    const float *lov, const float *alpha, const float *albedo,
-                                    size_t n);
-void facet_diffuse_burley_f32_batch(float *out, const float *nol, const float *nov,
-                                    const float *loh, const float *alpha, const float *albedo,
-                                    size_t n);
-void facet_diffuse_oren_nayar_f32_batch(float *out, const float *nol, const float *nov,
-                                        const float *lov, const float *alpha, const float *albedo,
-                                        size_t n);
-void facet_diffuse_hammon_hybrid_f32_batch(float *out, const float *nol, const float *nov,
-                                           const float *lov, const float *alpha,
-                                           const float *albedo, size_t n);
-void facet_diffuse_hammon_cheap_f32_batch(float *out, const float *nol, const float *nov,
-                                          const float *lov, const float *alpha,
-                                          const float *albedo, size_t n);
-void facet_brdf_hammon_f32_batch(float *out, const float *nol, const float *nov, const float *lov,
-                                 const float *alpha, const float *f0, const float *albedo, size_t n);
-void facet_lambert_f32_batch(float *out, const float *albedo, size_t n);
+void facet_brdf_hammon_rgb_f32_fast(float out[3], float nol, float nov, float lov,
+                               float alpha, const float f0[3], const float albedo[3]);
 
 /* ---- RGB batches, uniform materials, the vector entry ----------------------
  * A material whose parameters are the same for many samples, passed once:
@@ -671,7 +903,7 @@ typedef struct facet_material_f32 {
  * channel's f0 or albedo that channel).  Runs on the active port, any n,
  * any alignment; an output may be the very same array (same layout) as an
  * input, no other overlap.  Cost per sample: one brdf_hammon geometry and
- * three channel tails (`build/facet-bench api`, README "Per-pixel use":
+ * three channel tails (measured by `build/facet-bench api`:
  * 0.48x to 0.64x the time of three brdf_hammon batches
  * on every port; the material forms 6-11% faster than planar arrays of the
  * same values; the interleaved forms gather through the stack, 1.9x to
@@ -737,151 +969,17 @@ typedef struct facet_dirs_f32 {
  * rounding is the caller's geometry), plus one rounding for the factor.
  * Cost: 15 scalar ops for the three dots, 2 compares and 3 multiplies for
  * the factor, then facet_brdf_hammon_rgb_f32 (the scalar port: measured
- * within noise of that call alone, README "Per-pixel use"). */
+ * within noise of that call alone, `build/facet-bench api`). */
 void facet_shade_hammon_rgb_f32(float out[3], const facet_dirs_f32 *dirs,
                                 const facet_material_f32 *m);
 /* the same on facet_brdf_hammon_rgb_f32_fast */
 void facet_shade_hammon_rgb_f32_fast(float out[3], const facet_dirs_f32 *dirs,
                                      const facet_material_f32 *m);
 
-/* ---- the fast tier (f32_fast) ------------------------------------------
- * facet_<kernel>_f32_fast, facet_<kernel>_f32_fast_batch and, in each port
- * header, facet_<kernel>_f32_fast_<port>: the same formula, domain,
- * out-of-domain behaviour (finite, >= 0 for every input), symmetry and
- * operation count as the precise kernel above, the same formulation (the
- * specular peak's cancellation is still formed exactly), and each port's
- * cheaper reciprocal and rsqrt: scalar rsqrt with 2 Newton steps (not 3,
- * the reciprocal is the division in both tiers); sse2 rcpps / rsqrtps and
- * avx2 estimates with one Newton step (the precise tier: IEEE division /
- * square root, and one third-order step); avx512 the 14-bit estimates
- * unrefined (the precise tier: one Newton step); neon 2 steps (not 3).  Where an error is raised to the fifth
- * power (brdf_hammon's 1 - L.H) both tiers refine fully.  fresnel_schlick
- * and lambert have no reciprocal: both tiers are the same code.  Bounds:
- * relative error vs the oracle, measured over the precise tier's sweep on
- * every port, also with estimates at the architectural bound (worst:
- * avx512, e.g. smith_g2_uncorrelated 2^-12.43, brdf_hammon 2^-13.00),
- * enforced by the same tests; all <= 2^-12.  fresnel_cook_torrance refines
- * fully in both tiers (its F goes as the fourth power of a rooted term);
- * fresnel_schlick_f90 has no reciprocal.  Measured (3 M samples, avx512,
- * the worst port): diffuse_burley 2^-13.55, diffuse_oren_nayar 2^-14.17,
- * diffuse_hammon_hybrid 2^-13.47, diffuse_hammon_cheap 2^-13.42; with
- * estimates at the architectural bound (tests/suites/15-worst-estimates.sh,
- * 30 k samples) at most 2^-13.01 (hybrid and cheap, avx512).  The D terms
- * beyond GGX: blinn_phong_d and beckmann_d are the precise code (every
- * reciprocal is raised to a power); ggx_aniso_d measured 2^-14.18, gtr_d
- * 2^-13.63 (2^-12.95 with estimates at the architectural bound),
- * smith_g1_gtr 2^-14.01 (avx512, estimates at the bound). */
-#define FACET_ERR_NOH_FROM_DOTS_F32_FAST          8.632e-05 /* 2^-13.5 */
-#define FACET_ERR_LOH_FROM_DOTS_F32_FAST          8.632e-05 /* 2^-13.5 */
-#define FACET_ERR_FRESNEL_SCHLICK_F32_FAST        4.769e-07 /* 2^-21 */
-#define FACET_ERR_FRESNEL_COOK_TORRANCE_F32_FAST  1.907e-06 /* 2^-19 */
-#define FACET_ERR_FRESNEL_SCHLICK_F90_F32_FAST    4.769e-07 /* 2^-21 */
-#define FACET_ERR_FRESNEL_SCHLICK_SG_F32_FAST     1.349e-06 /* 2^-19.5 */
-#define FACET_ERR_GGX_D_F32_FAST                  1.726e-04 /* 2^-12.5 */
-#define FACET_ERR_BLINN_PHONG_D_F32_FAST          3.052e-05 /* 2^-15 */
-#define FACET_ERR_BECKMANN_D_F32_FAST             3.052e-05 /* 2^-15 */
-#define FACET_ERR_GGX_ANISO_D_F32_FAST            8.632e-05 /* 2^-13.5 */
-#define FACET_ERR_GTR_D_F32_FAST                  1.726e-04 /* 2^-12.5 */
-#define FACET_ERR_SMITH_G1_F32_FAST               1.726e-04 /* 2^-12.5 */
-#define FACET_ERR_SMITH_G2_F32_FAST               1.726e-04 /* 2^-12.5 */
-#define FACET_ERR_SMITH_G2_UNCORRELATED_F32_FAST  2.441e-04 /* 2^-12 */
-#define FACET_ERR_SMITH_VIS_F32_FAST              1.726e-04 /* 2^-12.5 */
-#define FACET_ERR_SMITH_G1_HAMMON_F32_FAST        8.632e-05 /* 2^-13.5 */
-#define FACET_ERR_SMITH_G1_GTR_F32_FAST           1.221e-04 /* 2^-13 */
-#define FACET_ERR_SMITH_G2_HAMMON_F32_FAST        8.632e-05 /* 2^-13.5 */
-#define FACET_ERR_SMITH_VIS_HAMMON_F32_FAST       8.632e-05 /* 2^-13.5 */
-#define FACET_ERR_DIFFUSE_HAMMON_F32_FAST         1.726e-04 /* 2^-12.5 */
-#define FACET_ERR_DIFFUSE_BURLEY_F32_FAST         1.726e-04 /* 2^-12.5 */
-#define FACET_ERR_DIFFUSE_OREN_NAYAR_F32_FAST     1.726e-04 /* 2^-12.5 */
-#define FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32_FAST  1.726e-04 /* 2^-12.5 */
-#define FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32_FAST   1.726e-04 /* 2^-12.5 */
-#define FACET_ERR_BRDF_HAMMON_F32_FAST            1.726e-04 /* 2^-12.5 */
-#define FACET_ERR_LAMBERT_F32_FAST                1.686e-07 /* 2^-22.5 */
-
-float facet_noh_from_dots_f32_fast(float nol, float nov, float lov);
-float facet_loh_from_dots_f32_fast(float lov);
-float facet_fresnel_schlick_f32_fast(float f0, float cos_theta);
-float facet_fresnel_cook_torrance_f32_fast(float f0, float voh);
-float facet_fresnel_schlick_f90_f32_fast(float f0, float f90, float voh);
-float facet_fresnel_schlick_sg_f32_fast(float f0, float cos_theta);
-float facet_ggx_d_f32_fast(float noh, float alpha);
-float facet_blinn_phong_d_f32_fast(float noh, float alpha);
-float facet_beckmann_d_f32_fast(float noh, float alpha);
-float facet_ggx_aniso_d_f32_fast(float noh, float toh, float boh, float alpha_x, float alpha_y);
-float facet_gtr_d_f32_fast(float noh, float alpha, float gamma);
-float facet_smith_g1_f32_fast(float nov, float alpha);
-float facet_smith_g2_f32_fast(float nol, float nov, float alpha);
-float facet_smith_g2_uncorrelated_f32_fast(float nol, float nov, float alpha);
-float facet_smith_vis_f32_fast(float nol, float nov, float alpha);
-float facet_smith_g1_hammon_f32_fast(float nov, float alpha);
-float facet_smith_g1_gtr_f32_fast(float nov, float alpha, float gamma);
-float facet_smith_g2_hammon_f32_fast(float nol, float nov, float alpha);
-float facet_smith_vis_hammon_f32_fast(float nol, float nov, float alpha);
-float facet_diffuse_hammon_f32_fast(float nol, float nov, float lov, float alpha, float albedo);
-float facet_diffuse_burley_f32_fast(float nol, float nov, float loh, float alpha, float albedo);
-float facet_diffuse_oren_nayar_f32_fast(float nol, float nov, float lov, float alpha, float albedo);
-float facet_diffuse_hammon_hybrid_f32_fast(float nol, float nov, float lov, float alpha,
-                                           float albedo);
-float facet_diffuse_hammon_cheap_f32_fast(float nol, float nov, float lov, float alpha,
-                                          float albedo);
-float facet_brdf_hammon_f32_fast(float nol, float nov, float lov, float alpha,
-                            float f0, float albedo);
-float facet_lambert_f32_fast(float albedo);
-void facet_brdf_hammon_rgb_f32_fast(float out[3], float nol, float nov, float lov,
-                               float alpha, const float f0[3], const float albedo[3]);
-void facet_noh_from_dots_f32_fast_batch(float *out, const float *nol, const float *nov,
-                                   const float *lov, size_t n);
-void facet_loh_from_dots_f32_fast_batch(float *out, const float *lov, size_t n);
-void facet_fresnel_schlick_f32_fast_batch(float *out, const float *f0, const float *cos_theta, size_t n);
-void facet_fresnel_cook_torrance_f32_fast_batch(float *out, const float *f0, const float *voh,
-                                                size_t n);
-void facet_fresnel_schlick_f90_f32_fast_batch(float *out, const float *f0, const float *f90,
-                                              const float *voh, size_t n);
-void facet_fresnel_schlick_sg_f32_fast_batch(float *out, const float *f0,
-                                             const float *cos_theta, size_t n);
-void facet_ggx_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
-void facet_blinn_phong_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
-void facet_beckmann_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
-void facet_ggx_aniso_d_f32_fast_batch(float *out, const float *noh, const float *toh,
-                                      const float *boh, const float *alpha_x,
-                                      const float *alpha_y, size_t n);
-void facet_gtr_d_f32_fast_batch(float *out, const float *noh, const float *alpha,
-                                const float *gamma, size_t n);
-void facet_smith_g1_f32_fast_batch(float *out, const float *nov, const float *alpha, size_t n);
-void facet_smith_g2_f32_fast_batch(float *out, const float *nol, const float *nov, const float *alpha,
-                              size_t n);
-void facet_smith_g2_uncorrelated_f32_fast_batch(float *out, const float *nol, const float *nov,
-                                           const float *alpha, size_t n);
-void facet_smith_vis_f32_fast_batch(float *out, const float *nol, const float *nov, const float *alpha,
-                               size_t n);
-void facet_smith_g1_hammon_f32_fast_batch(float *out, const float *nov, const float *alpha, size_t n);
-void facet_smith_g1_gtr_f32_fast_batch(float *out, const float *nov, const float *alpha,
-                                       const float *gamma, size_t n);
-void facet_smith_g2_hammon_f32_fast_batch(float *out, const float *nol, const float *nov,
-                                     const float *alpha, size_t n);
-void facet_smith_vis_hammon_f32_fast_batch(float *out, const float *nol, const float *nov,
-                                      const float *alpha, size_t n);
-void facet_diffuse_hammon_f32_fast_batch(float *out, const float *nol, const float *nov,
-                                    const float *lov, const float *alpha, const float *albedo,
-                                    size_t n);
-void facet_diffuse_burley_f32_fast_batch(float *out, const float *nol, const float *nov,
-                                         const float *loh, const float *alpha,
-                                         const float *albedo, size_t n);
-void facet_diffuse_oren_nayar_f32_fast_batch(float *out, const float *nol, const float *nov,
-                                             const float *lov, const float *alpha,
-                                             const float *albedo, size_t n);
-void facet_diffuse_hammon_hybrid_f32_fast_batch(float *out, const float *nol, const float *nov,
-                                                const float *lov, const float *alpha,
-                                                const float *albedo, size_t n);
-void facet_diffuse_hammon_cheap_f32_fast_batch(float *out, const float *nol, const float *nov,
-                                               const float *lov, const float *alpha,
-                                               const float *albedo, size_t n);
-void facet_brdf_hammon_f32_fast_batch(float *out, const float *nol, const float *nov, const float *lov,
-                                 const float *alpha, const float *f0, const float *albedo, size_t n);
-void facet_lambert_f32_fast_batch(float *out, const float *albedo, size_t n);
-
-/* Ports.  facet_set_port(name) forces one for all batch calls in the process:
- * "scalar", "sse2", "avx2", "avx512", "neon", or "auto" (the automatic choice).  Returns
+/* ---- ports -----------------------------------------------------------------
+ * facet_set_port(name) forces one for all batch calls in the process:
+ * "scalar", "sse2", "avx2", "avx512", "neon", "helium", "rvv" (those compiled
+ * into this build: facet_port_at), or "auto" (the automatic choice).  Returns
  * 0 on success, 1 for a name not compiled into this build, 2 for a port this
  * CPU cannot run (the active port is then unchanged).  The environment
  * variable FACET_PORT names the initial choice the same way; an unknown or
@@ -922,7 +1020,7 @@ size_t facet_kernel_count(void);
 const facet_kernel *facet_kernel_at(size_t i);
 const facet_kernel *facet_kernel_find(const char *name); /* NULL if unknown */
 
-/* ---- GGX and GTR importance sampling ----------------------------------------
+/* ==== GGX and GTR importance sampling ========================================
  * Samplers of half vectors h (the microfacet normal) in the shading frame
  * (N = +z) and their pdfs (per unit solid angle of h), f32 in both tiers,
  * inline in every port header (facet_<sampler>_f32_<port>(V h[3], ...),
@@ -962,7 +1060,17 @@ const facet_kernel *facet_kernel_find(const char *name); /* NULL if unknown */
  *     estimator by a white furnace (tests/sample/test_sample_furnace.c).
  *   - Cost: operations as the kernels' (tests/sample/test_sample_prims.c counts
  *     them; the exponent-bit ops exp2i, getexp, getmant count 1).
- *
+ *   - Batch: SoA outputs first (hx, hy, hz / lx, ly, lz / out / sin, cos),
+ *     then the inputs in the order of the one-sample call; any n, no
+ *     alignment requirement, outputs may alias inputs; runs on the port the
+ *     kernels run on (facet_set_port, FACET_PORT).
+ *   - Declarations: as the kernels', per sampler or pdf facet_<name>_f32,
+ *     facet_<name>_f32_fast, facet_<name>_f32_batch and
+ *     facet_<name>_f32_fast_batch; below, one block per kind of sampling,
+ *     each with its bounds (FACET_ERR_<NAME>_F32[_FAST]), contracts and
+ *     declarations. */
+
+/* ---- sampling D: GGX, isotropic and anisotropic --------------------------
  * ggx_sample_d(h, u1, u2, alpha): GGX D importance sampling,
  *   h = normalize(alpha sqrt(u1) cos phi, alpha sqrt(u1) sin phi, sqrt(1 - u1)),
  *   i.e. tan^2 theta_h = alpha^2 u1 / (1 - u1), cos^2 theta_h =
@@ -982,8 +1090,43 @@ const facet_kernel *facet_kernel_find(const char *name); /* NULL if unknown */
  *   k = (hx/ax)^2 + (hy/ay)^2 + hz^2 (h unit; hx, hy clamped to [-1, 1],
  *   hz to [0, 1], k floored at 1/2).
  *   Error <= 2^-20 (f32; measured 2^-20.76, sse2), 2^-13.5 (fast; 2^-14.00, avx512).
- *   Cost: 27 ops (0 rsqrt, 1 rcp).
- *
+ *   Cost: 27 ops (0 rsqrt, 1 rcp). */
+#define FACET_ERR_GGX_SAMPLE_D_F32                    2.384e-07 /* 2^-22, distance */
+#define FACET_ERR_GGX_SAMPLE_D_F32_FAST               8.632e-05 /* 2^-13.5, distance */
+#define FACET_ERR_GGX_PDF_D_F32                       9.537e-07 /* 2^-20 */
+#define FACET_ERR_GGX_PDF_D_F32_FAST                  1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_GGX_SAMPLE_D_ANISO_F32              3.372e-07 /* 2^-21.5, distance */
+#define FACET_ERR_GGX_SAMPLE_D_ANISO_F32_FAST         8.632e-05 /* 2^-13.5, distance */
+#define FACET_ERR_GGX_PDF_D_ANISO_F32                 9.537e-07 /* 2^-20 */
+#define FACET_ERR_GGX_PDF_D_ANISO_F32_FAST            8.632e-05 /* 2^-13.5 */
+void facet_ggx_sample_d_f32(float h[3], float u1, float u2, float alpha);
+void facet_ggx_sample_d_f32_fast(float h[3], float u1, float u2, float alpha);
+void facet_ggx_sample_d_f32_batch(float *hx, float *hy, float *hz, const float *u1,
+                                  const float *u2, const float *alpha, size_t n);
+void facet_ggx_sample_d_f32_fast_batch(float *hx, float *hy, float *hz, const float *u1,
+                                       const float *u2, const float *alpha, size_t n);
+float facet_ggx_pdf_d_f32(float noh, float alpha);
+float facet_ggx_pdf_d_f32_fast(float noh, float alpha);
+void facet_ggx_pdf_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_ggx_pdf_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
+void facet_ggx_sample_d_aniso_f32(float h[3], float u1, float u2, float alpha_x, float alpha_y);
+void facet_ggx_sample_d_aniso_f32_fast(float h[3], float u1, float u2, float alpha_x, float alpha_y);
+void facet_ggx_sample_d_aniso_f32_batch(float *hx, float *hy, float *hz, const float *u1,
+                                        const float *u2, const float *alpha_x,
+                                        const float *alpha_y, size_t n);
+void facet_ggx_sample_d_aniso_f32_fast_batch(float *hx, float *hy, float *hz, const float *u1,
+                                             const float *u2, const float *alpha_x,
+                                             const float *alpha_y, size_t n);
+float facet_ggx_pdf_d_aniso_f32(float hx, float hy, float hz, float alpha_x, float alpha_y);
+float facet_ggx_pdf_d_aniso_f32_fast(float hx, float hy, float hz, float alpha_x, float alpha_y);
+void facet_ggx_pdf_d_aniso_f32_batch(float *out, const float *hx, const float *hy,
+                                     const float *hz, const float *alpha_x,
+                                     const float *alpha_y, size_t n);
+void facet_ggx_pdf_d_aniso_f32_fast_batch(float *out, const float *hx, const float *hy,
+                                          const float *hz, const float *alpha_x,
+                                          const float *alpha_y, size_t n);
+
+/* ---- sampling the visible normals (VNDF), and the reflected direction -----
  * ggx_sample_vndf(h, vx, vy, vz, u1, u2, alpha): visible-normal sampling
  *   for the view v (Heitz 2018, in the spherical-cap form: Vh =
  *   normalize(alpha vx, alpha vy, vz), c uniform on the unit sphere with
@@ -1020,8 +1163,76 @@ const facet_kernel *facet_kernel_find(const char *name); /* NULL if unknown */
  *   ggx_pdf_vndf / (4 V.H) = D G1(v) / (4 N.V); 0 where V.H <= 0.  The
  *   estimator f N.L / pdf of the GGX specular term is then G2 / G1(v).
  *   Error <= 2^-20 (f32; measured 2^-20.65, sse2), 2^-12 (fast; 2^-12.43, avx512).
- *   Cost: 28 ops (1 rsqrt, 2 rcp).
- *
+ *   Cost: 28 ops (1 rsqrt, 2 rcp). */
+#define FACET_ERR_GGX_SAMPLE_VNDF_F32                 3.372e-07 /* 2^-21.5, distance */
+#define FACET_ERR_GGX_SAMPLE_VNDF_F32_FAST            2.441e-04 /* 2^-12, distance */
+#define FACET_ERR_GGX_SAMPLE_VNDF_ANISO_F32           4.768e-07 /* 2^-21, distance */
+#define FACET_ERR_GGX_SAMPLE_VNDF_ANISO_F32_FAST      2.441e-04 /* 2^-12, distance */
+#define FACET_ERR_GGX_PDF_VNDF_F32                    9.537e-07 /* 2^-20 */
+#define FACET_ERR_GGX_PDF_VNDF_F32_FAST               2.441e-04 /* 2^-12 */
+#define FACET_ERR_GGX_PDF_VNDF_ANISO_F32              9.537e-07 /* 2^-20 */
+#define FACET_ERR_GGX_PDF_VNDF_ANISO_F32_FAST         1.726e-04 /* 2^-12.5 */
+#define FACET_ERR_REFLECT_F32                         3.372e-07 /* 2^-21.5, distance */
+#define FACET_ERR_REFLECT_F32_FAST                    3.372e-07 /* 2^-21.5, distance */
+#define FACET_ERR_GGX_PDF_VNDF_REFLECT_F32            9.537e-07 /* 2^-20 */
+#define FACET_ERR_GGX_PDF_VNDF_REFLECT_F32_FAST       2.441e-04 /* 2^-12 */
+void facet_ggx_sample_vndf_f32(float h[3], float vx, float vy, float vz, float u1, float u2,
+                               float alpha);
+void facet_ggx_sample_vndf_f32_fast(float h[3], float vx, float vy, float vz, float u1, float u2,
+                                    float alpha);
+void facet_ggx_sample_vndf_f32_batch(float *hx, float *hy, float *hz, const float *vx,
+                                     const float *vy, const float *vz, const float *u1,
+                                     const float *u2, const float *alpha, size_t n);
+void facet_ggx_sample_vndf_f32_fast_batch(float *hx, float *hy, float *hz, const float *vx,
+                                          const float *vy, const float *vz, const float *u1,
+                                          const float *u2, const float *alpha, size_t n);
+void facet_ggx_sample_vndf_aniso_f32(float h[3], float vx, float vy, float vz, float u1, float u2,
+                                     float alpha_x, float alpha_y);
+void facet_ggx_sample_vndf_aniso_f32_fast(float h[3], float vx, float vy, float vz, float u1,
+                                          float u2, float alpha_x, float alpha_y);
+void facet_ggx_sample_vndf_aniso_f32_batch(float *hx, float *hy, float *hz, const float *vx,
+                                           const float *vy, const float *vz, const float *u1,
+                                           const float *u2, const float *alpha_x,
+                                           const float *alpha_y, size_t n);
+void facet_ggx_sample_vndf_aniso_f32_fast_batch(float *hx, float *hy, float *hz,
+                                                const float *vx, const float *vy,
+                                                const float *vz, const float *u1,
+                                                const float *u2, const float *alpha_x,
+                                                const float *alpha_y, size_t n);
+float facet_ggx_pdf_vndf_f32(float nov, float noh, float voh, float alpha);
+float facet_ggx_pdf_vndf_f32_fast(float nov, float noh, float voh, float alpha);
+void facet_ggx_pdf_vndf_f32_batch(float *out, const float *nov, const float *noh,
+                                  const float *voh, const float *alpha, size_t n);
+void facet_ggx_pdf_vndf_f32_fast_batch(float *out, const float *nov, const float *noh,
+                                       const float *voh, const float *alpha, size_t n);
+float facet_ggx_pdf_vndf_aniso_f32(float vx, float vy, float vz, float hx, float hy, float hz,
+                                   float alpha_x, float alpha_y);
+float facet_ggx_pdf_vndf_aniso_f32_fast(float vx, float vy, float vz, float hx, float hy, float hz,
+                                        float alpha_x, float alpha_y);
+void facet_ggx_pdf_vndf_aniso_f32_batch(float *out, const float *vx, const float *vy,
+                                        const float *vz, const float *hx, const float *hy,
+                                        const float *hz, const float *alpha_x,
+                                        const float *alpha_y, size_t n);
+void facet_ggx_pdf_vndf_aniso_f32_fast_batch(float *out, const float *vx, const float *vy,
+                                             const float *vz, const float *hx, const float *hy,
+                                             const float *hz, const float *alpha_x,
+                                             const float *alpha_y, size_t n);
+void facet_reflect_f32(float l[3], float vx, float vy, float vz, float hx, float hy, float hz);
+void facet_reflect_f32_fast(float l[3], float vx, float vy, float vz, float hx, float hy, float hz);
+void facet_reflect_f32_batch(float *lx, float *ly, float *lz, const float *vx, const float *vy,
+                             const float *vz, const float *hx, const float *hy, const float *hz,
+                             size_t n);
+void facet_reflect_f32_fast_batch(float *lx, float *ly, float *lz, const float *vx,
+                                  const float *vy, const float *vz, const float *hx,
+                                  const float *hy, const float *hz, size_t n);
+float facet_ggx_pdf_vndf_reflect_f32(float nov, float noh, float voh, float alpha);
+float facet_ggx_pdf_vndf_reflect_f32_fast(float nov, float noh, float voh, float alpha);
+void facet_ggx_pdf_vndf_reflect_f32_batch(float *out, const float *nov, const float *noh,
+                                          const float *voh, const float *alpha, size_t n);
+void facet_ggx_pdf_vndf_reflect_f32_fast_batch(float *out, const float *nov, const float *noh,
+                                               const float *voh, const float *alpha, size_t n);
+
+/* ---- sampling GTR D ----------------------------------------------------------
  * gtr_sample_d(h, u1, u2, alpha, gamma): GTR D (prop. to
  *   1 / (1 + (alpha^2 - 1) cos^2 theta)^gamma) sampling where the inverse CDF
  *   has a closed form: gamma < 1.5 samples gamma = 1 (GTR1, "Berry"),
@@ -1034,148 +1245,38 @@ const facet_kernel *facet_kernel_find(const char *name); /* NULL if unknown */
  *   (pi ln(alpha^2) (1 + (alpha^2 - 1) N.H^2)) (1/pi at alpha = 1);
  *   gamma as gtr_sample_d (GTR2: ggx_pdf_d).
  *   Error <= 2^-20 (f32; measured 2^-20.80, every port), 2^-12 (fast; 2^-12.80, avx512).
- *   Cost: 74 ops (0 rsqrt, 4 rcp).
+ *   Cost: 74 ops (0 rsqrt, 4 rcp). */
+#define FACET_ERR_GTR_SAMPLE_D_F32                    4.768e-07 /* 2^-21, distance */
+#define FACET_ERR_GTR_SAMPLE_D_F32_FAST               1.726e-04 /* 2^-12.5, distance */
+#define FACET_ERR_GTR_PDF_D_F32                       9.537e-07 /* 2^-20 */
+#define FACET_ERR_GTR_PDF_D_F32_FAST                  2.441e-04 /* 2^-12 */
+void facet_gtr_sample_d_f32(float h[3], float u1, float u2, float alpha, float gamma);
+void facet_gtr_sample_d_f32_fast(float h[3], float u1, float u2, float alpha, float gamma);
+void facet_gtr_sample_d_f32_batch(float *hx, float *hy, float *hz, const float *u1,
+                                  const float *u2, const float *alpha, const float *gamma,
+                                  size_t n);
+void facet_gtr_sample_d_f32_fast_batch(float *hx, float *hy, float *hz, const float *u1,
+                                       const float *u2, const float *alpha, const float *gamma,
+                                       size_t n);
+float facet_gtr_pdf_d_f32(float noh, float alpha, float gamma);
+float facet_gtr_pdf_d_f32_fast(float noh, float alpha, float gamma);
+void facet_gtr_pdf_d_f32_batch(float *out, const float *noh, const float *alpha,
+                               const float *gamma, size_t n);
+void facet_gtr_pdf_d_f32_fast_batch(float *out, const float *noh, const float *alpha,
+                                    const float *gamma, size_t n);
+
+/* ---- the azimuth -------------------------------------------------------------
  * sincos_2pi(sc, u): sc[0] = sin(2 pi u), sc[1] = cos(2 pi u), u as u1;
  *   the samplers' azimuth, exposed for tests and tools.  The sine keeps
  *   2^-21 relative accuracy near u = 0; sin^2 + cos^2 = 1 within 2^-22.
  *   Error <= 2^-23 (both tiers; measured 2^-23.31, sse2, on every 5th
  *   multiple of 2^-24).
- *   Cost: 27 ops.
- *
- * Batch: SoA outputs first, then the inputs in the order above; any n, no
- * alignment requirement, outputs may alias inputs; runs on the port the
- * kernels run on (facet_set_port, FACET_PORT). */
-#define FACET_ERR_GGX_SAMPLE_D_F32               2.384e-07 /* 2^-22, distance */
-#define FACET_ERR_GGX_PDF_D_F32                  9.537e-07 /* 2^-20 */
-#define FACET_ERR_GGX_SAMPLE_VNDF_F32            3.372e-07 /* 2^-21.5, distance */
-#define FACET_ERR_GGX_PDF_VNDF_F32               9.537e-07 /* 2^-20 */
-#define FACET_ERR_GGX_PDF_VNDF_REFLECT_F32       9.537e-07 /* 2^-20 */
-#define FACET_ERR_REFLECT_F32                    3.372e-07 /* 2^-21.5, distance */
-#define FACET_ERR_GGX_SAMPLE_D_ANISO_F32         3.372e-07 /* 2^-21.5, distance */
-#define FACET_ERR_GGX_PDF_D_ANISO_F32            9.537e-07 /* 2^-20 */
-#define FACET_ERR_GGX_SAMPLE_VNDF_ANISO_F32      4.768e-07 /* 2^-21, distance */
-#define FACET_ERR_GGX_PDF_VNDF_ANISO_F32         9.537e-07 /* 2^-20 */
-#define FACET_ERR_GTR_SAMPLE_D_F32               4.768e-07 /* 2^-21, distance */
-#define FACET_ERR_GTR_PDF_D_F32                  9.537e-07 /* 2^-20 */
-#define FACET_ERR_SINCOS_2PI_F32                 1.192e-07 /* 2^-23, distance */
-
-#define FACET_ERR_GGX_SAMPLE_D_F32_FAST          8.632e-05 /* 2^-13.5, distance */
-#define FACET_ERR_GGX_PDF_D_F32_FAST             1.726e-04 /* 2^-12.5 */
-#define FACET_ERR_GGX_SAMPLE_VNDF_F32_FAST       2.441e-04 /* 2^-12, distance */
-#define FACET_ERR_GGX_PDF_VNDF_F32_FAST          2.441e-04 /* 2^-12 */
-#define FACET_ERR_GGX_PDF_VNDF_REFLECT_F32_FAST  2.441e-04 /* 2^-12 */
-#define FACET_ERR_REFLECT_F32_FAST               3.372e-07 /* 2^-21.5, distance */
-#define FACET_ERR_GGX_SAMPLE_D_ANISO_F32_FAST    8.632e-05 /* 2^-13.5, distance */
-#define FACET_ERR_GGX_PDF_D_ANISO_F32_FAST       8.632e-05 /* 2^-13.5 */
-#define FACET_ERR_GGX_SAMPLE_VNDF_ANISO_F32_FAST 2.441e-04 /* 2^-12, distance */
-#define FACET_ERR_GGX_PDF_VNDF_ANISO_F32_FAST    1.726e-04 /* 2^-12.5 */
-#define FACET_ERR_GTR_SAMPLE_D_F32_FAST          1.726e-04 /* 2^-12.5, distance */
-#define FACET_ERR_GTR_PDF_D_F32_FAST             2.441e-04 /* 2^-12 */
-#define FACET_ERR_SINCOS_2PI_F32_FAST            1.192e-07 /* 2^-23, distance */
-
-void facet_ggx_sample_d_f32(float h[3], float u1, float u2, float alpha);
-float facet_ggx_pdf_d_f32(float noh, float alpha);
-void facet_ggx_sample_vndf_f32(float h[3], float vx, float vy, float vz, float u1, float u2,
-                               float alpha);
-float facet_ggx_pdf_vndf_f32(float nov, float noh, float voh, float alpha);
-float facet_ggx_pdf_vndf_reflect_f32(float nov, float noh, float voh, float alpha);
-void facet_reflect_f32(float l[3], float vx, float vy, float vz, float hx, float hy, float hz);
-void facet_ggx_sample_d_aniso_f32(float h[3], float u1, float u2, float alpha_x, float alpha_y);
-float facet_ggx_pdf_d_aniso_f32(float hx, float hy, float hz, float alpha_x, float alpha_y);
-void facet_ggx_sample_vndf_aniso_f32(float h[3], float vx, float vy, float vz, float u1, float u2,
-                                     float alpha_x, float alpha_y);
-float facet_ggx_pdf_vndf_aniso_f32(float vx, float vy, float vz, float hx, float hy, float hz,
-                                   float alpha_x, float alpha_y);
-void facet_gtr_sample_d_f32(float h[3], float u1, float u2, float alpha, float gamma);
-float facet_gtr_pdf_d_f32(float noh, float alpha, float gamma);
+ *   Cost: 27 ops. */
+#define FACET_ERR_SINCOS_2PI_F32                      1.192e-07 /* 2^-23, distance */
+#define FACET_ERR_SINCOS_2PI_F32_FAST                 1.192e-07 /* 2^-23, distance */
 void facet_sincos_2pi_f32(float sc[2], float u);
-
-void facet_ggx_sample_d_f32_fast(float h[3], float u1, float u2, float alpha);
-float facet_ggx_pdf_d_f32_fast(float noh, float alpha);
-void facet_ggx_sample_vndf_f32_fast(float h[3], float vx, float vy, float vz, float u1, float u2,
-                                    float alpha);
-float facet_ggx_pdf_vndf_f32_fast(float nov, float noh, float voh, float alpha);
-float facet_ggx_pdf_vndf_reflect_f32_fast(float nov, float noh, float voh, float alpha);
-void facet_reflect_f32_fast(float l[3], float vx, float vy, float vz, float hx, float hy, float hz);
-void facet_ggx_sample_d_aniso_f32_fast(float h[3], float u1, float u2, float alpha_x, float alpha_y);
-float facet_ggx_pdf_d_aniso_f32_fast(float hx, float hy, float hz, float alpha_x, float alpha_y);
-void facet_ggx_sample_vndf_aniso_f32_fast(float h[3], float vx, float vy, float vz, float u1,
-                                          float u2, float alpha_x, float alpha_y);
-float facet_ggx_pdf_vndf_aniso_f32_fast(float vx, float vy, float vz, float hx, float hy, float hz,
-                                        float alpha_x, float alpha_y);
-void facet_gtr_sample_d_f32_fast(float h[3], float u1, float u2, float alpha, float gamma);
-float facet_gtr_pdf_d_f32_fast(float noh, float alpha, float gamma);
 void facet_sincos_2pi_f32_fast(float sc[2], float u);
-
-/* batch: structure-of-arrays outputs first (hx, hy, hz / lx, ly, lz / out /
- * sin, cos), then the inputs; the _f32_fast_batch twins take the same. */
-void facet_ggx_sample_d_f32_batch(float *hx, float *hy, float *hz, const float *u1,
-                                  const float *u2, const float *alpha, size_t n);
-void facet_ggx_pdf_d_f32_batch(float *out, const float *noh, const float *alpha, size_t n);
-void facet_ggx_sample_vndf_f32_batch(float *hx, float *hy, float *hz, const float *vx,
-                                     const float *vy, const float *vz, const float *u1,
-                                     const float *u2, const float *alpha, size_t n);
-void facet_ggx_pdf_vndf_f32_batch(float *out, const float *nov, const float *noh,
-                                  const float *voh, const float *alpha, size_t n);
-void facet_ggx_pdf_vndf_reflect_f32_batch(float *out, const float *nov, const float *noh,
-                                          const float *voh, const float *alpha, size_t n);
-void facet_reflect_f32_batch(float *lx, float *ly, float *lz, const float *vx, const float *vy,
-                             const float *vz, const float *hx, const float *hy, const float *hz,
-                             size_t n);
-void facet_ggx_sample_d_aniso_f32_batch(float *hx, float *hy, float *hz, const float *u1,
-                                        const float *u2, const float *alpha_x,
-                                        const float *alpha_y, size_t n);
-void facet_ggx_pdf_d_aniso_f32_batch(float *out, const float *hx, const float *hy,
-                                     const float *hz, const float *alpha_x,
-                                     const float *alpha_y, size_t n);
-void facet_ggx_sample_vndf_aniso_f32_batch(float *hx, float *hy, float *hz, const float *vx,
-                                           const float *vy, const float *vz, const float *u1,
-                                           const float *u2, const float *alpha_x,
-                                           const float *alpha_y, size_t n);
-void facet_ggx_pdf_vndf_aniso_f32_batch(float *out, const float *vx, const float *vy,
-                                        const float *vz, const float *hx, const float *hy,
-                                        const float *hz, const float *alpha_x,
-                                        const float *alpha_y, size_t n);
-void facet_gtr_sample_d_f32_batch(float *hx, float *hy, float *hz, const float *u1,
-                                  const float *u2, const float *alpha, const float *gamma,
-                                  size_t n);
-void facet_gtr_pdf_d_f32_batch(float *out, const float *noh, const float *alpha,
-                               const float *gamma, size_t n);
 void facet_sincos_2pi_f32_batch(float *s, float *c, const float *u, size_t n);
-
-void facet_ggx_sample_d_f32_fast_batch(float *hx, float *hy, float *hz, const float *u1,
-                                       const float *u2, const float *alpha, size_t n);
-void facet_ggx_pdf_d_f32_fast_batch(float *out, const float *noh, const float *alpha, size_t n);
-void facet_ggx_sample_vndf_f32_fast_batch(float *hx, float *hy, float *hz, const float *vx,
-                                          const float *vy, const float *vz, const float *u1,
-                                          const float *u2, const float *alpha, size_t n);
-void facet_ggx_pdf_vndf_f32_fast_batch(float *out, const float *nov, const float *noh,
-                                       const float *voh, const float *alpha, size_t n);
-void facet_ggx_pdf_vndf_reflect_f32_fast_batch(float *out, const float *nov, const float *noh,
-                                               const float *voh, const float *alpha, size_t n);
-void facet_reflect_f32_fast_batch(float *lx, float *ly, float *lz, const float *vx,
-                                  const float *vy, const float *vz, const float *hx,
-                                  const float *hy, const float *hz, size_t n);
-void facet_ggx_sample_d_aniso_f32_fast_batch(float *hx, float *hy, float *hz, const float *u1,
-                                             const float *u2, const float *alpha_x,
-                                             const float *alpha_y, size_t n);
-void facet_ggx_pdf_d_aniso_f32_fast_batch(float *out, const float *hx, const float *hy,
-                                          const float *hz, const float *alpha_x,
-                                          const float *alpha_y, size_t n);
-void facet_ggx_sample_vndf_aniso_f32_fast_batch(float *hx, float *hy, float *hz,
-                                                const float *vx, const float *vy,
-                                                const float *vz, const float *u1,
-                                                const float *u2, const float *alpha_x,
-                                                const float *alpha_y, size_t n);
-void facet_ggx_pdf_vndf_aniso_f32_fast_batch(float *out, const float *vx, const float *vy,
-                                             const float *vz, const float *hx, const float *hy,
-                                             const float *hz, const float *alpha_x,
-                                             const float *alpha_y, size_t n);
-void facet_gtr_sample_d_f32_fast_batch(float *hx, float *hy, float *hz, const float *u1,
-                                       const float *u2, const float *alpha, const float *gamma,
-                                       size_t n);
-void facet_gtr_pdf_d_f32_fast_batch(float *out, const float *noh, const float *alpha,
-                                    const float *gamma, size_t n);
 void facet_sincos_2pi_f32_fast_batch(float *s, float *c, const float *u, size_t n);
 
 /* The sampler table, for tools that drive every sampler the same way (the

@@ -1,6 +1,6 @@
 #!/bin/sh
 # bench/cortexm/cortexm.sh BUILD_DIR OUT_TSV - Cortex-M figures for the report, from
-# executed-instruction traces.  For each build (fixed point: src/fx_*.c;
+# executed-instruction traces.  For each build (fixed point: src/fx/*.c;
 # f32: facet/scalar.h with soft float) and core, bench/cortexm/cortexm_main.c is
 # linked with tests/cortexm/ (startup, mps2.ld) and run under
 # qemu-system-arm -singlestep -d exec,nochain (one log line per executed

@@ -5,11 +5,12 @@
 # bench/cortexm/cortexm.sh (-O2, the 4 inputs of bench/cortexm/cortexm_main.c), plus -g:
 # every executed address of a kernel call is mapped through the DWARF
 # inline chain (addr2line -i) and counted twice, per call (mean of the 4):
-#   op    the outermost fx primitive the instruction belongs to: an fxf_*
-#         operation, a facet_fx_* out-of-line primitive (rcp32, div2by1,
-#         isqrt64, rsqrt32) or an fx_* helper used directly by the kernel;
+#   op    the outermost fx primitive the instruction belongs to: an fxe_*
+#         pseudo-float operation, a facet_fx_* out-of-line primitive (rcp32,
+#         div2by1, isqrt64, rsqrt32), or an fxv_* lane op or fxp_* exact
+#         primitive used directly by the kernel's body;
 #         "(kernel)" for the kernel's own code (clamps, exact products)
-#   self  the innermost (inlined) function: fx_mul64, fx_rshr64, ...
+#   self  the innermost (inlined) function: fxp_mul64, fxv_sel, ...
 # MEASURED executed instructions (qemu), not cycles.  Default kernels:
 # brdf_hammon ggx_d smith_vis diffuse_hammon.
 set -u
@@ -49,7 +50,7 @@ for cpu in cortex-m0 cortex-m4; do
         awk -v n="$ncalls" '
             function flush() { if (addr == "") return
                 self = chain[1]; op = "(kernel)"
-                for (i = nch; i >= 1; i--) if (chain[i] ~ /^(fxf_|facet_fx_|fx_)/) { op = chain[i]; break }
+                for (i = nch; i >= 1; i--) if (chain[i] ~ /^(fxe_|fxv_|fxp_|facet_fx_)/) { op = chain[i]; break }
                 if (op == "(kernel)") for (i = 1; i <= nch; i++) if (chain[i] !~ /^facet_.*_fx$/) { op = chain[i] "()"; break }
                 byop[op] += cnt[addr]; byself[self] += cnt[addr]; tot += cnt[addr]; addr = "" }
             function norm(a) { a = tolower(a); sub(/^0x/, "", a); sub(/^0+/, "", a); return a }

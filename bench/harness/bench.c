@@ -687,6 +687,8 @@ int bench_run(const bench_opts *o, bench_sink sink, void *ctx)
 
     if (o->kernel && !facet_kernel_find(o->kernel) && !facet_sampler_find(o->kernel))
         return -1;
+    if (o->peers && peer_check(stderr) != 0)
+        return -2;
     if (o->format && strcmp(o->format, "f32") && strcmp(o->format, "f32_fast") && strcmp(o->format, "fx") &&
         strcmp(o->format, "fx_fast"))
         return -1;

@@ -65,7 +65,8 @@ typedef struct bench_row {
 typedef void (*bench_sink)(const bench_row *r, void *ctx);
 
 /* Runs every selected combination; returns the number of rows, -1 if the
- * selection names an unknown kernel/port/format. */
+ * selection names an unknown kernel/port/format, -2 if a peer's term names
+ * no kernel of the list (peers.h peer_check). */
 int bench_run(const bench_opts *o, bench_sink sink, void *ctx);
 
 /* The relative error used everywhere: |got - want| / max(|want|, 2^-100),

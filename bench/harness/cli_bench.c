@@ -243,6 +243,8 @@ int facet_cmd_bench(int argc, char **argv)
                "latency/call");
     }
     n = bench_run(&o, sink, &c);
+    if (n == -2)
+        return 1;
     if (n < 0) {
         fprintf(stderr, "facet-bench bench: unknown port or format in the selection\n");
         return 2;

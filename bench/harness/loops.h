@@ -25,7 +25,7 @@ typedef struct bench_loop {
 
 typedef struct bench_loops {
     const char *path;   /* "inline", "call", "batch" */
-    const char *port;   /* "scalar", "sse2", "avx2", "neon" */
+    const char *port;   /* a port (src/core/ports.def); "auto": the batch API */
     int lanes;
     int (*available)(void);
     const bench_loop *k; /* facet_kernel_count() + 1 entries */
@@ -38,12 +38,11 @@ typedef struct bench_loops {
 extern const bench_loops *const bench_loop_tables[];
 
 
-extern const bench_loops bench_loops_scalar_inline, bench_loops_scalar_call,
-    bench_loops_sse2_inline, bench_loops_avx2_inline, bench_loops_neon_inline,
-    bench_loops_batch;
+/* the scalar port's and the batch API's (each port's inline tables,
+ * bench_loops_<port>_inline: loops_port.h, listed by loops_tables.c) */
+extern const bench_loops bench_loops_scalar_inline, bench_loops_scalar_call, bench_loops_batch;
 /* the same for the fast tier (facet_<kernel>_f32_fast...) */
 extern const bench_loops bench_loops_scalar_inline_fast, bench_loops_scalar_call_fast,
-    bench_loops_sse2_inline_fast, bench_loops_avx2_inline_fast, bench_loops_neon_inline_fast,
     bench_loops_batch_fast;
 
 #endif

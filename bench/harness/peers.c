@@ -1,4 +1,5 @@
-/* peers.c - lookup of a peer's single-term functions by facet kernel name. */
+/* peers.c - the peers built for this target, and a peer's single-term
+ * functions by facet kernel name. */
 #include <string.h>
 #include "facet.h"
 #include "peers.h"
@@ -24,12 +25,23 @@ int peer_available(const peer_set *p) { return !p->width || facet_port_supported
 
 peer_term_fn peer_term(const peer_set *p, const char *name)
 {
-    if (!strcmp(name, "fresnel_schlick")) return p->fresnel_schlick;
-    if (!strcmp(name, "ggx_d")) return p->ggx_d;
-    if (!strcmp(name, "smith_g1")) return p->smith_g1;
-    if (!strcmp(name, "smith_g2")) return p->smith_g2;
-    if (!strcmp(name, "smith_vis")) return p->smith_vis;
-    if (!strcmp(name, "smith_g1_hammon")) return p->smith_g1_hammon;
-    if (!strcmp(name, "smith_vis_hammon")) return p->smith_vis_hammon;
+    const peer_term_entry *t;
+    for (t = p->terms; t && t->kernel; t++)
+        if (!strcmp(t->kernel, name))
+            return t->fn;
     return NULL;
+}
+
+int peer_check(FILE *err)
+{
+    const peer_term_entry *t;
+    int s, bad = 0;
+    for (s = 0; peer_sets[s]; s++)
+        for (t = peer_sets[s]->terms; t && t->kernel; t++)
+            if (!facet_kernel_find(t->kernel)) {
+                fprintf(err, "peer %s: a term for %s, which is not a kernel of the list\n", peer_sets[s]->name,
+                        t->kernel);
+                bad++;
+            }
+    return bad;
 }

@@ -30,6 +30,7 @@
 #define FACET_BENCH_PEERS_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 /* the full-BRDF inputs (SoA) */
 typedef struct peer_brdf_in {
@@ -40,6 +41,13 @@ typedef struct peer_brdf_in {
 typedef void (*peer_term_fn)(float *out, const float *const *in, size_t n);
 typedef void (*peer_brdf_fn)(float *out, const peer_brdf_in *in, size_t n);
 
+/* a single term a peer computes: the facet kernel of that name, with the
+ * same inputs */
+typedef struct peer_term_entry {
+    const char *kernel;
+    peer_term_fn fn;
+} peer_term_entry;
+
 typedef struct peer_set {
     const char *name;       /* "textbook", "shader_avx2", "shader_avx2_fm", ... */
     const char *build;      /* compiler flags, for the report */
@@ -47,9 +55,7 @@ typedef struct peer_set {
                              * only where facet_port_supported() says so), or
                              * NULL: the build machine's own */
     peer_brdf_fn brdf;      /* D Vis_exact F + diffuse_hammon, from vectors */
-    /* single terms, same inputs as the facet kernel of the same name */
-    peer_term_fn fresnel_schlick, ggx_d, smith_g1, smith_g2, smith_vis,
-        smith_g1_hammon, smith_vis_hammon;
+    const peer_term_entry *terms; /* the single terms it computes, up to { NULL, NULL } */
 } peer_set;
 
 /* every peer built for this target, NULL-terminated (peers.c) */
@@ -59,6 +65,10 @@ int peer_available(const peer_set *p);
 
 /* Returns the peer's function for facet kernel `name`, or NULL. */
 peer_term_fn peer_term(const peer_set *p, const char *name);
+/* Every peer's terms name a kernel of the list (a misspelt or removed one
+ * would drop its rows silently): prints each that does not to err and
+ * returns their count. */
+int peer_check(FILE *err);
 
 /* The samplers' textbook peer (peers_sample.c, built like the textbook
  * peer: tests/lib/sample_peer.h's direct libm formulas, -O2): out[o][i] =

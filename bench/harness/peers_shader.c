@@ -148,7 +148,9 @@ static void sh_vish_b(float *restrict out, const float *const *in, size_t n)
     }
 }
 
-const peer_set SET_ = {
-    NAME_, BUILD_, WIDTH_,
-    sh_brdf, sh_fresnel_b, sh_ggx_d_b, sh_g1_b, sh_g2_b, sh_vis_b, sh_g1h_b, sh_vish_b,
+static const peer_term_entry terms_[] = {
+    { "fresnel_schlick", sh_fresnel_b }, { "ggx_d", sh_ggx_d_b }, { "smith_g1", sh_g1_b }, { "smith_g2", sh_g2_b },
+    { "smith_vis", sh_vis_b }, { "smith_g1_hammon", sh_g1h_b }, { "smith_vis_hammon", sh_vish_b }, { NULL, NULL },
 };
+
+const peer_set SET_ = { NAME_, BUILD_, WIDTH_, sh_brdf, terms_ };

@@ -24,6 +24,7 @@
 #include "facet/oracle.h"
 #include "harness/bench.h"
 #include "image_error.h"
+#include "kernel_facts.h"
 
 #define IE_S 64
 #define IE_GAP 4
@@ -386,37 +387,7 @@ int img_error_run(img_err *out, int max, pic *ref, pic *diff)
  * Vis = G2 / (4 N.L N.V).  Inputs: the dots of the scene rounded to float
  * (N.H, V.H from H = normalize(L + V); the Fresnel cosine is V.H; tangent
  * frame T = Y x N; alpha_y = alpha / 2; f90 = 1). */
-enum { R_D, R_VIS, R_G2, R_G1, R_F, R_DIFF };
-enum { REF_NONE, REF_GGX_D, REF_VIS, REF_G1_BECKMANN, REF_G1_GTR, REF_FRESNEL };
-static const struct {
-    const char *kernel;
-    int role;
-    double gamma;
-    int ref;
-} ie_var[] = {
-    { "ggx_d", R_D, 0, REF_NONE }, { "blinn_phong_d", R_D, 0, REF_NONE }, { "beckmann_d", R_D, 0, REF_NONE },
-    { "ggx_aniso_d", R_D, 0, REF_NONE }, { "gtr_d", R_D, 1, REF_NONE }, { "gtr_d", R_D, 1.5, REF_NONE },
-    { "gtr_d", R_D, 2, REF_GGX_D }, { "gtr_d", R_D, 3, REF_NONE },
-    { "smith_vis", R_VIS, 0, REF_VIS }, { "smith_vis_hammon", R_VIS, 0, REF_VIS },
-    { "smith_vis_joint_approx", R_VIS, 0, REF_VIS }, { "smith_vis_fit", R_VIS, 0, REF_VIS },
-    { "smith_g2", R_G2, 0, REF_VIS }, { "smith_g2_hammon", R_G2, 0, REF_VIS },
-    { "smith_g2_uncorrelated", R_G2, 0, REF_VIS }, { "g_implicit", R_G2, 0, REF_VIS },
-    { "g_neumann", R_G2, 0, REF_VIS }, { "g_cook_torrance", R_G2, 0, REF_VIS }, { "g_kelemen", R_G2, 0, REF_VIS },
-    { "smith_g1", R_G1, 0, REF_VIS }, { "smith_g1_hammon", R_G1, 0, REF_VIS },
-    { "smith_g1_beckmann", R_G1, 0, REF_G1_BECKMANN }, { "smith_g1_schlick_beckmann", R_G1, 0, REF_G1_BECKMANN },
-    { "smith_g1_gtr", R_G1, 1.5, REF_G1_GTR }, { "smith_g1_gtr", R_G1, 3, REF_NONE },
-    { "fresnel_schlick", R_F, 0, REF_FRESNEL }, { "fresnel_schlick_f90", R_F, 0, REF_FRESNEL },
-    { "fresnel_schlick_sg", R_F, 0, REF_FRESNEL }, { "fresnel_cook_torrance", R_F, 0, REF_FRESNEL },
-    { "diffuse_hammon", R_DIFF, 0, REF_NONE }, { "diffuse_hammon_hybrid", R_DIFF, 0, REF_NONE },
-    { "diffuse_hammon_cheap", R_DIFF, 0, REF_NONE }, { "diffuse_burley", R_DIFF, 0, REF_NONE },
-    { "diffuse_oren_nayar", R_DIFF, 0, REF_NONE }, { "lambert", R_DIFF, 0, REF_NONE },
-};
-#define IE_NVAR ((int)(sizeof ie_var / sizeof ie_var[0]))
-static const char *const ie_ref_name[] = { "", "GGX D", "exact height-correlated Smith Vis",
-                                           "exact Beckmann G1 (separable)", "exact GTR G1 (separable)",
-                                           "exact dielectric Fresnel" };
-
-int img_variant_count(void) { return IE_NVAR; }
+int img_variant_count(void) { return kf_variant_count(); }
 
 /* the float input stream a kernel input names (dir 1: a G1's N.V input
  * takes N.L) */
@@ -574,31 +545,24 @@ int img_variants_run(img_variant *out, int max, pic *diff, char *port, size_t po
     diff->h = 24 * (IE_S + IE_GAP) + IE_GAP;
     diff->rgb = calloc((size_t)diff->w * (size_t)diff->h * 3, 1);
     memset(diff->rgb, 24, (size_t)diff->w * (size_t)diff->h * 3);
-    for (v = 0; v < IE_NVAR && nv < max; v++) {
-        const facet_kernel *k = facet_kernel_find(ie_var[v].kernel);
+    for (v = 0; v < kf_variant_count() && nv < max; v++) {
+        const kf_variant *fv = kf_variant_at(v);
+        const facet_kernel *k = facet_kernel_find(fv->kernel);
         img_variant *r = &out[nv];
-        int role = ie_var[v].role, pc;
+        int role = fv->role, pc;
         if (!k)
             continue;
         memset(r, 0, sizeof *r);
         pc = ie_per_channel(k);
-        if (ie_var[v].gamma > 0)
-            snprintf(r->name, sizeof r->name, "%s (gamma %g)", k->name, ie_var[v].gamma);
-        else if (!strcmp(k->name, "ggx_aniso_d"))
-            snprintf(r->name, sizeof r->name, "%s (alpha_y = alpha/2)", k->name);
-        else if (!strcmp(k->name, "fresnel_schlick_f90"))
-            snprintf(r->name, sizeof r->name, "%s (f90 = 1)", k->name);
-        else
-            snprintf(r->name, sizeof r->name, "%s", k->name);
-        snprintf(r->term, sizeof r->term, "%s", role == R_D ? "D" : role == R_VIS ? "Vis" : role == R_G2 ? "G2"
-                                               : role == R_G1 ? "G1" : role == R_F ? "F" : "diffuse");
-        snprintf(r->reference, sizeof r->reference, "%s", ie_ref_name[ie_var[v].ref]);
+        snprintf(r->name, sizeof r->name, "%s", fv->name);
+        snprintf(r->term, sizeof r->term, "%s", fv->role_name);
+        snprintf(r->reference, sizeof r->reference, "%s", fv->ref_name);
         for (i = 0; i < n; i++)
-            s.gamma[i] = (float)(ie_var[v].gamma > 0 ? ie_var[v].gamma : 2);
+            s.gamma[i] = (float)(fv->gamma > 0 ? fv->gamma : 2);
         /* the variant's own D for the G1s of another distribution */
         for (i = 0; i < n; i++)
-            Dv[i] = ie_var[v].ref == REF_G1_BECKMANN ? facet_oracle_beckmann_d(s.noh[i], s.a[i])
-                  : ie_var[v].ref == REF_G1_GTR ? facet_oracle_gtr_d(s.noh[i], s.a[i], s.gamma[i]) : D0[i];
+            Dv[i] = fv->ref == KF_REF_G1_BECKMANN ? facet_oracle_beckmann_d(s.noh[i], s.a[i])
+                  : fv->ref == KF_REF_G1_GTR ? facet_oracle_gtr_d(s.noh[i], s.a[i], s.gamma[i]) : D0[i];
         /* src 0 (the oracle) first: the reference of the implementation rows */
         for (src = 0; src <= 4; src++) {
             int okk = 1;
@@ -607,13 +571,13 @@ int img_variants_run(img_variant *out, int max, pic *diff, char *port, size_t po
                     memcpy(t3[c], t3[0], (size_t)n * sizeof(double));
                     continue;
                 }
-                if (role == R_G1) {
+                if (role == KF_ROLE_G1) {
                     okk = ie_term(tt, &s, k, src, c, 1, o, oq, q) && ie_term(t1, &s, k, src, c, 0, o, oq, q);
                     for (i = 0; okk && i < n; i++)
                         t3[c][i] = tt[i] * t1[i] / (4.0 * s.nl[i] * s.nv[i]);
                 } else {
                     okk = ie_term(t3[c], &s, k, src, c, 0, o, oq, q);
-                    if (role == R_G2)
+                    if (role == KF_ROLE_G2)
                         for (i = 0; okk && i < n; i++)
                             t3[c][i] /= 4.0 * s.nl[i] * s.nv[i];
                 }
@@ -628,11 +592,11 @@ int img_variants_run(img_variant *out, int max, pic *diff, char *port, size_t po
             }
             {
                 const double *Duse = Dv;
-                if (role == R_D)
+                if (role == KF_ROLE_D)
                     Duse = t3[0];
-                else if (role == R_VIS || role == R_G2 || role == R_G1)
+                else if (role == KF_ROLE_VIS || role == KF_ROLE_G2 || role == KF_ROLE_G1)
                     memcpy(Vv, t3[0], (size_t)n * sizeof(double));
-                else if (role == R_F)
+                else if (role == KF_ROLE_F)
                     for (c = 0; c < 3; c++)
                         memcpy(Fv[c], t3[c], (size_t)n * sizeof(double));
                 else
@@ -646,7 +610,7 @@ int img_variants_run(img_variant *out, int max, pic *diff, char *port, size_t po
             }
         }
         /* the model row: the variant's oracle render against the reference's */
-        if (ie_var[v].ref != REF_NONE) {
+        if (fv->ref != KF_REF_NONE) {
             const double *Duse = Dv;
             memcpy(Vv, V0, (size_t)n * sizeof(double));
             for (c = 0; c < 3; c++) {
@@ -654,29 +618,28 @@ int img_variants_run(img_variant *out, int max, pic *diff, char *port, size_t po
                 memcpy(Dfv[c], Df0[c], (size_t)n * sizeof(double));
             }
             for (i = 0; i < n; i++)
-                switch (ie_var[v].ref) {
-                case REF_GGX_D: tt[i] = facet_oracle_ggx_d(s.noh[i], s.a[i]); break;
-                case REF_VIS: Vv[i] = V0[i]; break;
-                case REF_G1_BECKMANN:
+                switch (fv->ref) {
+                case KF_REF_GGX_D: tt[i] = facet_oracle_ggx_d(s.noh[i], s.a[i]); break;
+                case KF_REF_VIS: Vv[i] = V0[i]; break;
+                case KF_REF_G1_BECKMANN:
                     Vv[i] = facet_oracle_smith_g1_beckmann_exact(s.nl[i], s.a[i]) *
                             facet_oracle_smith_g1_beckmann_exact(s.nv[i], s.a[i]) / (4.0 * s.nl[i] * s.nv[i]);
                     break;
-                case REF_G1_GTR:
+                case KF_REF_G1_GTR:
                     Vv[i] = g1_gtr_exact_memo(s.nl[i], s.a[i], s.gamma[i]) *
                             g1_gtr_exact_memo(s.nv[i], s.a[i], s.gamma[i]) / (4.0 * s.nl[i] * s.nv[i]);
                     break;
-                case REF_FRESNEL:
+                case KF_REF_FRESNEL:
                     for (c = 0; c < 3; c++)
                         Fv[c][i] = facet_oracle_fresnel_cook_torrance(s.f0[c][i], s.voh[i]);
                     break;
                 }
-            if (ie_var[v].ref == REF_GGX_D)
+            if (fv->ref == KF_REF_GGX_D)
                 Duse = tt;
             ie_codes(model, &s, Duse, Vv, Fv, Dfv);
             compare(&r->model, (const int (*)[3])want, (const int (*)[3])model, n);
             r->has_model = 1;
-            r->is_reference = !strcmp(k->name, "smith_vis") || !strcmp(k->name, "smith_g2") ||
-                              !strcmp(k->name, "fresnel_cook_torrance");
+            r->is_reference = fv->is_reference;
             /* the figure: every variant that is not the reference itself (all-blue rows: identical) */
             if (!r->is_reference && rows < 24) {
                 diff_place(diff, &s, (const int (*)[3])want, (const int (*)[3])model, rows);

@@ -5,7 +5,8 @@
 # batch loop), size.tsv (bytes of each batch function), arm.tsv (Cortex-M
 # figures from bench/cortexm/cortexm.sh, when its tools exist), arm_vec.tsv
 # and arm_vec.status (the NEON and Helium ports' costs, arm_targets.sh), then
-# runs `build/facet-bench report`, which measures everything else and
+# runs `build/facet-bench report`, which measures everything else (recorded
+# in measured.tsv: `facet-bench report DIR --replay FILE` re-renders it) and
 # writes bench.md, then report.md and index.html: accuracy.md (the accuracy
 # part tests/report/report.sh left, if any) followed by this run's bench part.
 # Progress goes to the terminal.

@@ -20,24 +20,6 @@
 #define FACET_INLINE static inline __attribute__((always_inline))
 #else
 #define FACET_INLINE static inline
-/* The staged tail of a port without masked loads (sse2, neon): a tail of
- * r floats (r < lanes) is copied through a lanes-wide buffer, touching
- * nothing past p + r; the unused lanes hold 0.5, inside every kernel's
- * domain.  The port loads the buffer after facet_tail_in_ and stores into
- * it before facet_tail_out_. */
-FACET_INLINE void facet_tail_in_(float *t, size_t lanes, const float *p, size_t r)
-{
-    size_t j;
-    for (j = 0; j < lanes; j++)
-        t[j] = j < r ? p[j] : 0.5f;
-}
-FACET_INLINE void facet_tail_out_(float *p, const float *t, size_t lanes, size_t r)
-{
-    size_t j;
-    for (j = 0; j < r && j < lanes; j++)
-        p[j] = t[j];
-}
-
 #endif
 
 /* The staged tail of a port without masked loads (sse2, neon): a tail of

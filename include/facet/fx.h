@@ -52,332 +52,57 @@
  * square root, the exact 2-by-1 division of Moller-Granlund.  Every
  * quotient is exact, so a core with a divide instruction may compute it
  * with that instead (Cortex-M3/M4/M7/M33: two 32-bit UDIV digits; 64-bit
- * hosts: the native division) with the same bits (src/fx/fx_prims.h fx_div64).
+ * hosts: the native division) with the same bits (src/fx/fx_prims.h fxp_div64).
  *
- * Each kernel's contract (formula, output format and maximum, error, cost)
- * is beside its declaration below; the error is the FACET_FX_ERR_* bound,
- * enforced by tests/fx/test_fx_accuracy.c.  The intermediates and the overflow
- * argument of each step are beside its code (src/fx/fx_kernels.c,
- * src/fx/fx_body.h).  Cost: operations of the scalar specification (mul =
- * 32x32->32, mul64 = 32x32->64, division = one exact 64/32 quotient, sqrt
- * = one exact integer root, fxf = one 32-bit-mantissa float step).
- */
-#ifndef FACET_FX_H
-#define FACET_FX_H
-
-#include <stddef.h>
-#include <stdint.h>
-
-#ifdef __cplusplus
-extern "C" {
-#endif
-
-#define FACET_FX_ONE       32768 /* 1.0 in Q15 */
-#define FACET_FX_ALPHA_MIN 32    /* 2^-10 = FACET_ALPHA_MIN */
-#define FACET_FX_COS_MIN   128   /* 2^-8, the fixed-point cos floor */
-
-/* output fraction bits and saturation values (raw) */
-#define FACET_FX_Q15_FRAC  15
-#define FACET_FX_D_FRAC    13
-#define FACET_FX_VIS_FRAC  16
-#define FACET_FX_BRDF_FRAC 24 /* diffuse_hammon and brdf_hammon */
-#define FACET_FX_MAX_Q15   32768u
-#define FACET_FX_MAX_D     0xFFFFFFFFu
-#define FACET_FX_MAX_VIS   0xFFFFFFFFu
-#define FACET_FX_MAX_DIFF  0xFFFFFFFFu
-#define FACET_FX_MAX_BRDF  0xFFFFFFFFFFFFFFFFull
-
-/* ---- measured error bounds (max |raw - round(oracle 2^frac)| in LSB over
- * tests/fx/test_fx_accuracy.c's sweep; enforced there) --------------------- */
-#define FACET_FX_ERR_NOH_FROM_DOTS         1
-#define FACET_FX_ERR_LOH_FROM_DOTS         1
-#define FACET_FX_ERR_FRESNEL_SCHLICK       1
-#define FACET_FX_ERR_GGX_D                 1
-#define FACET_FX_ERR_GGX_ANISO_D           4
-#define FACET_FX_ERR_SMITH_G1              1
-#define FACET_FX_ERR_SMITH_G2              1
-#define FACET_FX_ERR_SMITH_G2_UNCORRELATED 1
-#define FACET_FX_ERR_SMITH_VIS             1
-#define FACET_FX_ERR_SMITH_G1_HAMMON       1
-#define FACET_FX_ERR_SMITH_G2_HAMMON       1
-#define FACET_FX_ERR_SMITH_VIS_HAMMON      1
-#define FACET_FX_ERR_DIFFUSE_HAMMON        1
-#define FACET_FX_ERR_BRDF_HAMMON           1
-
-/* ---- kernels (inputs Q15, in `facet list` order) -----------------------
- * Domains: the table after each name; every int32 outside clamps to it. */
-
-/* N.H = (N.L + N.V) / sqrt(2 (1 + L.V)), from the dots; nol, nov [cos floor,
- * 1], lov [-1, 1].  Q15, max 1 (a triple at or past N.H = 1 gives 1).
- * Error: 0 LSB (correctly rounded).  Cost: 1 sqrt, 1 division, ~8 mul64. */
-int32_t facet_noh_from_dots_fx(int32_t nol, int32_t nov, int32_t lov);
-/* L.H = sqrt((1 + L.V) / 2); lov [-1, 1].  Q15, max 1; L.V = -1 gives 0.
- * Error: 0 LSB (correctly rounded).  Cost: 1 integer sqrt. */
-int32_t facet_loh_from_dots_fx(int32_t lov);
-/* Schlick: f0 + (1 - f0)(1 - cos)^5; f0, cos [0, 1].  Q15, max 1;
- * F(f0, 1) = f0, F(f0, 0) = 1 exactly.  Error: 0 LSB (correctly rounded).
- * Cost: 2 mul, 3 mul64 (written over lanes: AVX2 and aarch64 NEON run it
- * vectorised in the batch). */
-int32_t facet_fresnel_schlick_fx(int32_t f0, int32_t cos_theta);
-/* GGX D = alpha^2 / (pi (1 - N.H^2 (1 - alpha^2))^2); noh [0, 1], alpha
- * [2^-10, 1].  UQ19.13, max 2^20/pi = 333772.1 (N.H = 1, alpha = 2^-10).
- * Error: FACET_FX_ERR_GGX_D LSB.  Cost: 1 division, 3 fxf, 2 mul64. */
-uint32_t facet_ggx_d_fx(int32_t noh, int32_t alpha);
-/* Anisotropic GGX D = (ax ay)^3 / (pi K^2), K = (T.H ay)^2 + (B.H ax)^2 +
- * (N.H ax ay)^2 (facet.h); noh [0, 1], toh, boh [-1, 1] (Q15 signed, the
- * L.V domain), alpha_x, alpha_y [2^-10, 1].  UQ19.13 as ggx_d: for a unit h
- * D <= 1/(pi ax ay) <= 2^20/pi (N.H = 1, both widths 2^-10), the format
- * argument of ggx_d with alpha^2 replaced by ax ay.  Inputs no unit h has:
- * K floored at (ax ay)^2 / 2 (facet.h), so D <= 4/(pi ax ay), which
- * saturates at FACET_FX_MAX_D where ax ay < 2^-19.4.  Intermediates: P = AX
- * AY Q30, T AY and B AX Q30 (each <= 2^30, exact), K Q90 exact in 96 bits
- * [K <= 3], then one fxf rounding (src/fx/fx_kernels.c).
- * Error: FACET_FX_ERR_GGX_ANISO_D LSB: 5 roundings of <= 2^-32 relative
- * (K, P/K, square, times P, times 1/pi) plus the final half LSB, which is
- * more than 1 LSB only where raw > 2^29.7 (ax ay < 2^-17, at or near the
- * peak); measured max 3 LSB (3.09 real) at raw 2^31.5, (129, 32, 1, 33,
- * 32), relative 2^-29.9.  The exact peak (N.H = 1, T.H = B.H = 0) is
- * correctly rounded, as ggx_d's.
- * Cost: 1 division (the peak), 1 fxf division, 3 fxf mul, ~8 mul64. */
-uint32_t facet_ggx_aniso_d_fx(int32_t noh, int32_t toh, int32_t boh, int32_t alpha_x, int32_t alpha_y);
-/* Smith G1 (GGX, exact) = 2 n / (n + sqrt(alpha^2 + (1 - alpha^2) n^2));
- * nov [0, 1], alpha [2^-10, 1].  Q15, max 1; G1(0) = 0, G1(1) = 1.
- * Error: FACET_FX_ERR_SMITH_G1 LSB.  Cost: 1 sqrt, 1 division, 1 fxf, 3 mul. */
-int32_t facet_smith_g1_fx(int32_t nov, int32_t alpha);
-/* Smith G2, height-correlated = 2 nl nv / (nv r(nl) + nl r(nv)),
- * r(x) = sqrt(alpha^2 + (1 - alpha^2) x^2); nol, nov [2^-8, 1], alpha
- * [2^-10, 1].  Q15, max 1.  Error: FACET_FX_ERR_SMITH_G2 LSB.
- * Cost: 2 sqrt, 1 division, 3 fxf, ~8 mul. */
-int32_t facet_smith_g2_fx(int32_t nol, int32_t nov, int32_t alpha);
-/* G1(N.L) G1(N.V); domains as smith_g2.  Q15, max 1.
- * Error: FACET_FX_ERR_SMITH_G2_UNCORRELATED LSB.  Cost: 2 sqrt, 1 division,
- * 3 fxf, ~8 mul. */
-int32_t facet_smith_g2_uncorrelated_fx(int32_t nol, int32_t nov, int32_t alpha);
-/* Vis = G2 / (4 nl nv) = 0.5 / (nv r(nl) + nl r(nv)); domains as smith_g2.
- * UQ16.16, max 15894.3 (nl = nv = 2^-8, alpha = 2^-10).
- * Error: FACET_FX_ERR_SMITH_VIS LSB.  Cost: as smith_g2. */
-uint32_t facet_smith_vis_fx(int32_t nol, int32_t nov, int32_t alpha);
-/* Hammon's G1 ~ 2 n / (n (2 - alpha) + alpha); nov [0, 1], alpha
- * [2^-10, 1].  Q15, max 1.  Error: FACET_FX_ERR_SMITH_G1_HAMMON LSB (both
- * operands exact: correctly rounded).  Cost: 1 division, 2 mul. */
-int32_t facet_smith_g1_hammon_fx(int32_t nov, int32_t alpha);
-/* Hammon's G2 ~ 2 nl nv / m, m = (1 - alpha) 2 nl nv + alpha (nl + nv);
- * domains as smith_g2.  Q15, max 1.  Error: FACET_FX_ERR_SMITH_G2_HAMMON LSB.
- * Cost: 1 division, ~6 mul. */
-int32_t facet_smith_g2_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
-/* Hammon's Vis ~ 0.5 / m; domains as smith_g2.  UQ16.16, max 13117.
- * Error: FACET_FX_ERR_SMITH_VIS_HAMMON LSB.  Cost: 1 division, ~6 mul. */
-uint32_t facet_smith_vis_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
-
-/* ---- shadowing and visibility: the rest of the menu (facet.h) ------------
- * Both fixed-point tiers, the formulas of facet.h, the same domains as the
- * f32 kernels with the fixed-point cos floor (N.L, N.V of the 3- and
- * 4-input kernels in [2^-8, 1]; the 2-input ones and N.H, V.H in [0, 1]).
- * Outputs: the G terms Q15 (max 1: every one is capped at 1 or a product
- * or minimum of [0, 1] values); the Vis terms UQ16.16 (smith_vis_joint_approx
- * max 13117 as smith_vis_hammon; smith_vis_fit max 15521, both at
- * N.L = N.V = 2^-8, alpha = 2^-10 [raw < 2^30]).  Scaling (src/fx/fx_kernels.c
- * and src/fx/fx_fast_body.h give each step's Q format and bound):
- *   g_implicit  N.L N.V Q30 exact [<= 2^30], rounded once to Q15;
- *   g_neumann   min(N.L, N.V) exact;
- *   g_cook_torrance  g = 2 N.H min(N.L, N.V) Q30 exact [<= 2^31]; 1 where
- *               g >= V.H 2^15 (V.H = 0 included), else g / V.H;
- *   g_kelemen   N.L N.V and V.H^2 Q30 exact [<= 2^30]; 1 where the first is
- *               not below the second, else their quotient;
- *   smith_g1_beckmann  the branch c < 1.6 as 25 N^2 2^24 < A^2 (1 - n^2)
- *               Q60 exact (fast: from the high words; misjudged only within
- *               2^-20 of c = 1.6, where both pieces are 1); the rational in
- *               fxf (fast: in c Q29, c^2 Q29, the sums Q59 in 64 bits
- *               [< 2^63]); sqrt(1 - n^2) by the exact root (fast: the table);
- *   smith_g1_schlick_beckmann  k = a round(sqrt(2/pi) 2^32); the
- *               denominator N (1 - k) + k exact in 64 bits [< 2^63];
- *   smith_vis_joint_approx  Hammon's exact m45 (the same code as
- *               smith_vis_hammon in each tier: the same bits);
- *   smith_vis_fit  the float constants exact in Q30; sigma exact in Q60
- *               (fast: Q30 stages, every value < 2^32, R >= 2^21); the
- *               denominator in fxf (fast: exact in 64 bits [< 2^48]).
- * Errors: FACET_FX_ERR_* in LSB (precise; measured: correctly rounded, 0
- * LSB, but for the two Vis terms, 1 LSB: fxf's 32-bit rounding of the
- * denominator), FACET_FX_FAST_ERR_* in the fast tier's measure (its
- * maximum over tests/fx/test_fx_fast.c's sweep, 0.8 M to 2 M tuples per
- * kernel, and its quick variant under FACET_TEST_QUICK; e, LSB < 1K, rel >= 1K, argmax):
- *   g_implicit                 0.500  0.500  -         (512, 32)
- *   g_neumann                  0      0      -         (exact)
- *   g_cook_torrance            0.513  0.512  -         (quick sweep; full: 0.5115 at 8143, 137, 32753, 9181)
- *   g_kelemen                  0.513  0.512  -         (32748, 128, 11613)
- *   smith_g1_beckmann          0.523  0.523  -         (23, 2665)
- *   smith_g1_schlick_beckmann  0.508  0.507  -         (150, 6527)
- *   smith_vis_joint_approx     0.037  0.000  2^-14.79  (as smith_vis_hammon: the same bits)
- *   smith_vis_fit              0.048  0.000  2^-14.39  (32751, 32733, 27251) */
-#define FACET_FX_ERR_G_IMPLICIT                1
-#define FACET_FX_ERR_G_NEUMANN                 1
-#define FACET_FX_ERR_G_COOK_TORRANCE           1
-#define FACET_FX_ERR_G_KELEMEN                 1
-#define FACET_FX_ERR_SMITH_G1_BECKMANN         1
-#define FACET_FX_ERR_SMITH_G1_SCHLICK_BECKMANN 1
-#define FACET_FX_ERR_SMITH_VIS_JOINT_APPROX    1
-#define FACET_FX_ERR_SMITH_VIS_FIT             1
-#define FACET_FX_FAST_ERR_G_IMPLICIT                0.500
-#define FACET_FX_FAST_ERR_G_NEUMANN                 0.000
-#define FACET_FX_FAST_ERR_G_COOK_TORRANCE           0.513
-#define FACET_FX_FAST_ERR_G_KELEMEN                 0.513
-#define FACET_FX_FAST_ERR_SMITH_G1_BECKMANN         0.523
-#define FACET_FX_FAST_ERR_SMITH_G1_SCHLICK_BECKMANN 0.508
-#define FACET_FX_FAST_ERR_SMITH_VIS_JOINT_APPROX    0.037
-#define FACET_FX_FAST_ERR_SMITH_VIS_FIT             0.048
-
-/* N.L N.V; Q15.  Cost: 1 mul. */
-int32_t facet_g_implicit_fx(int32_t nol, int32_t nov);
-/* min(N.L, N.V) (= N.L N.V / max); Q15, exact. */
-int32_t facet_g_neumann_fx(int32_t nol, int32_t nov);
-/* min(1, 2 N.H min(N.L, N.V) / V.H); Q15.  Cost: 1 division, 2 mul. */
-int32_t facet_g_cook_torrance_fx(int32_t nol, int32_t nov, int32_t noh, int32_t voh);
-/* min(1, N.L N.V / V.H^2); Q15.  Cost: 1 division, 2 mul. */
-int32_t facet_g_kelemen_fx(int32_t nol, int32_t nov, int32_t voh);
-/* Walter's Beckmann G1 (facet.h); Q15, G1(0) = 0, G1(1) = 1.
- * Cost: 1 sqrt, 1 division, ~8 fxf. */
-int32_t facet_smith_g1_beckmann_fx(int32_t nov, int32_t alpha);
-/* N.V / (N.V (1 - k) + k), k = alpha sqrt(2/pi); Q15.  Cost: 1 division, 3 mul64. */
-int32_t facet_smith_g1_schlick_beckmann_fx(int32_t nov, int32_t alpha);
-/* The joint approximation = Hammon's Vis; UQ16.16.  Cost: as smith_vis_hammon. */
-uint32_t facet_smith_vis_joint_approx_fx(int32_t nol, int32_t nov, int32_t alpha);
-/* The fitted visibility (facet.h); UQ16.16, max 15521.  Cost: 1 division, ~14 fxf. */
-uint32_t facet_smith_vis_fit_fx(int32_t nol, int32_t nov, int32_t alpha);
-int32_t facet_g_implicit_fx_fast(int32_t nol, int32_t nov);
-int32_t facet_g_neumann_fx_fast(int32_t nol, int32_t nov);
-int32_t facet_g_cook_torrance_fx_fast(int32_t nol, int32_t nov, int32_t noh, int32_t voh);
-int32_t facet_g_kelemen_fx_fast(int32_t nol, int32_t nov, int32_t voh);
-int32_t facet_smith_g1_beckmann_fx_fast(int32_t nov, int32_t alpha);
-int32_t facet_smith_g1_schlick_beckmann_fx_fast(int32_t nov, int32_t alpha);
-uint32_t facet_smith_vis_joint_approx_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
-uint32_t facet_smith_vis_fit_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
-/* batches (both tiers), as the batches below */
-void facet_g_implicit_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov, size_t n);
-void facet_g_neumann_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov, size_t n);
-void facet_g_cook_torrance_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
-                                    const int32_t *noh, const int32_t *voh, size_t n);
-void facet_g_kelemen_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
-                              const int32_t *voh, size_t n);
-void facet_smith_g1_beckmann_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
-void facet_smith_g1_schlick_beckmann_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
-                                              size_t n);
-void facet_smith_vis_joint_approx_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
-                                           const int32_t *alpha, size_t n);
-void facet_smith_vis_fit_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
-                                  const int32_t *alpha, size_t n);
-void facet_g_implicit_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov, size_t n);
-void facet_g_neumann_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov, size_t n);
-void facet_g_cook_torrance_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
-                                         const int32_t *noh, const int32_t *voh, size_t n);
-void facet_g_kelemen_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
-                                   const int32_t *voh, size_t n);
-void facet_smith_g1_beckmann_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
-                                           size_t n);
-void facet_smith_g1_schlick_beckmann_fx_fast_batch(int32_t *out, const int32_t *nov,
-                                                   const int32_t *alpha, size_t n);
-void facet_smith_vis_joint_approx_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
-                                                const int32_t *alpha, size_t n);
-void facet_smith_vis_fit_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
-                                       const int32_t *alpha, size_t n);
-/* Hammon's GGX diffuse (facet.h's formula, 1 + L.V raised to
- * (N.L + N.V)^2 / 2); nol, nov [2^-8, 1], lov [-1, 1], alpha [2^-10, 1],
- * albedo [0, 1].  UQ8.24, max 20.65 (nl = nv = 2^-8, L.V = 1, alpha =
- * albedo = 1).  Error: FACET_FX_ERR_DIFFUSE_HAMMON LSB.  Cost: 1 sqrt,
- * 1 division, ~12 fxf, ~10 mul64. */
-uint32_t facet_diffuse_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
-                                 int32_t albedo);
-/* The whole model: D Vis_hammon F(f0, L.H) + diffuse, from the dots (N.H
- * never formed; the peak's cancellation exact); domains as diffuse_hammon,
- * f0 [0, 1].  UQ40.24, max 4.38e9 (D 333772 x Vis 13117 at the grazing
- * peak).  Error: FACET_FX_ERR_BRDF_HAMMON LSB.  Cost: 2 sqrt, 3 division,
- * ~30 fxf. */
-uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
-                              int32_t f0, int32_t albedo);
-
-/* brdf_hammon for an RGB f0 and albedo, the geometry (D, Vis, the Fresnel
- * tail, the diffuse shape) computed once: out[c] equals
- * facet_brdf_hammon_fx(nol, nov, lov, alpha, f0[c], albedo[c]) bit for bit
- * (the same operations per channel; tests/fx/test_fx_rgb.c), on every target.
- * Cost: one geometry and three channel tails (`build/facet-bench api`:
- * 0.48x the time of three
- * facet_brdf_hammon_fx calls, 0.63x in fx_fast, on x86-64). */
-void facet_brdf_hammon_rgb_fx(uint64_t out[3], int32_t nol, int32_t nov, int32_t lov,
-                              int32_t alpha, const int32_t f0[3], const int32_t albedo[3]);
-/* batches of it: planar (out[c][i], f0[c][i], albedo[c][i]) and interleaved
- * (out[3i + c], f0[3i + c], albedo[3i + c]); the scalar loop on every port
- * (as brdf_hammon's fx batch); out must not overlap an input (64-bit
- * outputs).  The fast tier: facet_brdf_hammon_rgb_fx_fast[_batch...] below. */
-void facet_brdf_hammon_rgb_fx_batch(uint64_t *const out[3], const int32_t *nol, const int32_t *nov,
-                                    const int32_t *lov, const int32_t *alpha,
-                                    const int32_t *const f0[3], const int32_t *const albedo[3],
-                                    size_t n);
-void facet_brdf_hammon_rgb_fx_batch_interleaved(uint64_t *out, const int32_t *nol,
-                                                const int32_t *nov, const int32_t *lov,
-                                                const int32_t *alpha, const int32_t *f0,
-                                                const int32_t *albedo, size_t n);
-
-/* ---- batches: out[i] = kernel(in1[i], ...), i < n ----------------------
- * Bit-identical to the scalar kernel on every port, for every int32 input
- * (clamping and saturation included) and every n, alignment and tail.
- * Dispatched with the f32 batches (facet_port_name(), facet_set_port(),
- * FACET_PORT: one choice for both formats): the active port's own
- * fixed-point code where it has some, the scalar loop elsewhere;
- * facet_fx_port_name() names the port whose code that is.  Vector code
- * exists only where it was measured faster than the scalar loop, which
- * divides and takes roots with one hardware instruction where the core has
- * one: fresnel_schlick on avx2 / avx512 (AVX2 lanes) and on aarch64 neon.
- * Everything else, and everything on sse2, armv7 neon and scalar, runs the
- * scalar loop.  A firmware build (`make fx-sources`: src/fx_only/
- * fx_batch_scalar.c instead of the dispatcher) has no ports: each batch is
- * its own scalar loop, facet_fx_port_name() is "scalar", and --gc-sections
- * keeps only the kernels called.  out may be the very same array as an
- * input (32-bit outputs); no other overlap. */
-const char *facet_fx_port_name(void); /* "avx2", "neon" or "scalar" */
-void facet_noh_from_dots_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
-                                  const int32_t *lov, size_t n);
-void facet_loh_from_dots_fx_batch(int32_t *out, const int32_t *lov, size_t n);
-void facet_fresnel_schlick_fx_batch(int32_t *out, const int32_t *f0, const int32_t *cos_theta,
-                                    size_t n);
-void facet_ggx_d_fx_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
-void facet_ggx_aniso_d_fx_batch(uint32_t *out, const int32_t *noh, const int32_t *toh,
-                                const int32_t *boh, const int32_t *alpha_x, const int32_t *alpha_y,
-                                size_t n);
-void facet_smith_g1_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
-void facet_smith_g2_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
-                             const int32_t *alpha, size_t n);
-void facet_smith_g2_uncorrelated_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
-                                          const int32_t *alpha, size_t n);
-void facet_smith_vis_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
-                              const int32_t *alpha, size_t n);
-void facet_smith_g1_hammon_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
-                                    size_t n);
-void facet_smith_g2_hammon_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
-                                    const int32_t *alpha, size_t n);
-void facet_smith_vis_hammon_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
-                                     const int32_t *alpha, size_t n);
-void facet_diffuse_hammon_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
-                                   const int32_t *lov, const int32_t *alpha,
-                                   const int32_t *albedo, size_t n);
-void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t *nov,
-                                const int32_t *lov, const int32_t *alpha, const int32_t *f0,
-                                const int32_t *albedo, size_t n);
-
-/* ---- fast tier ---------------------------------------------------------------
- * facet_<kernel>_fx_fast: the same inputs as facet_<kernel>_fx (raw Q15
+ * How this header is organised: as facet.h, one block per kernel family
+ * (the geometry identities, Fresnel, D, shadowing and visibility, diffuse,
+ * the whole BRDF), then the shared primitives and the kernel table.  A
+ * family block opens with what its kernels share and the bounds of both
+ * tiers (FACET_FX_ERR_<NAME>: the precise tier's, in LSB;
+ * FACET_FX_FAST_ERR_<NAME>: the fast tier's, in its own measure, below);
+ * then, per kernel, its contract for both tiers (formula, domains, output
+ * format and maximum, error, cost) and its declarations:
+ *   facet_<kernel>_fx(...)                     one sample, precise tier
+ *   facet_<kernel>_fx_fast(...)                one sample, fast tier
+ *   facet_<kernel>_fx_batch(out, ..., n)       n samples on the active port
+ *   facet_<kernel>_fx_fast_batch(out, ..., n)  the same, fast tier
+ * A kernel with the fast tier only (src/core/kernels.def fx_code `fast`) has
+ * no facet_<kernel>_fx, _fx_batch or FACET_FX_ERR_<NAME> (its fx table
+ * entry's fx and fx_batch are NULL; `facet eval --format fx` refuses it).
+ *
+ * The precise tier (_fx): the error is max |raw - round(oracle 2^frac)| in
+ * LSB over tests/fx/test_fx_accuracy.c's sweep, FACET_FX_ERR_* the bound it
+ * enforces.  The intermediates and the overflow argument of each step are
+ * beside its code (src/fx/fx_body.h, every kernel written once over lanes,
+ * branch-free; its pseudo-float src/fx/fx_pfloat.h).  Cost:
+ * operations of the scalar specification (mul = 32x32->32, mul64 =
+ * 32x32->64, division = one exact 64/32 quotient, sqrt = one exact integer
+ * root, fxe = one 32-bit-mantissa float step).  The bodies do not branch on
+ * their inputs (the exact division and root keep their fix-up steps, and a
+ * compiler may turn a select into a branch): over 48 inputs of every class
+ * a call's executed instructions vary by at most 1.37x on Cortex-M4, 1.33x
+ * on Cortex-M0, but loh_from_dots (the root of 0 at L.V = -1 returns early).
+ *
+ * The fast tier (_fx_fast): the same inputs as facet_<kernel>_fx (raw Q15
  * int32, the same domains, every int32 clamped the same way) and the same
  * output containers, fraction bits and saturation values (FACET_FX_*_FRAC,
  * FACET_FX_MAX_*): a caller switches tier by name.
  * Bound, every kernel, every input: |raw - v 2^frac| <= max(1 LSB, 2^-10
- * v 2^frac), v the exact value at the same raw inputs (the oracle).  The
- * error measure is e = |raw - v 2^frac| / max(1, 2^-10 v 2^frac);
- * FACET_FX_FAST_ERR_<NAME> is its measured maximum over
- * tests/fx/test_fx_fast.c's sweep and a 2e7-tuple run of the same families
- * per kernel (enforced by the test; the tier's bound is 1).
+ * v 2^frac) (FACET_FX_FAST_TOL_REL = 2^-10), v the exact value at the same
+ * raw inputs (the oracle).  The error measure is e = |raw - v 2^frac| /
+ * max(1, 2^-10 v 2^frac); FACET_FX_FAST_ERR_<NAME> is its measured maximum
+ * over tests/fx/test_fx_fast.c's sweep and a 2e7-tuple run of the same
+ * families per kernel (enforced by the test; the tier's bound is 1).  Each
+ * contract gives the measured e at its argmax (raw inputs), with its LSB
+ * part (the maximum of |raw - v 2^frac| over small values: v 2^frac < 2^10)
+ * and its relative part (over large values, as tests/fx/test_fx_fast.c
+ * splits them; Q15 outputs never reach 2^15 LSB but at 1: no relative
+ * part).
  * Integer only, no divide instruction, no libgcc helper (Cortex-M0/M4,
  * RV32IMC), bit-exact on every target (pinned hashes, tests/lib/fx_hash.h);
  * written once over the lane op layer (src/fx/fx_fast_body.h), so a SIMD port
  * instantiates the same body.  Cost: executed instructions per call on
- * Cortex-M4 / Cortex-M0 (qemu trace, mean of bench/cortexm_main.c's 4
+ * Cortex-M4 / Cortex-M0 (qemu trace, mean of bench/cortexm/cortexm_main.c's 4
  * inputs; arm-none-eabi-gcc 12.2 -O2), the precise tier's in brackets.
  *
  * Datapath (a specification a fixed-function pipeline can implement):
@@ -418,64 +143,180 @@ void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t
  *   Why nothing overflows: each bound above is below 2^32 (64-bit values:
  *     below 2^63), exponent lanes stay in [0, 2^10), and every shift count
  *     is clamped to [0, 31]; the brackets in the body give each one.
- * Measured (e: the larger of the test's and the 2e7 run's, at its argmax;
- * LSB where v 2^frac < 2^10 and relative where v 2^frac >= 2^15: the
- * test's):
- *   kernel                 e      LSB    rel       argmax (raw inputs)
- *   noh_from_dots          0.538  0.509  -         (137, 879, -15701)
- *   loh_from_dots          0.490  0.489  -         (-32755)
- *   fresnel_schlick        0.501  0.500  -         (706, 26184)
- *   ggx_d                  0.514  0.510  2^-15.15  (16701, 16432)
- *   blinn_phong_d          0.501  0.500  2^-16.01  (31571, 3846)
- *   beckmann_d             0.500  0.500  2^-16.02  (19614, 22452)
- *   ggx_aniso_d            0.514  0.514  2^-15.02  (24888, -32706, 7085, 32723, 32705)
- *   gtr_d                  0.514  0.510  2^-15.12  (26315, 315, 31073)
- *   smith_g1_gtr           0.502  0.500  -         (24, 34, 97874)
- *   smith_g1               0.536  0.536  -         (126, 8227)
- *   smith_g2               0.536  0.526  -         (32744, 128, 8281)
- *   smith_g2_uncorrelated  0.544  0.539  -         (16617, 139, 8637)
- *   smith_vis              0.054  0.000  2^-14.24  (32739, 181, 16531)
- *   smith_g1_hammon        0.514  0.511  -         (61, 4096)
- *   smith_g2_hammon        0.514  0.509  -         (169, 13161, 10510)
- *   smith_vis_hammon       0.037  0.000  2^-15.38  (32762, 31510, 9047)
- *   diffuse_hammon         0.552  0.517  2^-14.55  (134, 142, -32768, 40, 10500)
- *   brdf_hammon            0.646  0.646  2^-13.20  (32768, 128, 129, 1000, 32, 0)
- * (Q15 outputs never reach 2^15 LSB but at 1: no relative column.) */
-#define FACET_FX_FAST_TOL_REL 0.0009765625 /* 2^-10 */
-#define FACET_FX_FAST_ERR_NOH_FROM_DOTS         0.538
-#define FACET_FX_FAST_ERR_LOH_FROM_DOTS         0.490
-#define FACET_FX_FAST_ERR_FRESNEL_SCHLICK       0.501
-#define FACET_FX_FAST_ERR_GGX_D                 0.514
-#define FACET_FX_FAST_ERR_BLINN_PHONG_D         0.51
-#define FACET_FX_FAST_ERR_BECKMANN_D            0.51
-#define FACET_FX_FAST_ERR_GGX_ANISO_D           0.52
-#define FACET_FX_FAST_ERR_GTR_D                 0.52
-#define FACET_FX_FAST_ERR_SMITH_G1_GTR          0.51
-#define FACET_FX_FAST_ERR_SMITH_G1              0.536
-#define FACET_FX_FAST_ERR_SMITH_G2              0.536
-#define FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED 0.544
-#define FACET_FX_FAST_ERR_SMITH_VIS             0.054
-#define FACET_FX_FAST_ERR_SMITH_G1_HAMMON       0.514
-#define FACET_FX_FAST_ERR_SMITH_G2_HAMMON       0.514
-#define FACET_FX_FAST_ERR_SMITH_VIS_HAMMON      0.037
-#define FACET_FX_FAST_ERR_DIFFUSE_HAMMON        0.552
-#define FACET_FX_FAST_ERR_BRDF_HAMMON           0.646
+ *
+ * Batches (both tiers): out[i] = kernel(in1[i], ...), i < n; bit-identical
+ * to the scalar kernel on every port, for every int32 input (clamping and
+ * saturation included) and every n, alignment and tail.  Dispatched with
+ * the f32 batches (facet_port_name(), facet_set_port(), FACET_PORT: one
+ * choice for every format): the active port's own fixed-point code where it
+ * has some, the scalar loop elsewhere; facet_fx_port_name() names the port
+ * whose code runs the precise tier.  Which kernels of which tier a port
+ * runs on its vector lanes is its own measured choice (where they beat the
+ * scalar loop, which divides and takes roots with one hardware instruction
+ * where the core has one), stated with its measurement in its own file
+ * (ports/<isa>/fx_<isa>.c, FXV_LANES_FX and FXV_LANES_FX_FAST): avx2 /
+ * avx512 (AVX2 lanes), aarch64 neon, helium and rvv.  Everything else, and
+ * everything on sse2, armv7 neon and scalar, runs the scalar loop.  A firmware build
+ * (`make fx-sources`: src/fx/fx_firmware_batch.c instead of the dispatcher)
+ * has no ports: each batch is its own scalar loop, facet_fx_port_name() is
+ * "scalar", and --gc-sections keeps only the kernels called.  out may be
+ * the very same array as an input (32-bit outputs); no other overlap.
+ */
+#ifndef FACET_FX_H
+#define FACET_FX_H
 
-/* N.H = s / sqrt(2t) (1 at or past N.H = 1); domain and Q15 output as
- * facet_noh_from_dots_fx.  One sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_NOH_FROM_DOTS.  Cost: 73 / 147 (181 / 1076). */
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define FACET_FX_ONE       32768 /* 1.0 in Q15 */
+#define FACET_FX_ALPHA_MIN 32    /* 2^-10 = FACET_ALPHA_MIN */
+#define FACET_FX_COS_MIN   128   /* 2^-8, the fixed-point cos floor */
+
+/* output fraction bits and saturation values (raw) */
+#define FACET_FX_Q15_FRAC  15
+#define FACET_FX_D_FRAC    13
+#define FACET_FX_VIS_FRAC  16
+#define FACET_FX_BRDF_FRAC 24 /* diffuse_hammon and brdf_hammon */
+#define FACET_FX_MAX_Q15   32768u
+#define FACET_FX_MAX_D     0xFFFFFFFFu
+#define FACET_FX_MAX_VIS   0xFFFFFFFFu
+#define FACET_FX_MAX_DIFF  0xFFFFFFFFu
+#define FACET_FX_MAX_BRDF  0xFFFFFFFFFFFFFFFFull
+#define FACET_FX_FAST_TOL_REL 0.0009765625 /* 2^-10 */
+
+/* the port whose code runs the precise tier's batches (Batches, above) */
+const char *facet_fx_port_name(void); /* "avx2", "neon", "helium" or "scalar" */
+
+/* ==== Geometry: N.H and L.H from the dots ================================= */
+#define FACET_FX_ERR_NOH_FROM_DOTS                   1
+#define FACET_FX_FAST_ERR_NOH_FROM_DOTS              0.538
+#define FACET_FX_ERR_LOH_FROM_DOTS                   1
+#define FACET_FX_FAST_ERR_LOH_FROM_DOTS              0.490
+
+/* N.H = (N.L + N.V) / sqrt(2 (1 + L.V)), from the dots; nol, nov [cos floor,
+ * 1], lov [-1, 1].  Q15, max 1 (a triple at or past N.H = 1 gives 1).
+ * fx: error 0 LSB (correctly rounded).  Cost: 1 sqrt, 1 division, ~8 mul64.
+ * fx_fast: N.H = s / sqrt(2t); one sqrt, one 1/x.
+ *   Error: FACET_FX_FAST_ERR_NOH_FROM_DOTS; measured e 0.538 (LSB 0.509) at
+ *   (137, 879, -15701).  Cost: 73 / 147 (214 / 1109). */
+int32_t facet_noh_from_dots_fx(int32_t nol, int32_t nov, int32_t lov);
 int32_t facet_noh_from_dots_fx_fast(int32_t nol, int32_t nov, int32_t lov);
-/* L.H = sqrt((1 + L.V) / 2), Q15 (L.V = -1 gives 0).  One sqrt.
- * Error: FACET_FX_FAST_ERR_LOH_FROM_DOTS.  Cost: 37 / 58 (84 / 416). */
+void facet_noh_from_dots_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                  const int32_t *lov, size_t n);
+void facet_noh_from_dots_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                  const int32_t *lov, size_t n);
+
+/* L.H = sqrt((1 + L.V) / 2); lov [-1, 1].  Q15, max 1; L.V = -1 gives 0.
+ * fx: error 0 LSB (correctly rounded).  Cost: 1 integer sqrt.
+ * fx_fast: one sqrt.
+ *   Error: FACET_FX_FAST_ERR_LOH_FROM_DOTS; measured e 0.490 (LSB 0.489) at
+ *   (-32755).  Cost: 37 / 58 (84 / 411). */
+int32_t facet_loh_from_dots_fx(int32_t lov);
 int32_t facet_loh_from_dots_fx_fast(int32_t lov);
-/* Schlick f0 + (1 - f0)(1 - cos)^5, Q15; F(f0, 1) = f0, F(f0, 0) = 1
- * exactly.  1 mul, 3 high-word products; the error is the final rounding.
- * Error: FACET_FX_FAST_ERR_FRESNEL_SCHLICK.  Cost: 23 / 63 (21 / 106). */
+void facet_loh_from_dots_fx_batch(int32_t *out, const int32_t *lov, size_t n);
+void facet_loh_from_dots_fx_fast_batch(int32_t *out, const int32_t *lov, size_t n);
+
+/* ==== Fresnel =================================================================
+ * Q15 outputs, max 1 (convex combinations of [0, 1] values).  Both tiers:
+ * fresnel_schlick; the fast tier only: the rest of the menu (no precise
+ * fixed-point kernel), the formulas of facet.h with the fixed-point domains
+ * (f0, f90, voh, cos [0, 1]; every int32 outside clamps), the fast tier's
+ * bound and datapath (above); each step's Q format and bound are beside the
+ * code in src/fx/fx_fast_body.h.  Errors: the final rounding in each but
+ * fresnel_cook_torrance (measured over tests/fx/test_fx_fast.c's full
+ * sweep, 0.8 M to 2.3 M tuples per kernel, x86-64). */
+#define FACET_FX_ERR_FRESNEL_SCHLICK                 1
+#define FACET_FX_FAST_ERR_FRESNEL_SCHLICK            0.501
+#define FACET_FX_FAST_ERR_FRESNEL_COOK_TORRANCE      0.634
+#define FACET_FX_FAST_ERR_FRESNEL_SCHLICK_F90        0.501
+#define FACET_FX_FAST_ERR_FRESNEL_SCHLICK_SG         0.502
+
+/* Schlick: f0 + (1 - f0)(1 - cos)^5; f0, cos [0, 1].  Q15, max 1;
+ * F(f0, 1) = f0, F(f0, 0) = 1 exactly (both tiers).
+ * fx: error 0 LSB (correctly rounded).  Cost: 2 mul, 3 mul64.
+ * fx_fast: 1 mul, 3 high-word products; the error is the final rounding.
+ *   Error: FACET_FX_FAST_ERR_FRESNEL_SCHLICK; measured e 0.501 (LSB 0.500)
+ *   at (706, 26184).  Cost: 23 / 63 (21 / 106). */
+int32_t facet_fresnel_schlick_fx(int32_t f0, int32_t cos_theta);
 int32_t facet_fresnel_schlick_fx_fast(int32_t f0, int32_t cos_theta);
-/* GGX D = alpha^2 / (pi d^2), d = (1 - n)(1 + n) + (n alpha)^2 exact in
- * 64 bits; UQ19.13, max 2^20/pi.  One 1/x.
- * Error: FACET_FX_FAST_ERR_GGX_D.  Cost: 73 / 217 (109 / 652). */
+void facet_fresnel_schlick_fx_batch(int32_t *out, const int32_t *f0, const int32_t *cos_theta,
+                                    size_t n);
+void facet_fresnel_schlick_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *cos_theta,
+                                    size_t n);
+
+/* The exact dielectric Fresnel (facet.h), eta from f0; Q15, F(0, c) = 0,
+ * F(1, c) = 1, F(f0, 0) = 1.  Fast tier only.  Two sqrt, three 1/x
+ * (tables).  Scaling: the Fresnel equations divided by eta (u = 1/eta = (1 -
+ * s)/(1 + s), s = sqrt(f0)): rs = (u c - ct)/(u c + ct), rp = (c - u ct)/(c
+ * + u ct), ct = sqrt(v + u^2 c^2), v = 1 - u^2 = 4 s/(1 + s)^2, every term in
+ * [0, 1]; s, ct from the sqrt table, 1/(1 + s) from the 1/x table, all
+ * Q31/Q30; u = (1 - f0)/(1 + s)^2 with its own exponent (to 2^-14 relative
+ * down to u = 2^-17.6 at f0 = 1 - 2^-15), c +- u ct in 64 bits at the scale
+ * 2^(ku + 30) [< 2^62]; |rs|, |rp| by one 1/x each, F Q31 [<= 2^31]; f0 = 0
+ * and f0 = 1 selected (0, 1).
+ * Error: FACET_FX_FAST_ERR_FRESNEL_COOK_TORRANCE; measured e 0.634 (LSB
+ * 0.634) at (51, 11657) from every f0 x every 5th V.H (2.1e8 pairs); the
+ * test's sweep: 0.610 at (49, 11673).  The extra 0.13 LSB over the final
+ * rounding comes from the sqrt and 1/x tables (2^-15, 2^-16) in sqrt(f0),
+ * 1/(1 + sqrt(f0)) and the refracted cosine (a Newton step on sqrt(f0)
+ * alone measured 0.617: not taken).  Cost: 206 / 620. */
+int32_t facet_fresnel_cook_torrance_fx_fast(int32_t f0, int32_t voh);
+void facet_fresnel_cook_torrance_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *voh, size_t n);
+
+/* f0 (1 - (1 - V.H)^5) + f90 (1 - V.H)^5, Q15.  Fast tier only.  1 mul, 4
+ * high-word products: y^5 Q30 as fresnel_schlick's; f0 (1 - y^5) + f90 y^5
+ * as two high words Q30 [<= 2^30], rounded once: f0 at V.H = 1, f90 at
+ * V.H = 0 exactly.
+ * Error: FACET_FX_FAST_ERR_FRESNEL_SCHLICK_F90; measured e 0.500 (LSB
+ * 0.500) at (35, 6472, 24521).  Cost: 30 / 78. */
+int32_t facet_fresnel_schlick_f90_fx_fast(int32_t f0, int32_t f90, int32_t voh);
+void facet_fresnel_schlick_f90_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *f90,
+                                             const int32_t *voh, size_t n);
+
+/* f0 + (1 - f0) 2^((-5.55473 cos - 6.98316) cos), Q15; F(f0, 0) = 1
+ * exactly.  Fast tier only.  1 mul, 4 high-word products, one interpolated
+ * table: p = (5.55473 c + 6.98316) c Q28 [< 2^31.65] (the constants Q29);
+ * 2^-p = 2^-floor(p) times a 257-entry Q31 table of 2^(-i/256) with 20
+ * interpolation bits (2^-20.1).
+ * Error: FACET_FX_FAST_ERR_FRESNEL_SCHLICK_SG; measured e 0.501 (LSB
+ * 0.500) at (46, 17697).  Cost: 36 / 95. */
+int32_t facet_fresnel_schlick_sg_fx_fast(int32_t f0, int32_t cos_theta);
+void facet_fresnel_schlick_sg_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *cos_theta,
+                                            size_t n);
+
+/* ==== D: normal distributions =================================================
+ * UQ19.13 outputs: D <= 2^20/pi = 333772.1 at N.H = 1, alpha = 2^-10 (for
+ * every D here the peak is ~1/(pi alpha^2) or below, gtr_d's above gamma =
+ * 2.571 aside), and the tail that falls below the LSB (2^-13) is an
+ * absolute error (D below 2^-14 rounds to 0; the oracle does too).  Both
+ * tiers: ggx_d, ggx_aniso_d; the fast tier only (kernels.def fx_code
+ * `fast`): blinn_phong_d, beckmann_d, gtr_d, which need a power with a
+ * non-integer exponent built from integer operations: the integer log2 and
+ * 2^f of src/fx/fx_fast_body.h (gtr_d's contract describes them; their
+ * bounds, 2^-25.5 and 2^-22.9, are enforced by tests/fx/test_fx_prims.c). */
+#define FACET_FX_ERR_GGX_D                           1
+#define FACET_FX_FAST_ERR_GGX_D                      0.514
+#define FACET_FX_FAST_ERR_BLINN_PHONG_D              0.51
+#define FACET_FX_FAST_ERR_BECKMANN_D                 0.51
+#define FACET_FX_ERR_GGX_ANISO_D                     4
+#define FACET_FX_FAST_ERR_GGX_ANISO_D                0.52
+#define FACET_FX_FAST_ERR_GTR_D                      0.52
+
+/* GGX D = alpha^2 / (pi (1 - N.H^2 (1 - alpha^2))^2); noh [0, 1], alpha
+ * [2^-10, 1].  UQ19.13, max 2^20/pi = 333772.1 (N.H = 1, alpha = 2^-10).
+ * fx: error FACET_FX_ERR_GGX_D LSB.  Cost: 1 division, 3 fxe, 2 mul64.
+ * fx_fast: d = (1 - n)(1 + n) + (n alpha)^2 exact in 64 bits; one 1/x.
+ *   Error: FACET_FX_FAST_ERR_GGX_D; measured e 0.514 (LSB 0.510, rel
+ *   2^-15.15) at (16701, 16432).  Cost: 73 / 217 (157 / 788). */
+uint32_t facet_ggx_d_fx(int32_t noh, int32_t alpha);
 uint32_t facet_ggx_d_fx_fast(int32_t noh, int32_t alpha);
+void facet_ggx_d_fx_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
+void facet_ggx_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
+
 /* The exponential D terms, the fast tier only (kernels.def fx_code fast).
  * Format argument: each is 2^-y times a prefactor whose maximum over N.H
  * is 1/(pi alpha^2) <= 2^20/pi (Blinn-Phong at N.H = 1; Beckmann at N.H = 1
@@ -497,9 +338,12 @@ uint32_t facet_ggx_d_fx_fast(int32_t noh, int32_t alpha);
  * X (series) in 64 bits (< 2^42) or Q26 (<= 15 2^26) times 2^20, one
  * 64-bit scale, normalised; y Q24 (<= 2^31).
  * Error: FACET_FX_FAST_ERR_BLINN_PHONG_D (measured 0.5009 over every N.H
- * at 560 alphas; 0.5000 in the test; relative 2^-16 above 2^15 LSB).
+ * at 560 alphas; 0.5000 in the test; relative 2^-16 above 2^15 LSB;
+ * e 0.501, LSB 0.500, rel 2^-16.01 at (31571, 3846)).
  * Cost: 202 / 918 (no precise tier). */
 uint32_t facet_blinn_phong_d_fx_fast(int32_t noh, int32_t alpha);
+void facet_blinn_phong_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
+
 /* Beckmann D = exp(-tan^2 / alpha^2) / (pi alpha^2 N.H^4) (facet.h) as
  * 2^-z alpha^2 r^2 / pi, r = 1/(N.H alpha)^2, z = log2(e) (1 - N.H)(1 + N.H) r;
  * noh [0, 1], alpha [2^-10, 1]; UQ19.13, max 2^20/pi.  N.H = 0 gives 0.
@@ -508,17 +352,43 @@ uint32_t facet_blinn_phong_d_fx_fast(int32_t noh, int32_t alpha);
  * clz exponents; z Q24 (saturated at 128 where z >= 64: D 2^13 <
  * 2^-29 there, the prefactor being <= 2^21 wherever z >= 64).
  * Error: FACET_FX_FAST_ERR_BECKMANN_D (measured 0.5001 over every N.H at
- * 560 alphas; 0.5000 in the test; relative 2^-16 above 2^15 LSB).
+ * 560 alphas; 0.5000 in the test; relative 2^-16 above 2^15 LSB;
+ * e 0.500, LSB 0.500, rel 2^-16.02 at (19614, 22452)).
  * Cost: 163 / 638 (no precise tier). */
 uint32_t facet_beckmann_d_fx_fast(int32_t noh, int32_t alpha);
-/* Anisotropic GGX D, UQ19.13 (as facet_ggx_aniso_d_fx): K in Q61 in 64 bits
- * (the (N.H ax ay)^2 term truncated, <= 2^-20 relative), its floor by an
- * exact 64-bit max, normalised by clz; (ax ay)^3 from the normalised
- * product; one 1/x.
- * Error: FACET_FX_FAST_ERR_GGX_ANISO_D (measured 0.514; 0.512 over 3e6
- * unit half vectors; relative 2^-15.0 above 2^15 LSB).
- * Cost: 159 / 569 (194 / 937). */
+void facet_beckmann_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
+
+/* Anisotropic GGX D = (ax ay)^3 / (pi K^2), K = (T.H ay)^2 + (B.H ax)^2 +
+ * (N.H ax ay)^2 (facet.h); noh [0, 1], toh, boh [-1, 1] (Q15 signed, the
+ * L.V domain), alpha_x, alpha_y [2^-10, 1].  UQ19.13 as ggx_d: for a unit h
+ * D <= 1/(pi ax ay) <= 2^20/pi (N.H = 1, both widths 2^-10), the format
+ * argument of ggx_d with alpha^2 replaced by ax ay.  Inputs no unit h has:
+ * K floored at (ax ay)^2 / 2 (facet.h), so D <= 4/(pi ax ay), which
+ * saturates at FACET_FX_MAX_D where ax ay < 2^-19.4.
+ * fx: intermediates P = AX AY Q30, T AY and B AX Q30 (each <= 2^30, exact),
+ * K Q90 exact in 96 bits [K <= 3], then one fxe rounding
+ * (src/fx/fx_body.h).  Error: FACET_FX_ERR_GGX_ANISO_D LSB: 5 roundings
+ * of <= 2^-32 relative (K, P/K, square, times P, times 1/pi) plus the final
+ * half LSB, which is more than 1 LSB only where raw > 2^29.7 (ax ay <
+ * 2^-17, at or near the peak); measured max 3 LSB (3.09 real) at raw
+ * 2^31.5, (129, 32, 1, 33, 32), relative 2^-29.9.  The exact peak (N.H = 1,
+ * T.H = B.H = 0) is correctly rounded, as ggx_d's.
+ * Cost: 1 division (P / K, or the peak's), 3 fxe mul, ~8 mul64.
+ * fx_fast: K in Q61 in 64 bits (the (N.H ax ay)^2 term truncated, <= 2^-20
+ * relative), its floor by an exact 64-bit max, normalised by clz; (ax ay)^3
+ * from the normalised product; one 1/x.
+ *   Error: FACET_FX_FAST_ERR_GGX_ANISO_D; measured e 0.514 (LSB 0.514, rel
+ *   2^-15.02, i.e. 2^-15.0 above 2^15 LSB) at (24888, -32706, 7085, 32723,
+ *   32705); 0.512 over 3e6 unit half vectors.  Cost: 159 / 569 (352 / 1242). */
+uint32_t facet_ggx_aniso_d_fx(int32_t noh, int32_t toh, int32_t boh, int32_t alpha_x, int32_t alpha_y);
 uint32_t facet_ggx_aniso_d_fx_fast(int32_t noh, int32_t toh, int32_t boh, int32_t alpha_x, int32_t alpha_y);
+void facet_ggx_aniso_d_fx_batch(uint32_t *out, const int32_t *noh, const int32_t *toh,
+                                const int32_t *boh, const int32_t *alpha_x, const int32_t *alpha_y,
+                                size_t n);
+void facet_ggx_aniso_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *toh,
+                                     const int32_t *boh, const int32_t *alpha_x,
+                                     const int32_t *alpha_y, size_t n);
+
 /* GTR D = c / d^gamma (facet.h), the fast tier only (kernels.def fx_code
  * fast); noh [0, 1], alpha [2^-10, 1], gamma [0, 4] (raw Q15 [0, 4 2^15],
  * the GAMMA domain; outside clamps).  Evaluated as
@@ -543,21 +413,124 @@ uint32_t facet_ggx_aniso_d_fx_fast(int32_t noh, int32_t toh, int32_t boh, int32_
  * only.  The tail falls below the LSB (2^-13) as ggx_d's: absolute error.
  * Error: FACET_FX_FAST_ERR_GTR_D (measured max 0.514, relative 2^-15.1
  * above 2^15 LSB: the reciprocal's 2^-16 and the exponent's 2^-24 times ln 2
- * |Z|).  Cost: 293 / 1525 (no precise tier). */
+ * |Z|; e 0.514, LSB 0.510, rel 2^-15.12 at (26315, 315, 31073)).
+ * Cost: 293 / 1525 (no precise tier). */
 uint32_t facet_gtr_d_fx_fast(int32_t noh, int32_t alpha, int32_t gamma);
-/* Smith G1 (exact GGX) = 2n / (n + sqrt(a^2 + (1 - a^2) n^2)), Q15.
- * w exact in 64 bits, one sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_G1.  Cost: 91 / 229 (198 / 1063). */
+void facet_gtr_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha,
+                               const int32_t *gamma, size_t n);
+
+/* ==== Shadowing and visibility ================================================
+ * The formulas of facet.h, the same domains as the f32 kernels with the
+ * fixed-point cos floor (N.L, N.V of the 3- and 4-input kernels in [2^-8,
+ * 1]; the 2-input ones and N.H, V.H in [0, 1]).  Outputs: the G terms Q15
+ * (max 1: every one is capped at 1 or a product or minimum of [0, 1]
+ * values); the Vis terms UQ16.16 (smith_vis max 15894.3, smith_vis_hammon
+ * and smith_vis_joint_approx 13117, smith_vis_fit 15521, all at N.L = N.V =
+ * 2^-8, alpha = 2^-10 [raw < 2^30]).  Both tiers but smith_g1_gtr (the fast
+ * tier only).  Each step's Q format and bound: src/fx/fx_body.h and
+ * src/fx/fx_fast_body.h.  The rest of the menu (g_implicit ..
+ * smith_vis_fit) is correctly rounded in the precise tier (0 LSB measured)
+ * but for the two Vis terms (1 LSB: fxe's 32-bit rounding of the
+ * denominator); its fast-tier errors are over tests/fx/test_fx_fast.c's
+ * sweep, 0.8 M to 2 M tuples per kernel, and its quick variant under
+ * FACET_TEST_QUICK. */
+#define FACET_FX_ERR_SMITH_G1                        1
+#define FACET_FX_FAST_ERR_SMITH_G1                   0.536
+#define FACET_FX_ERR_SMITH_G2                        1
+#define FACET_FX_FAST_ERR_SMITH_G2                   0.536
+#define FACET_FX_ERR_SMITH_G2_UNCORRELATED           1
+#define FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED      0.544
+#define FACET_FX_ERR_SMITH_VIS                       1
+#define FACET_FX_FAST_ERR_SMITH_VIS                  0.054
+#define FACET_FX_ERR_SMITH_G1_HAMMON                 1
+#define FACET_FX_FAST_ERR_SMITH_G1_HAMMON            0.514
+#define FACET_FX_FAST_ERR_SMITH_G1_GTR               0.51
+#define FACET_FX_ERR_SMITH_G2_HAMMON                 1
+#define FACET_FX_FAST_ERR_SMITH_G2_HAMMON            0.514
+#define FACET_FX_ERR_SMITH_VIS_HAMMON                1
+#define FACET_FX_FAST_ERR_SMITH_VIS_HAMMON           0.037
+#define FACET_FX_ERR_G_IMPLICIT                      1
+#define FACET_FX_FAST_ERR_G_IMPLICIT                 0.500
+#define FACET_FX_ERR_G_NEUMANN                       1
+#define FACET_FX_FAST_ERR_G_NEUMANN                  0.000
+#define FACET_FX_ERR_G_COOK_TORRANCE                 1
+#define FACET_FX_FAST_ERR_G_COOK_TORRANCE            0.513
+#define FACET_FX_ERR_G_KELEMEN                       1
+#define FACET_FX_FAST_ERR_G_KELEMEN                  0.513
+#define FACET_FX_ERR_SMITH_G1_BECKMANN               1
+#define FACET_FX_FAST_ERR_SMITH_G1_BECKMANN          0.523
+#define FACET_FX_ERR_SMITH_G1_SCHLICK_BECKMANN       1
+#define FACET_FX_FAST_ERR_SMITH_G1_SCHLICK_BECKMANN  0.508
+#define FACET_FX_ERR_SMITH_VIS_JOINT_APPROX          1
+#define FACET_FX_FAST_ERR_SMITH_VIS_JOINT_APPROX     0.037
+#define FACET_FX_ERR_SMITH_VIS_FIT                   1
+#define FACET_FX_FAST_ERR_SMITH_VIS_FIT              0.048
+
+/* Smith G1 (GGX, exact) = 2 n / (n + sqrt(alpha^2 + (1 - alpha^2) n^2));
+ * nov [0, 1], alpha [2^-10, 1].  Q15, max 1; G1(0) = 0, G1(1) = 1.
+ * fx: error FACET_FX_ERR_SMITH_G1 LSB.  Cost: 1 sqrt, 1 division, 1 fxe, 3 mul.
+ * fx_fast: w exact in 64 bits, one sqrt, one 1/x.
+ *   Error: FACET_FX_FAST_ERR_SMITH_G1; measured e 0.536 (LSB 0.536) at
+ *   (126, 8227).  Cost: 91 / 229 (210 / 1138). */
+int32_t facet_smith_g1_fx(int32_t nov, int32_t alpha);
 int32_t facet_smith_g1_fx_fast(int32_t nov, int32_t alpha);
-/* Smith G2 height-correlated, Q15.  Two sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_G2.  Cost: 136 / 418 (352 / 1715). */
+void facet_smith_g1_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
+void facet_smith_g1_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
+
+/* Smith G2, height-correlated = 2 nl nv / (nv r(nl) + nl r(nv)),
+ * r(x) = sqrt(alpha^2 + (1 - alpha^2) x^2); nol, nov [2^-8, 1], alpha
+ * [2^-10, 1].  Q15, max 1.
+ * fx: error FACET_FX_ERR_SMITH_G2 LSB.  Cost: 2 sqrt, 1 division, 3 fxe, ~8 mul.
+ * fx_fast: two sqrt, one 1/x.
+ *   Error: FACET_FX_FAST_ERR_SMITH_G2; measured e 0.536 (LSB 0.526) at
+ *   (32744, 128, 8281).  Cost: 136 / 418 (352 / 1766). */
+int32_t facet_smith_g2_fx(int32_t nol, int32_t nov, int32_t alpha);
 int32_t facet_smith_g2_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
-/* G1(N.L) G1(N.V), Q15.  Two sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED.  Cost: 131 / 420 (366 / 1727). */
+void facet_smith_g2_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                             const int32_t *alpha, size_t n);
+void facet_smith_g2_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                             const int32_t *alpha, size_t n);
+
+/* G1(N.L) G1(N.V); domains as smith_g2.  Q15, max 1.
+ * fx: error FACET_FX_ERR_SMITH_G2_UNCORRELATED LSB.  Cost: 2 sqrt, 1
+ * division, 3 fxe, ~8 mul.
+ * fx_fast: two sqrt, one 1/x.
+ *   Error: FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED; measured e 0.544 (LSB
+ *   0.539) at (16617, 139, 8637).  Cost: 131 / 420 (378 / 1792). */
+int32_t facet_smith_g2_uncorrelated_fx(int32_t nol, int32_t nov, int32_t alpha);
 int32_t facet_smith_g2_uncorrelated_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
-/* Vis = 0.5 / (nv r(nl) + nl r(nv)), UQ16.16.  Two sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_VIS.  Cost: 115 / 374 (340 / 1674). */
+void facet_smith_g2_uncorrelated_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                          const int32_t *alpha, size_t n);
+void facet_smith_g2_uncorrelated_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                          const int32_t *alpha, size_t n);
+
+/* Vis = G2 / (4 nl nv) = 0.5 / (nv r(nl) + nl r(nv)); domains as smith_g2.
+ * UQ16.16, max 15894.3 (nl = nv = 2^-8, alpha = 2^-10).
+ * fx: error FACET_FX_ERR_SMITH_VIS LSB.  Cost: as smith_g2.
+ * fx_fast: two sqrt, one 1/x.
+ *   Error: FACET_FX_FAST_ERR_SMITH_VIS; measured e 0.054 (LSB 0.000, rel
+ *   2^-14.24) at (32739, 181, 16531).  Cost: 115 / 374 (331 / 1740). */
+uint32_t facet_smith_vis_fx(int32_t nol, int32_t nov, int32_t alpha);
 uint32_t facet_smith_vis_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+void facet_smith_vis_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                              const int32_t *alpha, size_t n);
+void facet_smith_vis_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                              const int32_t *alpha, size_t n);
+
+/* Hammon's G1 ~ 2 n / (n (2 - alpha) + alpha); nov [0, 1], alpha
+ * [2^-10, 1].  Q15, max 1.
+ * fx: error FACET_FX_ERR_SMITH_G1_HAMMON LSB (both operands exact:
+ * correctly rounded).  Cost: 1 division, 2 mul.
+ * fx_fast: the denominator exact; one 1/x.
+ *   Error: FACET_FX_FAST_ERR_SMITH_G1_HAMMON; measured e 0.514 (LSB 0.511)
+ *   at (61, 4096).  Cost: 54 / 115 (68 / 514). */
+int32_t facet_smith_g1_hammon_fx(int32_t nov, int32_t alpha);
+int32_t facet_smith_g1_hammon_fx_fast(int32_t nov, int32_t alpha);
+void facet_smith_g1_hammon_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
+                                    size_t n);
+void facet_smith_g1_hammon_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
+                                    size_t n);
+
 /* Smith G1 for GTR (Dimov; facet.h's closed forms at gamma = 0 .. 4 and
  * the monotone cubic in gamma between them), the fast tier only (kernels.def
  * fx_code fast); nov [0, 1], alpha [2^-10, 1], gamma [0, 4] (raw [0, 4
@@ -576,33 +549,281 @@ uint32_t facet_smith_vis_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
  * beside the code (src/fx/fx_fast_body.h).
  * Error: FACET_FX_FAST_ERR_SMITH_G1_GTR LSB (measured 0.5002 in the test,
  * 0.5021 over 3e6 tuples with gamma uniform in [0, 4] and 1 in 7 at an
- * integer order; each closed form alone <= 0.5016).  Cost: 949 / 3790
+ * integer order; each closed form alone <= 0.5016; e 0.502, LSB 0.500 at
+ * (24, 34, 97874)).  Cost: 949 / 3790
  * (no precise tier; 14 refined reciprocals, 2 log2, 1 2^f: the widest
  * kernel of the tier). */
 int32_t facet_smith_g1_gtr_fx_fast(int32_t nov, int32_t alpha, int32_t gamma);
-/* Hammon G1 = 2n / (n (2 - a) + a), the denominator exact; Q15.  One 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_G1_HAMMON.  Cost: 54 / 115 (62 / 508). */
-int32_t facet_smith_g1_hammon_fx_fast(int32_t nov, int32_t alpha);
-/* Hammon G2 = 2 nl nv / m, m exact in 64 bits; Q15.  One 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_G2_HAMMON.  Cost: 77 / 180 (101 / 600). */
+void facet_smith_g1_gtr_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
+                                      const int32_t *gamma, size_t n);
+
+/* Hammon's G2 ~ 2 nl nv / m, m = (1 - alpha) 2 nl nv + alpha (nl + nv);
+ * domains as smith_g2.  Q15, max 1.
+ * fx: error FACET_FX_ERR_SMITH_G2_HAMMON LSB.  Cost: 1 division, ~6 mul.
+ * fx_fast: m exact in 64 bits; one 1/x.
+ *   Error: FACET_FX_FAST_ERR_SMITH_G2_HAMMON; measured e 0.514 (LSB 0.509)
+ *   at (169, 13161, 10510).  Cost: 77 / 180 (128 / 648). */
+int32_t facet_smith_g2_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
 int32_t facet_smith_g2_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
-/* Hammon Vis = 0.5 / m; UQ16.16, max 13117.  One 1/x.
- * Error: FACET_FX_FAST_ERR_SMITH_VIS_HAMMON.  Cost: 66 / 143 (87 / 558). */
+void facet_smith_g2_hammon_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                    const int32_t *alpha, size_t n);
+void facet_smith_g2_hammon_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                    const int32_t *alpha, size_t n);
+
+/* Hammon's Vis ~ 0.5 / m; domains as smith_g2.  UQ16.16, max 13117.
+ * fx: error FACET_FX_ERR_SMITH_VIS_HAMMON LSB.  Cost: 1 division, ~6 mul.
+ * fx_fast: one 1/x.
+ *   Error: FACET_FX_FAST_ERR_SMITH_VIS_HAMMON; measured e 0.037 (LSB 0.000,
+ *   rel 2^-15.38) at (32762, 31510, 9047).  Cost: 66 / 143 (115 / 610). */
+uint32_t facet_smith_vis_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
 uint32_t facet_smith_vis_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
-/* Hammon's diffuse (facet.h's formula and raise); UQ8.24, max 20.65.
- * 32-bit stages: P(x) = x (1 + y + ... + y^4), the sum from a table; the
- * bracket in Q25 [< 2^31.02], times albedo / pi; one sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON.  Cost: 121 / 414 (494 / 1960). */
+void facet_smith_vis_hammon_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                     const int32_t *alpha, size_t n);
+void facet_smith_vis_hammon_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                     const int32_t *alpha, size_t n);
+
+/* N.L N.V; Q15.  Scaling: N.L N.V Q30 exact [<= 2^30], rounded once to Q15.
+ * fx: error FACET_FX_ERR_G_IMPLICIT LSB (measured 0).  Cost: 1 mul.
+ * fx_fast: Error: FACET_FX_FAST_ERR_G_IMPLICIT; measured e 0.500 (LSB
+ * 0.500) at (512, 32). */
+int32_t facet_g_implicit_fx(int32_t nol, int32_t nov);
+int32_t facet_g_implicit_fx_fast(int32_t nol, int32_t nov);
+void facet_g_implicit_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov, size_t n);
+void facet_g_implicit_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov, size_t n);
+
+/* min(N.L, N.V) (= N.L N.V / max); Q15, exact in both tiers.
+ * fx: error FACET_FX_ERR_G_NEUMANN LSB (measured 0).
+ * fx_fast: Error: FACET_FX_FAST_ERR_G_NEUMANN (0: exact). */
+int32_t facet_g_neumann_fx(int32_t nol, int32_t nov);
+int32_t facet_g_neumann_fx_fast(int32_t nol, int32_t nov);
+void facet_g_neumann_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov, size_t n);
+void facet_g_neumann_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov, size_t n);
+
+/* min(1, 2 N.H min(N.L, N.V) / V.H); Q15.  Scaling: g = 2 N.H min(N.L, N.V)
+ * Q30 exact [<= 2^31]; 1 where g >= V.H 2^15 (V.H = 0 included), else
+ * g / V.H.
+ * fx: error FACET_FX_ERR_G_COOK_TORRANCE LSB (measured 0).  Cost: 1 division, 2 mul.
+ * fx_fast: Error: FACET_FX_FAST_ERR_G_COOK_TORRANCE; measured e 0.513 (LSB
+ * 0.512) on the quick sweep; full: 0.5115 at (8143, 137, 32753, 9181). */
+int32_t facet_g_cook_torrance_fx(int32_t nol, int32_t nov, int32_t noh, int32_t voh);
+int32_t facet_g_cook_torrance_fx_fast(int32_t nol, int32_t nov, int32_t noh, int32_t voh);
+void facet_g_cook_torrance_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                    const int32_t *noh, const int32_t *voh, size_t n);
+void facet_g_cook_torrance_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                         const int32_t *noh, const int32_t *voh, size_t n);
+
+/* min(1, N.L N.V / V.H^2); Q15.  Scaling: N.L N.V and V.H^2 Q30 exact
+ * [<= 2^30]; 1 where the first is not below the second, else their
+ * quotient.
+ * fx: error FACET_FX_ERR_G_KELEMEN LSB (measured 0).  Cost: 1 division, 2 mul.
+ * fx_fast: Error: FACET_FX_FAST_ERR_G_KELEMEN; measured e 0.513 (LSB 0.512)
+ * at (32748, 128, 11613). */
+int32_t facet_g_kelemen_fx(int32_t nol, int32_t nov, int32_t voh);
+int32_t facet_g_kelemen_fx_fast(int32_t nol, int32_t nov, int32_t voh);
+void facet_g_kelemen_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                              const int32_t *voh, size_t n);
+void facet_g_kelemen_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
+                                   const int32_t *voh, size_t n);
+
+/* Walter's Beckmann G1 (facet.h); Q15, G1(0) = 0, G1(1) = 1.  Scaling: the
+ * branch c < 1.6 as 25 N^2 2^24 < A^2 (1 - n^2) Q60 exact (fast: from the
+ * high words; misjudged only within 2^-20 of c = 1.6, where both pieces are
+ * 1); the rational in fxe (fast: in c Q29, c^2 Q29, the sums Q59 in 64 bits
+ * [< 2^63]); sqrt(1 - n^2) by the exact root (fast: the table).
+ * fx: error FACET_FX_ERR_SMITH_G1_BECKMANN LSB (measured 0).  Cost: 1 sqrt,
+ * 1 division, ~8 fxe.
+ * fx_fast: Error: FACET_FX_FAST_ERR_SMITH_G1_BECKMANN; measured e 0.523
+ * (LSB 0.523) at (23, 2665). */
+int32_t facet_smith_g1_beckmann_fx(int32_t nov, int32_t alpha);
+int32_t facet_smith_g1_beckmann_fx_fast(int32_t nov, int32_t alpha);
+void facet_smith_g1_beckmann_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
+void facet_smith_g1_beckmann_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
+                                           size_t n);
+
+/* N.V / (N.V (1 - k) + k), k = alpha sqrt(2/pi); Q15.  Scaling: k = a
+ * round(sqrt(2/pi) 2^32); the denominator N (1 - k) + k exact in 64 bits
+ * [< 2^63].
+ * fx: error FACET_FX_ERR_SMITH_G1_SCHLICK_BECKMANN LSB (measured 0).  Cost:
+ * 1 division, 3 mul64.
+ * fx_fast: Error: FACET_FX_FAST_ERR_SMITH_G1_SCHLICK_BECKMANN; measured e
+ * 0.508 (LSB 0.507) at (150, 6527). */
+int32_t facet_smith_g1_schlick_beckmann_fx(int32_t nov, int32_t alpha);
+int32_t facet_smith_g1_schlick_beckmann_fx_fast(int32_t nov, int32_t alpha);
+void facet_smith_g1_schlick_beckmann_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
+                                              size_t n);
+void facet_smith_g1_schlick_beckmann_fx_fast_batch(int32_t *out, const int32_t *nov,
+                                                   const int32_t *alpha, size_t n);
+
+/* The joint approximation = Hammon's Vis; UQ16.16, max 13117: Hammon's
+ * exact m45, the same code as smith_vis_hammon in each tier (the same
+ * bits).
+ * fx: error FACET_FX_ERR_SMITH_VIS_JOINT_APPROX LSB (measured 1, as
+ * smith_vis_hammon).  Cost: as smith_vis_hammon.
+ * fx_fast: Error: FACET_FX_FAST_ERR_SMITH_VIS_JOINT_APPROX; measured e
+ * 0.037 (LSB 0.000, rel 2^-14.79), as smith_vis_hammon. */
+uint32_t facet_smith_vis_joint_approx_fx(int32_t nol, int32_t nov, int32_t alpha);
+uint32_t facet_smith_vis_joint_approx_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+void facet_smith_vis_joint_approx_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                           const int32_t *alpha, size_t n);
+void facet_smith_vis_joint_approx_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                                const int32_t *alpha, size_t n);
+
+/* The fitted visibility (facet.h); UQ16.16, max 15521.  Scaling: the float
+ * constants exact in Q30; sigma exact in Q60 (fast: Q30 stages, every value
+ * < 2^32, R >= 2^21); the denominator in fxe (fast: exact in 64 bits
+ * [< 2^48]).
+ * fx: error FACET_FX_ERR_SMITH_VIS_FIT LSB (measured 1: fxe's 32-bit
+ * rounding of the denominator).  Cost: 1 division, ~14 fxe.
+ * fx_fast: Error: FACET_FX_FAST_ERR_SMITH_VIS_FIT; measured e 0.048 (LSB
+ * 0.000, rel 2^-14.39) at (32751, 32733, 27251). */
+uint32_t facet_smith_vis_fit_fx(int32_t nol, int32_t nov, int32_t alpha);
+uint32_t facet_smith_vis_fit_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
+void facet_smith_vis_fit_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                  const int32_t *alpha, size_t n);
+void facet_smith_vis_fit_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                       const int32_t *alpha, size_t n);
+
+/* ==== Diffuse =================================================================
+ * UQ8.24 outputs (BRDF values, not yet times N.L).  Both tiers:
+ * diffuse_hammon; the fast tier only: the rest of the menu (no precise
+ * fixed-point kernel), the formulas of facet.h with the fixed-point domains
+ * (nol, nov [2^-8, 1]; lov [-1, 1]; loh, albedo [0, 1]; alpha [2^-10, 1];
+ * every int32 outside clamps), the fast tier's bound and datapath; each
+ * step's Q format and bound are beside the code in src/fx/fx_fast_body.h.
+ * Maxima: diffuse_hammon 20.65, diffuse_burley 6.25/pi = 1.99,
+ * diffuse_oren_nayar (A + B 256)/pi <= 27.3 at nl = nv = 2^-8, L.V = 1 [raw
+ * < 2^28.8], the two Hammon variants <= diffuse_hammon's 20.65.  Fast-tier
+ * errors of the menu: the final rounding (measured over
+ * tests/fx/test_fx_fast.c's full sweep, 0.8 M to 2.3 M tuples per kernel,
+ * x86-64). */
+#define FACET_FX_ERR_DIFFUSE_HAMMON                  1
+#define FACET_FX_FAST_ERR_DIFFUSE_HAMMON             0.552
+#define FACET_FX_FAST_ERR_DIFFUSE_BURLEY             0.506
+#define FACET_FX_FAST_ERR_DIFFUSE_OREN_NAYAR         0.508
+#define FACET_FX_FAST_ERR_DIFFUSE_HAMMON_HYBRID      0.512
+#define FACET_FX_FAST_ERR_DIFFUSE_HAMMON_CHEAP       0.507
+
+/* Hammon's GGX diffuse (facet.h's formula, 1 + L.V raised to
+ * (N.L + N.V)^2 / 2); nol, nov [2^-8, 1], lov [-1, 1], alpha [2^-10, 1],
+ * albedo [0, 1].  UQ8.24, max 20.65 (nl = nv = 2^-8, L.V = 1, alpha =
+ * albedo = 1).
+ * fx: error FACET_FX_ERR_DIFFUSE_HAMMON LSB.  Cost: 1 sqrt, 1 division,
+ * ~12 fxe, ~10 mul64.
+ * fx_fast: 32-bit stages: P(x) = x (1 + y + ... + y^4), the sum from a
+ * table; the bracket in Q25 [< 2^31.02], times albedo / pi; one sqrt, one
+ * 1/x.
+ *   Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON; measured e 0.552 (LSB 0.517,
+ *   rel 2^-14.55) at (134, 142, -32768, 40, 10500).  Cost: 121 / 414 (686 /
+ *   2290). */
+uint32_t facet_diffuse_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
+                                 int32_t albedo);
 uint32_t facet_diffuse_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                       int32_t albedo);
-/* The whole model D Vis_hammon F(f0, L.H) + diffuse from the dots (N.H
- * never formed, the peak's cancellation exact); UQ40.24, max 4.38e9.  One
- * sqrt, three 1/x, 26 high-word products; spec and diffuse added in Q29
- * (64 bits) and rounded once.
- * Error: FACET_FX_FAST_ERR_BRDF_HAMMON (relative 2^-13.2 above 2^15 LSB).
- * Cost: 275 / 1060 (1051 / 4221). */
+void facet_diffuse_hammon_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                   const int32_t *lov, const int32_t *alpha,
+                                   const int32_t *albedo, size_t n);
+void facet_diffuse_hammon_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                   const int32_t *lov, const int32_t *alpha,
+                                   const int32_t *albedo, size_t n);
+
+/* Burley's diffuse (facet.h); UQ8.24, max 1.99.  Fast tier only.  One sqrt
+ * (table).  Scaling: sqrt(alpha) Q19 from the sqrt table; f_d90 Q29 [<= 2.5
+ * 2^29]; each factor (1 - y^5) + f_d90 y^5 Q29, their product Q28 [< 2^31],
+ * times albedo/pi Q33: Q30.
+ * Error: FACET_FX_FAST_ERR_DIFFUSE_BURLEY; measured e 0.505 (LSB 0.505, rel
+ * 2^-11.01) at (170, 188, 24325, 13879, 3).  Cost: 85 / 298. */
+uint32_t facet_diffuse_burley_fx_fast(int32_t nol, int32_t nov, int32_t loh, int32_t alpha,
+                                      int32_t albedo);
+void facet_diffuse_burley_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                        const int32_t *loh, const int32_t *alpha, const int32_t *albedo,
+                                        size_t n);
+
+/* Oren-Nayar's qualitative diffuse from the dots (facet.h); UQ8.24, max
+ * 27.3.  Fast tier only.  Three 1/x (table).  Scaling: sigma^2 = a^2/4 Q32
+ * exact; A, B by one table 1/x each (Q31); max(0, L.V - nl nv) Q30 exact, /
+ * max(nl, nv) Q22 [<= 256 2^22]; A + B term Q21 [< 2^27.5]; times albedo/pi
+ * Q33: Q26.
+ * Error: FACET_FX_FAST_ERR_DIFFUSE_OREN_NAYAR; measured e 0.507 (LSB 0.507,
+ * rel 2^-11.00) at (2230, 2227, 32768, 22716, 1).  Cost: 172 / 453. */
+uint32_t facet_diffuse_oren_nayar_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
+                                          int32_t albedo);
+void facet_diffuse_oren_nayar_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                            const int32_t *lov, const int32_t *alpha,
+                                            const int32_t *albedo, size_t n);
+
+/* Hammon's hybrid diffuse (facet.h); UQ8.24.  Fast tier only.  One sqrt,
+ * one 1/x: diffuse_hammon's rough, multi and final steps (its bounds) with
+ * the smooth term (1 - yl^5/2)(1 - yv^5/2) Q30.
+ * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON_HYBRID; measured e 0.511 (LSB
+ * 0.511, rel 2^-10.99) at (28017, 5031, -14686, 32745, 18).  Cost: 121 /
+ * 469. */
+uint32_t facet_diffuse_hammon_hybrid_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
+                                             int32_t albedo);
+void facet_diffuse_hammon_hybrid_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                               const int32_t *lov, const int32_t *alpha,
+                                               const int32_t *albedo, size_t n);
+
+/* Hammon's cheaper diffuse (facet.h); UQ8.24.  Fast tier only.  One sqrt,
+ * one 1/x: diffuse_hammon's rough, multi and final steps with smooth = 1.
+ * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON_CHEAP; measured e 0.506 (LSB
+ * 0.506, rel 2^-11.01) at (184, 22231, -30411, 32717, 40).  Cost: 98 /
+ * 368. */
+uint32_t facet_diffuse_hammon_cheap_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
+                                            int32_t albedo);
+void facet_diffuse_hammon_cheap_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
+                                              const int32_t *lov, const int32_t *alpha,
+                                              const int32_t *albedo, size_t n);
+
+/* ==== The whole BRDF ==========================================================
+ * Hammon's model, D Vis_hammon F(f0, L.H) + diffuse from the dots, then its
+ * RGB forms (one geometry, three channels) and their batches.  64-bit
+ * outputs: a batch's out must not overlap an input. */
+#define FACET_FX_ERR_BRDF_HAMMON                     1
+#define FACET_FX_FAST_ERR_BRDF_HAMMON                0.646
+
+/* The whole model: D Vis_hammon F(f0, L.H) + diffuse, from the dots (N.H
+ * never formed; the peak's cancellation exact); domains as diffuse_hammon,
+ * f0 [0, 1].  UQ40.24, max 4.38e9 (D 333772 x Vis 13117 at the grazing
+ * peak).
+ * fx: error FACET_FX_ERR_BRDF_HAMMON LSB where the value is below 16; above,
+ * 2^-26 relative (a double oracle cannot resolve 2^-24 on values up to 4e9;
+ * measured 2^-28.3).  Cost: 2 sqrt, 3 division, ~30 fxe.
+ * fx_fast: one sqrt, three 1/x, 26 high-word products; spec and diffuse
+ * added in Q29 (64 bits) and rounded once.
+ *   Error: FACET_FX_FAST_ERR_BRDF_HAMMON; measured e 0.646 (LSB 0.646, rel
+ *   2^-13.20 above 2^15 LSB) at (32768, 128, 129, 1000, 32, 0).  Cost: 275
+ *   / 1060 (1476 / 4919). */
+uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
+                              int32_t f0, int32_t albedo);
 uint64_t facet_brdf_hammon_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                    int32_t f0, int32_t albedo);
+void facet_brdf_hammon_fx_batch(uint64_t *out, const int32_t *nol, const int32_t *nov,
+                                const int32_t *lov, const int32_t *alpha, const int32_t *f0,
+                                const int32_t *albedo, size_t n);
+void facet_brdf_hammon_fx_fast_batch(uint64_t *out, const int32_t *nol, const int32_t *nov,
+                                const int32_t *lov, const int32_t *alpha, const int32_t *f0,
+                                const int32_t *albedo, size_t n);
+
+/* brdf_hammon for an RGB f0 and albedo, the geometry (D, Vis, the Fresnel
+ * tail, the diffuse shape) computed once: out[c] equals
+ * facet_brdf_hammon_fx(nol, nov, lov, alpha, f0[c], albedo[c]) bit for bit
+ * (the same operations per channel; tests/fx/test_fx_rgb.c), on every target.
+ * Cost: one geometry and three channel tails (`build/facet-bench api`:
+ * 0.48x the time of three
+ * facet_brdf_hammon_fx calls, 0.63x in fx_fast, on x86-64). */
+void facet_brdf_hammon_rgb_fx(uint64_t out[3], int32_t nol, int32_t nov, int32_t lov,
+                              int32_t alpha, const int32_t f0[3], const int32_t albedo[3]);
+/* batches of it: planar (out[c][i], f0[c][i], albedo[c][i]) and interleaved
+ * (out[3i + c], f0[3i + c], albedo[3i + c]); the scalar loop on every port;
+ * out must not overlap an input (64-bit outputs).  The fast tier: facet_brdf_hammon_rgb_fx_fast[_batch...] below. */
+void facet_brdf_hammon_rgb_fx_batch(uint64_t *const out[3], const int32_t *nol, const int32_t *nov,
+                                    const int32_t *lov, const int32_t *alpha,
+                                    const int32_t *const f0[3], const int32_t *const albedo[3],
+                                    size_t n);
+void facet_brdf_hammon_rgb_fx_batch_interleaved(uint64_t *out, const int32_t *nol,
+                                                const int32_t *nov, const int32_t *lov,
+                                                const int32_t *alpha, const int32_t *f0,
+                                                const int32_t *albedo, size_t n);
 /* the RGB form and its batches, as facet_brdf_hammon_rgb_fx above: each
  * channel equals facet_brdf_hammon_fx_fast bit for bit */
 void facet_brdf_hammon_rgb_fx_fast(uint64_t out[3], int32_t nol, int32_t nov, int32_t lov,
@@ -615,155 +836,6 @@ void facet_brdf_hammon_rgb_fx_fast_batch_interleaved(uint64_t *out, const int32_
                                                      const int32_t *nov, const int32_t *lov,
                                                      const int32_t *alpha, const int32_t *f0,
                                                      const int32_t *albedo, size_t n);
-
-/* ---- Fresnel and diffuse: the rest of the menu, the fast tier only -------
- * No precise fixed-point kernel (no facet_<kernel>_fx: the fx table's fx
- * and fx_batch are NULL; `facet eval --format fx` refuses them).  The
- * formulas of facet.h, the fixed-point domains (nol, nov [2^-8, 1]; lov
- * [-1, 1]; f0, f90, voh, cos, loh, albedo [0, 1]; alpha [2^-10, 1]; every
- * int32 outside clamps), the fast tier's bound (above) and datapath.
- * Outputs: Fresnel Q15 (max 1: convex combinations of [0, 1] values), the
- * diffuse terms UQ8.24 as diffuse_hammon (diffuse_burley max 6.25/pi =
- * 1.99; diffuse_oren_nayar (A + B 256)/pi <= 27.3 at nl = nv = 2^-8, L.V =
- * 1 [raw < 2^28.8]; the two Hammon variants <= diffuse_hammon's 20.65).
- * Scaling (src/fx/fx_fast_body.h gives each step's Q format and bound):
- *   fresnel_cook_torrance  the Fresnel equations divided by eta (u = 1/eta
- *               = (1 - s)/(1 + s), s = sqrt(f0)): rs = (u c - ct)/(u c + ct),
- *               rp = (c - u ct)/(c + u ct), ct = sqrt(v + u^2 c^2), v = 1 -
- *               u^2 = 4 s/(1 + s)^2, every term in [0, 1]; s, ct from the
- *               sqrt table, 1/(1 + s) from the 1/x table, all Q31/Q30; u =
- *               (1 - f0)/(1 + s)^2 with its own exponent (to 2^-14 relative
- *               down to u = 2^-17.6 at f0 = 1 - 2^-15), c +- u ct in 64 bits
- *               at the scale 2^(ku + 30) [< 2^62]; |rs|, |rp| by one 1/x
- *               each, F Q31 [<= 2^31]; f0 = 0 and f0 = 1 selected (0, 1);
- *   fresnel_schlick_f90  y^5 Q30 as fresnel_schlick's; f0 (1 - y^5) + f90
- *               y^5 as two high words Q30 [<= 2^30], rounded once: f0 at
- *               V.H = 1, f90 at V.H = 0 exactly;
- *   fresnel_schlick_sg  p = (5.55473 c + 6.98316) c Q28 [< 2^31.65] (the
- *               constants Q29); 2^-p = 2^-floor(p) times a 257-entry Q31
- *               table of 2^(-i/256) with 20 interpolation bits (2^-20.1);
- *               F(f0, 0) = 1 exactly;
- *   diffuse_burley  sqrt(alpha) Q19 from the sqrt table; f_d90 Q29
- *               [<= 2.5 2^29]; each factor (1 - y^5) + f_d90 y^5 Q29, their
- *               product Q28 [< 2^31], times albedo/pi Q33: Q30;
- *   diffuse_oren_nayar  sigma^2 = a^2/4 Q32 exact; A, B by one table 1/x
- *               each (Q31); max(0, L.V - nl nv) Q30 exact, / max(nl, nv)
- *               Q22 [<= 256 2^22]; A + B term Q21 [< 2^27.5]; times
- *               albedo/pi Q33: Q26;
- *   diffuse_hammon_hybrid, diffuse_hammon_cheap  diffuse_hammon's rough,
- *               multi and final steps (its bounds) with the smooth term
- *               (1 - yl^5/2)(1 - yv^5/2) Q30 (hybrid), 1 (cheap).
- * Errors: FACET_FX_FAST_ERR_* (the fast tier's measure, its maximum over
- * tests/fx/test_fx_fast.c's full sweep, 0.8 M to 2.3 M tuples per kernel, x86-64;
- * e, LSB < 1K, rel >= 1K, argmax; the error is the final rounding in each
- * but cook_torrance):
- *   fresnel_cook_torrance   0.634  0.634  -         (51, 11657; the test's sweep: 0.610 at
- *                                                    49, 11673; this from every f0 x every
- *                                                    5th V.H, 2.1e8 pairs: the tables' s, ct)
- *   fresnel_schlick_f90     0.500  0.500  -         (35, 6472, 24521)
- *   fresnel_schlick_sg      0.501  0.500  -         (46, 17697)
- *   diffuse_burley          0.505  0.505  2^-11.01  (170, 188, 24325, 13879, 3)
- *   diffuse_oren_nayar      0.507  0.507  2^-11.00  (2230, 2227, 32768, 22716, 1)
- *   diffuse_hammon_hybrid   0.511  0.511  2^-10.99  (28017, 5031, -14686, 32745, 18)
- *   diffuse_hammon_cheap    0.506  0.506  2^-11.01  (184, 22231, -30411, 32717, 40)
- * Cost: executed instructions per call on Cortex-M4 / Cortex-M0 (as the
- * fast tier above). */
-#define FACET_FX_FAST_ERR_FRESNEL_COOK_TORRANCE 0.634
-#define FACET_FX_FAST_ERR_FRESNEL_SCHLICK_F90   0.501
-#define FACET_FX_FAST_ERR_FRESNEL_SCHLICK_SG    0.502
-#define FACET_FX_FAST_ERR_DIFFUSE_BURLEY        0.506
-#define FACET_FX_FAST_ERR_DIFFUSE_OREN_NAYAR    0.508
-#define FACET_FX_FAST_ERR_DIFFUSE_HAMMON_HYBRID 0.512
-#define FACET_FX_FAST_ERR_DIFFUSE_HAMMON_CHEAP  0.507
-
-/* The exact dielectric Fresnel (facet.h), eta from f0; Q15, F(0, c) = 0,
- * F(1, c) = 1, F(f0, 0) = 1.  Two sqrt, three 1/x (tables).
- * Error: FACET_FX_FAST_ERR_FRESNEL_COOK_TORRANCE.  Cost: 206 / 620. */
-int32_t facet_fresnel_cook_torrance_fx_fast(int32_t f0, int32_t voh);
-/* f0 (1 - (1 - V.H)^5) + f90 (1 - V.H)^5, Q15.  1 mul, 4 high-word products.
- * Error: FACET_FX_FAST_ERR_FRESNEL_SCHLICK_F90.  Cost: 30 / 78. */
-int32_t facet_fresnel_schlick_f90_fx_fast(int32_t f0, int32_t f90, int32_t voh);
-/* f0 + (1 - f0) 2^((-5.55473 cos - 6.98316) cos), Q15; F(f0, 0) = 1.
- * 1 mul, 4 high-word products, one interpolated table.
- * Error: FACET_FX_FAST_ERR_FRESNEL_SCHLICK_SG.  Cost: 36 / 95. */
-int32_t facet_fresnel_schlick_sg_fx_fast(int32_t f0, int32_t cos_theta);
-/* Burley's diffuse (facet.h); UQ8.24, max 1.99.  One sqrt (table).
- * Error: FACET_FX_FAST_ERR_DIFFUSE_BURLEY.  Cost: 85 / 298. */
-uint32_t facet_diffuse_burley_fx_fast(int32_t nol, int32_t nov, int32_t loh, int32_t alpha,
-                                      int32_t albedo);
-/* Oren-Nayar's qualitative diffuse from the dots (facet.h); UQ8.24, max
- * 27.3.  Three 1/x (table).
- * Error: FACET_FX_FAST_ERR_DIFFUSE_OREN_NAYAR.  Cost: 172 / 453. */
-uint32_t facet_diffuse_oren_nayar_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
-                                          int32_t albedo);
-/* Hammon's hybrid diffuse (facet.h); UQ8.24.  One sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON_HYBRID.  Cost: 121 / 469. */
-uint32_t facet_diffuse_hammon_hybrid_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
-                                             int32_t albedo);
-/* Hammon's cheaper diffuse (facet.h); UQ8.24.  One sqrt, one 1/x.
- * Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON_CHEAP.  Cost: 98 / 368. */
-uint32_t facet_diffuse_hammon_cheap_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
-                                            int32_t albedo);
-/* their batches, as the fast tier batches below */
-void facet_fresnel_cook_torrance_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *voh, size_t n);
-void facet_fresnel_schlick_f90_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *f90,
-                                             const int32_t *voh, size_t n);
-void facet_fresnel_schlick_sg_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *cos_theta,
-                                            size_t n);
-void facet_diffuse_burley_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
-                                        const int32_t *loh, const int32_t *alpha, const int32_t *albedo,
-                                        size_t n);
-void facet_diffuse_oren_nayar_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
-                                            const int32_t *lov, const int32_t *alpha,
-                                            const int32_t *albedo, size_t n);
-void facet_diffuse_hammon_hybrid_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
-                                               const int32_t *lov, const int32_t *alpha,
-                                               const int32_t *albedo, size_t n);
-void facet_diffuse_hammon_cheap_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
-                                              const int32_t *lov, const int32_t *alpha,
-                                              const int32_t *albedo, size_t n);
-
-/* ---- fast tier batches: out[i] = facet_<kernel>_fx_fast(in1[i], ...) ---
- * Dispatched like the precise batches (one port choice for every format):
- * the active port's code (avx2 and avx512: AVX2 lanes; aarch64 neon: NEON
- * lanes; the fast body, src/fx/fx_fast_body.h, instantiated on each), the
- * scalar loop elsewhere.  Bit-identical to the scalar kernels for every
- * int32 input, n, alignment and tail; out may be the very same array as an
- * input (32-bit outputs); no other overlap. */
-void facet_noh_from_dots_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
-                                  const int32_t *lov, size_t n);
-void facet_loh_from_dots_fx_fast_batch(int32_t *out, const int32_t *lov, size_t n);
-void facet_fresnel_schlick_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *cos_theta,
-                                    size_t n);
-void facet_ggx_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
-void facet_blinn_phong_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
-void facet_beckmann_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
-void facet_ggx_aniso_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *toh,
-                                     const int32_t *boh, const int32_t *alpha_x,
-                                     const int32_t *alpha_y, size_t n);
-void facet_gtr_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha,
-                               const int32_t *gamma, size_t n);
-void facet_smith_g1_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
-void facet_smith_g2_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
-                             const int32_t *alpha, size_t n);
-void facet_smith_g2_uncorrelated_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
-                                          const int32_t *alpha, size_t n);
-void facet_smith_vis_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
-                              const int32_t *alpha, size_t n);
-void facet_smith_g1_hammon_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
-                                    size_t n);
-void facet_smith_g1_gtr_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
-                                      const int32_t *gamma, size_t n);
-void facet_smith_g2_hammon_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
-                                    const int32_t *alpha, size_t n);
-void facet_smith_vis_hammon_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
-                                     const int32_t *alpha, size_t n);
-void facet_diffuse_hammon_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
-                                   const int32_t *lov, const int32_t *alpha,
-                                   const int32_t *albedo, size_t n);
-void facet_brdf_hammon_fx_fast_batch(uint64_t *out, const int32_t *nol, const int32_t *nov,
-                                const int32_t *lov, const int32_t *alpha, const int32_t *f0,
-                                const int32_t *albedo, size_t n);
 
 /* ---- the shared primitives (exposed for the tests) ---------------------- */
 /* floor((2^64 - 1) / d) - 2^32, d in [2^31, 2^32) */

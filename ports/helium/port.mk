@@ -10,6 +10,7 @@
 ifneq ($(filter arm-none-eabi%,$(TARGET)),)
 HELIUM_MVE_FP := $(shell $(CC) $(CFLAGS) -dM -E - < /dev/null 2>/dev/null | grep -c '__ARM_FEATURE_MVE [23]')
 ifneq ($(HELIUM_MVE_FP),0)
+FACET_PORTS += helium
 HELIUM_CC ?= $(CC)
 HELIUM_CCFLAGS := $(if $(filter clang%,$(notdir $(HELIUM_CC))),--target=arm-none-eabi -fshort-enums \
                   -isystem $(dir $(shell $(CC) -print-file-name=libc.a))../include)

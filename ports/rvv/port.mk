@@ -11,6 +11,7 @@ RVV_CC ?= clang
 RVV_CCFLAGS := --target=riscv64-linux-gnu -march=rv64gcv $(if $(RVV_LMUL),-DFACET_RVV_LMUL=$(RVV_LMUL))
 RVV_OK := $(shell printf '\043include <riscv_vector.h>\n' | $(RVV_CC) $(RVV_CCFLAGS) -x c -fsyntax-only - 2>/dev/null && echo 1)
 ifeq ($(RVV_OK),1)
+FACET_PORTS += rvv
 BASEFLAGS += -DFACET_PORT_RVV=1
 LIB_OBJ += $(BUILD)/ports/rvv/f32_rvv.o $(BUILD)/ports/rvv/fx_rvv.o
 $(BUILD)/ports/rvv/%.o: ports/rvv/%.c $(HEADERS) $(SRC_HDRS)

@@ -15,11 +15,6 @@
 /* the limit of vectors --count */
 #define COUNT_MAX 1000000000ull /* 10^9 random vectors (tens of GB of text) */
 
-int facet_cli_fx_eval(int argc, char **argv);
-int facet_cli_vectors(int argc, char **argv);
-void facet_cli_unknown_kernel(const char *verb, const char *what, const char *name); /* facet.c */
-extern const char facet_cli_input_help[], facet_cli_exit_help[];               /* facet.c */
-
 static void usage_eval(FILE *f)
 {
     fprintf(f,
@@ -56,13 +51,18 @@ static void usage_vectors(FILE *f)
             COUNT_MAX, facet_cli_exit_help);
 }
 
-/* an unknown kernel name: the f32-only kernels get their own message */
-static void unknown_fx_kernel(const char *verb, const char *name)
+/* the fixed-point kernel NAME, or NULL after reporting that there is none
+ * (the f32-only kernels get their own message) */
+static const facet_fx_kernel *find_fx_kernel(const char *verb, const char *name)
 {
+    const facet_fx_kernel *k = facet_fx_kernel_find(name);
+    if (k)
+        return k;
     if (facet_kernel_find(name))
         fprintf(stderr, "facet %s: '%s' has no fixed-point form (only --format f32)\n", verb, name);
     else
         facet_cli_unknown_kernel(verb, "fx kernel", name);
+    return NULL;
 }
 
 /* a kernel with the fast tier only (no facet_<name>_fx) asked for --format fx */
@@ -87,43 +87,54 @@ static void print_fixed(FILE *f, uint64_t raw, int frac)
     fputc('\n', f);
 }
 
+/* how a row is evaluated and printed (a facet_cli_evaluator flush) */
+static void fx_row(const facet_cli_evaluator *e, const facet_cli_rows *rows, size_t n)
+{
+    const facet_fx_kernel *k = e->what;
+    size_t s;
+    for (s = 0; s < n; s++) {
+        uint64_t out = (e->fast ? k->fx_fast : k->fx)(rows->q15[s]);
+        if (e->raw)
+            printf("%llu\n", (unsigned long long)out);
+        else
+            print_fixed(stdout, out, k->out_frac);
+    }
+}
+
 /* argv[0] is "eval"; the f32 eval hands over when it sees --format fx */
 int facet_cli_fx_eval(int argc, char **argv)
 {
+    static const facet_cli_option opts[] = { { "--format", 1 }, { "--raw", 0 }, { "--port", 1 }, { NULL, 0 } };
+    enum { OPT_FORMAT, OPT_RAW, OPT_PORT };
+    facet_cli_args a = facet_cli_args_of(argc, argv, "eval", opts, usage_eval);
+    facet_cli_evaluator e = { 0 };
     const facet_fx_kernel *k = NULL;
-    facet_cli_reader r;
-    const char *err = NULL;
-    int i, raw = 0, got, fast = 0;
-    for (i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            usage_eval(stdout);
-            return facet_cli_finish("eval");
-        } else if (!strcmp(argv[i], "--format") && i + 1 < argc) {
-            fast = !strcmp(argv[++i], "fx_fast");
-            if (strcmp(argv[i], "fx") && !fast) {
-                fprintf(stderr, "facet eval: unknown format '%s'\n", argv[i]);
+    const char *v;
+    int arg;
+    while ((arg = facet_cli_next_arg(&a, &v)) != FACET_CLI_ARG_END) {
+        switch (arg) {
+        case FACET_CLI_ARG_DONE:
+            return a.status;
+        case FACET_CLI_ARG_NAME:
+            if (!(k = find_fx_kernel("eval", v)))
+                return FACET_EXIT_USAGE;
+            break;
+        case OPT_FORMAT:
+            e.fast = !strcmp(v, "fx_fast");
+            if (strcmp(v, "fx") && !e.fast) {
+                fprintf(stderr, "facet eval: unknown format '%s'\n", v);
                 return FACET_EXIT_USAGE;
             }
-        } else if (!strcmp(argv[i], "--raw")) {
-            raw = 1;
-        } else if (!strcmp(argv[i], "--port") && i + 1 < argc) {
-            if (strcmp(argv[++i], "auto") && strcmp(argv[i], "scalar")) {
-                fprintf(stderr, "facet eval: unknown port '%s' for fx (known: auto, scalar)\n", argv[i]);
+            break;
+        case OPT_RAW:
+            e.raw = 1;
+            break;
+        case OPT_PORT:
+            if (strcmp(v, "auto") && strcmp(v, "scalar")) {
+                fprintf(stderr, "facet eval: unknown port '%s' for fx (known: auto, scalar)\n", v);
                 return FACET_EXIT_USAGE;
             }
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            fprintf(stderr, "facet eval: unknown or incomplete option '%s'\n", argv[i]);
-            usage_eval(stderr);
-            return FACET_EXIT_USAGE;
-        } else if (!k) {
-            k = facet_fx_kernel_find(argv[i]);
-            if (!k) {
-                unknown_fx_kernel("eval", argv[i]);
-                return FACET_EXIT_USAGE;
-            }
-        } else {
-            fprintf(stderr, "facet eval: unexpected argument '%s'\n", argv[i]);
-            return FACET_EXIT_USAGE;
+            break;
         }
     }
     if (!k) {
@@ -131,38 +142,17 @@ int facet_cli_fx_eval(int argc, char **argv)
         usage_eval(stderr);
         return FACET_EXIT_USAGE;
     }
-    if (!fast && !k->fx) {
+    if (!e.fast && !k->fx) {
         only_fast("eval", k->name);
         return FACET_EXIT_USAGE;
     }
-    r.f = stdin;
-    r.lineno = 0;
-    while ((got = facet_cli_read_line(&r, &err)) == 1) {
-        int32_t in[FACET_FX_MAX_INPUTS];
-        uint64_t out;
-        err = facet_cli_parse_q15(r.buf, k->n_inputs, in);
-        if (err) {
-            got = -1;
-            break;
-        }
-        out = (fast ? k->fx_fast : k->fx)(in);
-        if (raw)
-            printf("%llu\n", (unsigned long long)out);
-        else
-            print_fixed(stdout, out, k->out_frac);
-        if (ferror(stdout))
-            return facet_cli_finish("eval");
-    }
-    if (got == -2) {
-        fprintf(stderr, "facet eval: error reading the input\n");
-        return FACET_EXIT_IO;
-    }
-    if (got == -1) {
-        int rc = facet_cli_finish("eval");
-        facet_cli_line_error(r.lineno, err, k->n_inputs, k->inputs);
-        return rc ? rc : FACET_EXIT_USAGE;
-    }
-    return facet_cli_finish("eval");
+    e.number = FACET_CLI_Q15;
+    e.chunk = 1; /* line by line */
+    e.n_inputs = k->n_inputs;
+    e.inputs = k->inputs;
+    e.what = k;
+    e.flush = fx_row;
+    return facet_cli_eval_lines(&e);
 }
 
 static uint64_t rng_next(uint64_t *s) /* splitmix64 */
@@ -225,43 +215,40 @@ static void put_edge(const facet_fx_kernel *k, const int32_t *in, int hex, int32
 
 int facet_cli_vectors(int argc, char **argv)
 {
+    static const facet_cli_option opts[] = { { "--format", 1 }, { "--count", 1 }, { "--seed", 1 }, { "--hex", 0 }, { NULL, 0 } };
+    enum { OPT_FORMAT, OPT_COUNT, OPT_SEED, OPT_HEX };
+    facet_cli_args a = facet_cli_args_of(argc, argv, "vectors", opts, usage_vectors);
     const facet_fx_kernel *k = NULL;
-    const char *format = "fx";
+    const char *format = "fx", *v;
     unsigned long long count = 1000, seed_arg = 1, j;
     uint64_t seed;
-    int i, hex = 0;
-    for (i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            usage_vectors(stdout);
-            return facet_cli_finish("vectors");
-        } else if (!strcmp(argv[i], "--format") && i + 1 < argc) {
-            format = argv[++i];
-        } else if (!strcmp(argv[i], "--count") && i + 1 < argc) {
-            if (!parse_count(argv[++i], COUNT_MAX, &count)) {
-                fprintf(stderr, "facet vectors: bad --count '%s' (decimal digits, at most %llu)\n", argv[i],
-                        COUNT_MAX);
+    int i, hex = 0, arg;
+    while ((arg = facet_cli_next_arg(&a, &v)) != FACET_CLI_ARG_END) {
+        switch (arg) {
+        case FACET_CLI_ARG_DONE:
+            return a.status;
+        case FACET_CLI_ARG_NAME:
+            if (!(k = find_fx_kernel("vectors", v)))
+                return FACET_EXIT_USAGE;
+            break;
+        case OPT_FORMAT:
+            format = v;
+            break;
+        case OPT_COUNT:
+            if (!parse_count(v, COUNT_MAX, &count)) {
+                fprintf(stderr, "facet vectors: bad --count '%s' (decimal digits, at most %llu)\n", v, COUNT_MAX);
                 return FACET_EXIT_USAGE;
             }
-        } else if (!strcmp(argv[i], "--seed") && i + 1 < argc) {
-            if (!parse_count(argv[++i], ~0ull, &seed_arg)) {
-                fprintf(stderr, "facet vectors: bad --seed '%s' (decimal digits, at most 2^64 - 1)\n", argv[i]);
+            break;
+        case OPT_SEED:
+            if (!parse_count(v, ~0ull, &seed_arg)) {
+                fprintf(stderr, "facet vectors: bad --seed '%s' (decimal digits, at most 2^64 - 1)\n", v);
                 return FACET_EXIT_USAGE;
             }
-        } else if (!strcmp(argv[i], "--hex")) {
+            break;
+        case OPT_HEX:
             hex = 1;
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            fprintf(stderr, "facet vectors: unknown or incomplete option '%s'\n", argv[i]);
-            usage_vectors(stderr);
-            return FACET_EXIT_USAGE;
-        } else if (!k) {
-            k = facet_fx_kernel_find(argv[i]);
-            if (!k) {
-                unknown_fx_kernel("vectors", argv[i]);
-                return FACET_EXIT_USAGE;
-            }
-        } else {
-            fprintf(stderr, "facet vectors: unexpected argument '%s'\n", argv[i]);
-            return FACET_EXIT_USAGE;
+            break;
         }
     }
     if (!k) {

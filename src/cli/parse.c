@@ -1,6 +1,6 @@
 /* parse.c - the facet command's input rules (cli.h): reading lines,
  * skipping blank and comment lines, and parsing the numbers on a line, one
- * implementation for every format. */
+ * implementation for every format; and the did-you-mean hint. */
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
@@ -104,9 +104,7 @@ static size_t scan_number(const char *s, size_t len, int *special)
     return i;
 }
 
-typedef enum { TO_F32, TO_F64, TO_Q15 } target;
-
-static const char *parse_line(const char *line, int n, target to, void *out)
+const char *facet_cli_parse(const char *line, int n, facet_cli_number to, void *out)
 {
     size_t len = strlen(line), p = 0;
     int i;
@@ -123,7 +121,7 @@ static const char *parse_line(const char *line, int n, target to, void *out)
         tl = scan_number(line + p, e - p, &special);
         if (tl == 0 || tl != e - p)
             return "not a decimal number";
-        if (to == TO_Q15) {
+        if (to == FACET_CLI_Q15) {
             if (special)
                 return "not a finite number (fixed point has no NaN or infinity)";
             if (!facet_cli_decimal_to_q15(line + p, tl, (int32_t *)out + i))
@@ -132,7 +130,7 @@ static const char *parse_line(const char *line, int n, target to, void *out)
             memcpy(tok, line + p, tl);
             tok[tl] = '\0';
             errno = 0; /* ERANGE is fine: overflow gives +-Inf, underflow 0 or a denormal */
-            if (to == TO_F32)
+            if (to == FACET_CLI_F32)
                 ((float *)out)[i] = strtof(tok, NULL);
             else
                 ((double *)out)[i] = strtod(tok, NULL);
@@ -144,9 +142,9 @@ static const char *parse_line(const char *line, int n, target to, void *out)
     return p < len ? "too many inputs" : NULL;
 }
 
-const char *facet_cli_parse_f32(const char *line, int n, float *out) { return parse_line(line, n, TO_F32, out); }
-const char *facet_cli_parse_f64(const char *line, int n, double *out) { return parse_line(line, n, TO_F64, out); }
-const char *facet_cli_parse_q15(const char *line, int n, int32_t *out) { return parse_line(line, n, TO_Q15, out); }
+const char *facet_cli_parse_f32(const char *line, int n, float *out) { return facet_cli_parse(line, n, FACET_CLI_F32, out); }
+const char *facet_cli_parse_f64(const char *line, int n, double *out) { return facet_cli_parse(line, n, FACET_CLI_F64, out); }
+const char *facet_cli_parse_q15(const char *line, int n, int32_t *out) { return facet_cli_parse(line, n, FACET_CLI_Q15, out); }
 
 /* ---- exact decimal -> Q15 -------------------------------------------------
  * x = +-0.D x 10^P (D the significant digits, no leading zero).  For
@@ -318,22 +316,4 @@ const char *facet_cli_suggest(const char *name, const char *const *names, size_t
             pick = names[i];
         }
     return pick;
-}
-
-int facet_cli_finish(const char *verb)
-{
-    if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "facet %s: I/O error writing the output\n", verb);
-        return FACET_EXIT_IO;
-    }
-    return FACET_EXIT_OK;
-}
-
-void facet_cli_line_error(long lineno, const char *err, int n, const char *const *names)
-{
-    int i;
-    fprintf(stderr, "facet eval: line %ld: %s (expected %d numbers:", lineno, err, n);
-    for (i = 0; i < n; i++)
-        fprintf(stderr, " %s", names[i]);
-    fprintf(stderr, ")\n");
 }

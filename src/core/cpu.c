@@ -1,30 +1,28 @@
 /* cpu.c - the one place CPU features are read: CPUID and XCR0 on x86 (the
  * CPU has the instructions and the OS saves their registers), HWCAP on
  * armv7; aarch64 always has NEON; MVFR1 on Armv8.1-M (Helium); HWCAP on
- * riscv64 Linux (RVV).  src/core/dispatch.c asks it which ports this
- * CPU runs; the bench and the rasterizer ask through facet_port_supported(). */
+ * riscv64 Linux (RVV).  One test per port of src/core/ports.def (its cpu
+ * column), defined under that line's guard (src/core/platform.h); the
+ * dispatcher (src/core/dispatch.c) asks them, the bench and the
+ * rasterizer ask through facet_port_supported().  Built without any ISA
+ * flags: the tests themselves run on every CPU of the target. */
 #if defined(__linux__) && !defined(_GNU_SOURCE)
 #define _GNU_SOURCE /* getauxval */
 #endif
+#include "platform.h"
 #include "cpu.h"
 
-#if defined(__x86_64__) || defined(__i386__)
-#define FACET_X86 1
+#if FACET_ON_X86
 #include <cpuid.h>
-#elif defined(__aarch64__) || (defined(__arm__) && defined(__linux__))
-#define FACET_ARM 1
-#if !defined(__aarch64__)
-#include <sys/auxv.h>
 #endif
-#elif defined(__ARM_FEATURE_MVE) && (__ARM_FEATURE_MVE & 2)
-#define FACET_HELIUM 1
-#elif defined(__riscv) && __riscv_xlen == 64 && defined(__linux__)
-#define FACET_RISCV 1
+#if FACET_ON_ARMV7_LINUX || FACET_ON_RISCV64_LINUX
 #include <sys/auxv.h>
 #endif
 
-#if FACET_X86
-int facet_cpu_avx2_fma(void)
+int facet_cpu_always(void) { return 1; }
+
+#if FACET_ON_X86
+int facet_cpu_avx2_fma(void) /* AVX2 + FMA, and the OS saves YMM state */
 {
     unsigned a, b, c, d, xlo, xhi;
     if (!__get_cpuid(1, &a, &b, &c, &d))
@@ -38,8 +36,9 @@ int facet_cpu_avx2_fma(void)
         return 0;
     return (b >> 5) & 1u; /* AVX2 */
 }
-#if defined(__x86_64__)
-int facet_cpu_avx512f(void)
+#if FACET_ON_X86_64
+/* AVX-512F, and the OS saves ZMM and opmask state */
+static int avx512f(void)
 {
     unsigned a, b, c, d, xlo, xhi;
     if (!__get_cpuid(1, &a, &b, &c, &d) || !(c & (1u << 27))) /* OSXSAVE */
@@ -51,10 +50,12 @@ int facet_cpu_avx512f(void)
         return 0;
     return (b >> 16) & 1u; /* AVX512F */
 }
+/* the avx512 port also runs the AVX2 fx code (src/core/ports.def): both */
+int facet_cpu_avx512(void) { return avx512f() && facet_cpu_avx2_fma(); }
 #endif
 int facet_cpu_sse2(void)
 {
-#if defined(__x86_64__)
+#if FACET_ON_X86_64
     return 1;
 #else
     unsigned a, b, c, d;
@@ -63,10 +64,11 @@ int facet_cpu_sse2(void)
 }
 #endif
 
-#if FACET_ARM
+#if FACET_ON_ARM_LINUX
+/* aarch64: always; armv7: NEON and VFPv4 in HWCAP */
 int facet_cpu_neon(void)
 {
-#if defined(__aarch64__)
+#if FACET_ON_AARCH64
     return 1;
 #else
     unsigned long hw = getauxval(AT_HWCAP);
@@ -75,7 +77,7 @@ int facet_cpu_neon(void)
 }
 #endif
 
-#if FACET_HELIUM
+#if FACET_ON_MVE_FP
 /* M-profile firmware runs privileged with no OS in between: MVFR1
  * (0xE000EF44, the System Control Space) field MVE, bits 11:8, is 2 where
  * the core has MVE integer and floating point (1: integer only, 0: none) */
@@ -86,7 +88,7 @@ int facet_cpu_helium(void)
 }
 #endif
 
-#if FACET_RISCV
+#if FACET_ON_RISCV64_LINUX
 /* Linux sets AT_HWCAP bit ('V' - 'A') where the harts have the V extension
  * and the kernel saves its state (qemu-user 7.2 sets it for -cpu
  * rv64,v=true and clears it without); the port is RVV 1.0, the only
@@ -96,5 +98,3 @@ int facet_cpu_rvv(void)
     return (getauxval(AT_HWCAP) >> ('V' - 'A')) & 1ul;
 }
 #endif
-
-typedef int facet_cpu_iso_c_needs_a_declaration_;

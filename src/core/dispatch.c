@@ -1,80 +1,47 @@
-/* dispatch.c - the one dispatcher: picks the port for the running CPU once,
- * for both formats, and routes every public facet_<kernel>_f32_batch and
- * facet_<kernel>_fx_batch to it.
- * Names generated here from src/core/kernels.def: the public f32 and f32_fast
- * batch entry points (the fx ones are in src/fx/fx_batch.c and ask facet_fx_active_port()).
+/* dispatch.c - the one dispatcher: picks the port for the running CPU once
+ * and routes every public batch call to it: facet_<kernel>_f32_batch and
+ * _f32_fast_batch, the RGB batches, facet_<sampler>_f32_batch and
+ * _f32_fast_batch, and (through facet_fx_active_port) every
+ * facet_<kernel>_fx_batch and _fx_fast_batch (src/fx/fx_batch.c).
+ * Names generated here from src/core/ports.def (the table of ports),
+ * src/core/kernels.def and src/core/sample_kernels.def (the entry points).
  *
- * Ports compiled in follow the target, best first: x86-64 -> avx512, avx2,
- * sse2 (i386: avx2, sse2); aarch64 / armv7 Linux -> neon; Armv8.1-M with
- * MVE floating point (Cortex-M55 firmware) -> helium; riscv64 Linux -> rvv
- * (where ports/rvv/port.mk's compiler builds it); everywhere -> scalar.  A port is "supported" when src/core/cpu.c says this CPU and OS run it.
- * Each port brings its f32 batches and, where it has any, fixed-point code
- * (src/core/port.h): avx512 and avx2 run the AVX2 fx code, aarch64 neon the NEON
- * fx code, helium its own (ports/helium), rvv its fx_fast code (ports/rvv),
- * the others the scalar fx loops.
+ * The ports compiled in are the lines of src/core/ports.def whose guard
+ * holds (src/core/platform.h), best first, scalar last; a port is
+ * "supported" when its CPU test (src/core/cpu.c) says this CPU and OS run
+ * it.  Each line brings its f32 and sampler tables of both tiers and the
+ * fixed-point tables it runs (src/core/port.h, src/core/sample_port.h).
  *
- * The choice is one pointer.  The first batch call computes the automatic
- * choice (FACET_PORT, else the best supported port) and installs it with a
- * compare-and-swap from "not chosen", so it can never overwrite a choice
- * another thread made meanwhile with facet_set_port(); facet_set_port()
- * stores its port directly.  Every later call is one acquire load. */
+ * The choice is one pointer to a line of that table.  The first batch call
+ * computes the automatic choice (FACET_PORT, else the best supported port)
+ * and installs it with a compare-and-swap from "not chosen", so it can
+ * never overwrite a choice another thread made meanwhile with
+ * facet_set_port(); facet_set_port() stores its port directly.  Every later
+ * call is one acquire load, then the table's function. */
 #include <stdlib.h>
 #include <string.h>
 #include "facet.h"
 #include "facet/fx.h"
+#include "platform.h"
 #include "cpu.h"
 #include "port.h"
-
-#if defined(__x86_64__) || defined(__i386__)
-#define FACET_X86 1
-#elif defined(__aarch64__) || (defined(__arm__) && defined(__linux__))
-#define FACET_ARM 1
-#elif defined(__ARM_FEATURE_MVE) && (__ARM_FEATURE_MVE & 2)
-#define FACET_HELIUM 1 /* Armv8.1-M with MVE floating point (Cortex-M55, M85) */
-#elif defined(__riscv) && __riscv_xlen == 64 && defined(__linux__) && defined(FACET_PORT_RVV)
-#define FACET_RVV 1 /* ports/rvv, compiled in where RVV_CC builds it (ports/rvv/port.mk) */
-#endif
+#include "sample_port.h"
 
 typedef struct port_entry {
     const facet_f32_port *f32, *f32_fast;
-    const facet_fx_port *fx, *fx_fast; /* NULL: the tier's scalar loops for every kernel */
+    const facet_sample_port *sample, *sample_fast;
+    const facet_fx_port *fx, *fx_fast;
     int (*supported)(void);
 } port_entry;
 
-static int always(void) { return 1; }
-#if defined(__x86_64__)
-/* the avx512 port also runs the AVX2 fx code: ask for both */
-static int avx512_and_avx2(void) { return facet_cpu_avx512f() && facet_cpu_avx2_fma(); }
-#endif
-
-/* best first */
+/* best first, scalar last */
 static const port_entry ports[] = {
-#if FACET_X86
-#if defined(__x86_64__)
-    { &facet_port_avx512_f32, &facet_port_avx512_f32_fast, &facet_fx_port_avx2, &facet_fx_fast_port_avx2,
-      avx512_and_avx2 },
-#endif
-    { &facet_port_avx2_f32, &facet_port_avx2_f32_fast, &facet_fx_port_avx2, &facet_fx_fast_port_avx2,
-      facet_cpu_avx2_fma },
-    { &facet_port_sse2_f32, &facet_port_sse2_f32_fast, NULL, NULL, facet_cpu_sse2 },
-#endif
-#if FACET_ARM
-#if defined(__aarch64__)
-    { &facet_port_neon_f32, &facet_port_neon_f32_fast, &facet_fx_port_neon, &facet_fx_fast_port_neon,
-      facet_cpu_neon },
-#else
-    { &facet_port_neon_f32, &facet_port_neon_f32_fast, NULL, NULL, facet_cpu_neon }, /* armv7: see ports/neon/fx_neon.c */
-#endif
-#endif
-#if FACET_HELIUM
-    { &facet_port_helium_f32, &facet_port_helium_f32_fast, &facet_fx_port_helium, &facet_fx_fast_port_helium,
-      facet_cpu_helium },
-#endif
-#if FACET_RVV
-    /* lanes 0 (vector-length agnostic): facet_port_at asks facet_rvv_lanes() */
-    { &facet_port_rvv_f32, &facet_port_rvv_f32_fast, NULL, &facet_fx_fast_port_rvv, facet_cpu_rvv },
-#endif
-    { &facet_port_scalar_f32, &facet_port_scalar_f32_fast, NULL, NULL, always },
+#define FACET_PORT(name, guard, cpu, fx, fx_fast)                                         \
+    FACET_PORT_IF(guard, { &facet_port_##name##_f32, &facet_port_##name##_f32_fast,       \
+                           &facet_sample_port_##name##_f32, &facet_sample_port_##name##_f32_fast, \
+                           &facet_fx_port_##fx, &facet_fx_fast_port_##fx_fast, facet_cpu_##cpu },)
+#include "ports.def"
+#undef FACET_PORT
 };
 #define N_PORTS (sizeof ports / sizeof ports[0])
 #define SCALAR_PORT (&ports[N_PORTS - 1])
@@ -145,11 +112,10 @@ const char *facet_port_at(size_t i, int *supported, int *lanes)
         *supported = ports[i].supported();
     if (lanes)
         *lanes = ports[i].f32->lanes;
-#if FACET_RVV
-    /* VLMAX, asked only where the CPU has V (vsetvli traps elsewhere) */
-    if (lanes && !*lanes)
-        *lanes = ports[i].supported() ? facet_rvv_lanes() : 0;
-#endif
+    /* lanes 0, vector-length agnostic: the port's run-time lanes, asked
+     * only where the CPU runs it (rvv: vsetvli traps elsewhere) */
+    if (lanes && !*lanes && ports[i].f32->lanes_fn)
+        *lanes = ports[i].supported() ? ports[i].f32->lanes_fn() : 0;
     return ports[i].f32->name;
 }
 
@@ -176,13 +142,12 @@ int facet_port_supported(const char *name)
 #include "kernels.def"
 #undef FACET_KERNEL
 
-/* the fx batch entry points (src/fx/fx_batch.c) ask here */
+/* the fx batch entry points (src/fx/fx_batch.c) ask here: the port's own
+ * table of the tier, the scalar loops' where it has none (ports.def) */
 const facet_fx_port *facet_fx_active_port(int fast)
 {
     const port_entry *p = port();
-    if (fast)
-        return p->fx_fast ? p->fx_fast : &facet_fx_fast_port_scalar;
-    return p->fx ? p->fx : &facet_fx_port_scalar;
+    return fast ? p->fx_fast : p->fx;
 }
 
 /* ---- the RGB batches (src/f32/f32_rgb_batch_body.h): one port function per tier,
@@ -243,3 +208,25 @@ static void rgb_run_(int fast, float *const out[3], ptrdiff_t os, const float *n
     }
 RGB_ENTRIES_(f32, 0)
 RGB_ENTRIES_(f32_fast, 1)
+
+/* ---- the samplers' batch entry points: the same port's sampler tables --- */
+#define S_OUT_P_(q) float *o##q
+#define S_IN_P_(q) const float *x##q
+#define S_OUT_A_(q) o##q
+#define FACET_SAMPLER(name, NAME, kind, err, n_out, n_in, ...)                                  \
+    void facet_##name##_f32_batch(FACET_SAMPLE_EACH(n_out, S_OUT_P_), FACET_SAMPLE_EACH(n_in, S_IN_P_), \
+                                  size_t n)                                                     \
+    {                                                                                           \
+        float *const o_[] = { FACET_SAMPLE_EACH(n_out, S_OUT_A_) };                             \
+        const float *const i_[] = { FACET_SAMPLE_EACH(n_in, ARG_) };                            \
+        port()->sample->name(o_, i_, n);                                                        \
+    }                                                                                           \
+    void facet_##name##_f32_fast_batch(FACET_SAMPLE_EACH(n_out, S_OUT_P_),                      \
+                                       FACET_SAMPLE_EACH(n_in, S_IN_P_), size_t n)              \
+    {                                                                                           \
+        float *const o_[] = { FACET_SAMPLE_EACH(n_out, S_OUT_A_) };                             \
+        const float *const i_[] = { FACET_SAMPLE_EACH(n_in, ARG_) };                            \
+        port()->sample_fast->name(o_, i_, n);                                                   \
+    }
+#include "sample_kernels.def"
+#undef FACET_SAMPLER

@@ -7,13 +7,10 @@
  *   FACET_IF_FX(fx_type, ...)  the rest of the arguments where the kernel
  *                            has a fixed-point version, nothing where its
  *                            fx_type is `none`
- *   FACET_IF_LANES(fx_code, ...)  the rest where the kernel's fixed-point
- *                            code is written over the lane op layer
- *                            (src/fx/fx_body.h), nothing otherwise
  *   FACET_IF_PRECISE(fx_code, ...)  the rest where the kernel has a precise
  *                            fixed-point kernel (facet_<name>_fx: fx_code
- *                            lanes or scalar), nothing where it has none
- *                            (fast: the fx_fast tier only; none)
+ *                            both), nothing where it has none (fast: the
+ *                            fx_fast tier only; none)
  *   FACET_PRECISE_OR(fx_code, yes, no)  yes where the kernel has a precise
  *                            fixed-point kernel, no otherwise (one token
  *                            each: a table's function pointer or NULL)
@@ -42,21 +39,13 @@
 #define FACET_IF_FX_uint64_t(...) __VA_ARGS__
 #define FACET_IF_FX_none(...)
 
-#define FACET_IF_LANES(fx_code, ...) FACET_IF_LANES_##fx_code(__VA_ARGS__)
-#define FACET_IF_LANES_lanes(...) __VA_ARGS__
-#define FACET_IF_LANES_scalar(...)
-#define FACET_IF_LANES_fast(...)
-#define FACET_IF_LANES_none(...)
-
 #define FACET_IF_PRECISE(fx_code, ...) FACET_IF_PRECISE_##fx_code(__VA_ARGS__)
-#define FACET_IF_PRECISE_lanes(...) __VA_ARGS__
-#define FACET_IF_PRECISE_scalar(...) __VA_ARGS__
+#define FACET_IF_PRECISE_both(...) __VA_ARGS__
 #define FACET_IF_PRECISE_fast(...)
 #define FACET_IF_PRECISE_none(...)
 
 #define FACET_PRECISE_OR(fx_code, yes, no) FACET_PRECISE_OR_##fx_code(yes, no)
-#define FACET_PRECISE_OR_lanes(yes, no) yes
-#define FACET_PRECISE_OR_scalar(yes, no) yes
+#define FACET_PRECISE_OR_both(yes, no) yes
 #define FACET_PRECISE_OR_fast(yes, no) no
 #define FACET_PRECISE_OR_none(yes, no) no
 

@@ -1,7 +1,8 @@
 /* port.h - what a port gives the dispatcher (src/core/dispatch.c): a batch
  * function per kernel and format.  Private to the library.
  * Names generated here from src/core/kernels.def: the members of
- * facet_f32_port and facet_fx_port. */
+ * facet_f32_port and facet_fx_port; from src/core/ports.def: the tables'
+ * declarations. */
 #ifndef FACET_PORT_H
 #define FACET_PORT_H
 
@@ -34,6 +35,9 @@ typedef struct facet_f32_port {
     /* brdf_hammon with RGB f0 and albedo, the geometry once per sample */
     void (*brdf_hammon_rgb)(const facet_rgb_io *io, const float *nol, const float *nov,
                             const float *lov, size_t count);
+    /* lanes 0 (vector-length agnostic): the lanes on this CPU, asked only
+     * where the CPU runs the port; NULL for a port of fixed lanes */
+    int (*lanes_fn)(void);
 } facet_f32_port;
 
 /* fx: bit-identical to the scalar specification (src/fx/fx_kernels.c).  A
@@ -51,24 +55,18 @@ typedef struct facet_fx_port {
 #undef FACET_KERNEL
 } facet_fx_port;
 
-/* f32 ports, one table per tier: src/f32/f32_batch_scalar.c, ports/<isa>/f32_<isa>.c */
-extern const facet_f32_port facet_port_scalar_f32, facet_port_scalar_f32_fast;
-extern const facet_f32_port facet_port_sse2_f32, facet_port_sse2_f32_fast;
-extern const facet_f32_port facet_port_avx2_f32, facet_port_avx2_f32_fast;
-extern const facet_f32_port facet_port_avx512_f32, facet_port_avx512_f32_fast;
-extern const facet_f32_port facet_port_neon_f32, facet_port_neon_f32_fast;
-extern const facet_f32_port facet_port_helium_f32, facet_port_helium_f32_fast;
-extern const facet_f32_port facet_port_rvv_f32, facet_port_rvv_f32_fast;
-/* the rvv port's lanes, VLMAX (run time: the port is vector-length agnostic) */
-int facet_rvv_lanes(void);
-/* fx ports, one table per tier: src/fx/fx_kernels.c and src/fx/fx_fast.c (every
- * kernel, the scalar loops), ports/<isa>/fx_<isa>.c */
-extern const facet_fx_port facet_fx_port_scalar, facet_fx_fast_port_scalar;
-extern const facet_fx_port facet_fx_port_avx2, facet_fx_fast_port_avx2;
-extern const facet_fx_port facet_fx_port_neon, facet_fx_fast_port_neon;
-extern const facet_fx_port facet_fx_port_helium, facet_fx_fast_port_helium;
-extern const facet_fx_port facet_fx_fast_port_rvv; /* fx_fast only */
-
+/* Names generated here from src/core/ports.def: every port's tables, declared
+ * for every line (a table exists where the line's guard holds):
+ *   f32: facet_port_<name>_f32, _f32_fast (ports/<isa>/f32_<isa>.c,
+ *        src/f32/f32_batch_scalar.c; src/f32/f32_port_body.h makes them)
+ *   fx:  facet_fx_port_<fx>, facet_fx_fast_port_<fx_fast> (ports/<isa>/fx_<isa>.c;
+ *        scalar: src/fx/fx_kernels.c and src/fx/fx_fast.c, every kernel, the
+ *        scalar loops) */
+#define FACET_PORT(name, guard, cpu, fx, fx_fast)                                \
+    extern const facet_f32_port facet_port_##name##_f32, facet_port_##name##_f32_fast; \
+    extern const facet_fx_port facet_fx_port_##fx, facet_fx_fast_port_##fx_fast;
+#include "ports.def"
+#undef FACET_PORT
 
 /* the fx port of the active port for a tier (0: fx, 1: fx_fast), never
  * NULL: src/core/dispatch.c (a build without the dispatcher, firmware, has no

@@ -1,5 +1,5 @@
-/* sample_port.h - what a port gives the samplers' dispatcher
- * (src/core/sample_dispatch.c): one batch function per sampler and tier, in
+/* sample_port.h - what a port gives the dispatcher for the samplers
+ * (src/core/dispatch.c): one batch function per sampler and tier, in
  * src/core/sample_kernels.def order.  Private to the library. */
 #ifndef FACET_SAMPLE_PORT_H
 #define FACET_SAMPLE_PORT_H
@@ -18,14 +18,24 @@ typedef struct facet_sample_port {
 #undef FACET_SAMPLER
 } facet_sample_port;
 
-/* src/f32/f32_batch_scalar.c and ports/<isa>/f32_<isa>.c, one per tier */
-extern const facet_sample_port facet_sample_port_scalar_f32, facet_sample_port_scalar_f32_fast;
-extern const facet_sample_port facet_sample_port_sse2_f32, facet_sample_port_sse2_f32_fast;
-extern const facet_sample_port facet_sample_port_avx2_f32, facet_sample_port_avx2_f32_fast;
-extern const facet_sample_port facet_sample_port_avx512_f32, facet_sample_port_avx512_f32_fast;
-extern const facet_sample_port facet_sample_port_neon_f32, facet_sample_port_neon_f32_fast;
-extern const facet_sample_port facet_sample_port_helium_f32, facet_sample_port_helium_f32_fast;
-extern const facet_sample_port facet_sample_port_rvv_f32, facet_sample_port_rvv_f32_fast;
+/* Names generated here from src/core/ports.def: every port's two sampler
+ * tables (ports/<isa>/f32_<isa>.c and src/f32/f32_batch_scalar.c, made by
+ * src/f32/f32_port_body.h), declared for every line */
+#define FACET_PORT(name, ...) \
+    extern const facet_sample_port facet_sample_port_##name##_f32, facet_sample_port_##name##_f32_fast;
+#include "ports.def"
+#undef FACET_PORT
+
+/* F(0), F(1), ..., F(n - 1): one item per input or output (n <= 8) */
+#define FACET_SAMPLE_EACH(n, F) FACET_SAMPLE_EACH_##n(F)
+#define FACET_SAMPLE_EACH_1(F) F(0)
+#define FACET_SAMPLE_EACH_2(F) FACET_SAMPLE_EACH_1(F), F(1)
+#define FACET_SAMPLE_EACH_3(F) FACET_SAMPLE_EACH_2(F), F(2)
+#define FACET_SAMPLE_EACH_4(F) FACET_SAMPLE_EACH_3(F), F(3)
+#define FACET_SAMPLE_EACH_5(F) FACET_SAMPLE_EACH_4(F), F(4)
+#define FACET_SAMPLE_EACH_6(F) FACET_SAMPLE_EACH_5(F), F(5)
+#define FACET_SAMPLE_EACH_7(F) FACET_SAMPLE_EACH_6(F), F(6)
+#define FACET_SAMPLE_EACH_8(F) FACET_SAMPLE_EACH_7(F), F(7)
 
 /* argument lists a[0], ..., a[n - 1] */
 #define FACET_SAMPLE_ARGS(n, a) FACET_SAMPLE_ARGS_##n(a)

@@ -1,10 +1,12 @@
-/* f32_scalar.c - the library's f32 entry points of both tiers: the scalar
- * port, out of line.
+/* f32_entry.c - the library's per-sample f32 entry points of both tiers:
+ * the scalar port, out of line.
  * Names generated here from src/core/kernels.def: facet_<kernel>_f32 and
- * facet_<kernel>_f32_fast. */
+ * facet_<kernel>_f32_fast; from src/core/sample_kernels.def:
+ * facet_<sampler>_f32 and facet_<sampler>_f32_fast. */
 #include "facet.h"
 #include "facet/scalar.h"
 #include "../core/kernel_list.h"
+#include "../core/sample_port.h"
 
 #define PARAM_(q) float x##q
 #define ARG_(q) x##q
@@ -55,3 +57,20 @@ static float dot3_(const facet_vec3_f32 *a, const facet_vec3_f32 *b)
     }
 SHADE_(facet_shade_hammon_rgb_f32, facet_brdf_hammon_rgb_f32_scalar)
 SHADE_(facet_shade_hammon_rgb_f32_fast, facet_brdf_hammon_rgb_f32_fast_scalar)
+
+/* ---- the samplers ---------------------------------------------------------- */
+#define S_PARAM_(q) float x##q
+#define SCALAR_DEF_vec(name, tier, n_in, n_out)                                              \
+    void facet_##name##_##tier(float out[n_out], FACET_SAMPLE_EACH(n_in, S_PARAM_))          \
+    {                                                                                        \
+        facet_##name##_##tier##_scalar(FACET_SAMPLE_OUTS(n_out, out), FACET_SAMPLE_EACH(n_in, ARG_)); \
+    }
+#define SCALAR_DEF_ret(name, tier, n_in, n_out)                                              \
+    float facet_##name##_##tier(FACET_SAMPLE_EACH(n_in, S_PARAM_))                           \
+    {                                                                                        \
+        return facet_##name##_##tier##_scalar(FACET_SAMPLE_EACH(n_in, ARG_));                \
+    }
+#define FACET_SAMPLER(name, NAME, kind, err, n_out, n_in, ...) \
+    SCALAR_DEF_##kind(name, f32, n_in, n_out) SCALAR_DEF_##kind(name, f32_fast, n_in, n_out)
+#include "../core/sample_kernels.def"
+#undef FACET_SAMPLER

@@ -1,8 +1,9 @@
 /* fx_batch.c - the public facet_<kernel>_fx_batch and _fx_fast_batch entry
  * points: the active port's own code for the kernel and tier where it has
  * some, the tier's scalar loop otherwise.  Bit-identical either way.
- * Names generated here from src/core/kernels.def: two entry points per
- * fixed-point kernel (the fast one only where fx_code is fast). */
+ * Names generated here from src/core/kernels.def: the fast entry point for
+ * every fixed-point kernel, the precise one where it has a precise kernel
+ * (fx_code both, not fast). */
 #include "facet/fx.h"
 #include "../core/port.h"
 

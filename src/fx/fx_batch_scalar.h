@@ -1,11 +1,11 @@
-/* fx_scalar_loops.h - a fixed-point tier's scalar port: one loop per kernel
+/* fx_batch_scalar.h - a fixed-point tier's scalar port: one loop per kernel
  * over facet_<kernel>_<FX_TIER> and the tier's port table.  Included once
  * by the file of each tier's scalar kernels (src/fx/fx_kernels.c: fx,
  * src/fx/fx_fast.c: fx_fast) with
  *   FX_TIER        the tier token (fx, fx_fast)
  *   FX_SCALAR_VAR  the table variable (facet_fx_port_scalar, ...)
  *   FX_TIER_PRECISE  1 for the precise tier (fx): only the kernels with a
- *                  precise kernel (not fx_code fast) have a loop there
+ *                  precise kernel (fx_code both) have a loop there
  * Names generated here from src/core/kernels.def: one loop per fixed-point
  * kernel of the tier (the table's other members NULL).  Each element is
  * read before its output is written, so out may be the same array as an

@@ -3,7 +3,6 @@
  * specification every port of the tier reproduces bit for bit. */
 #include "facet/fx.h"
 #include "fx_ops_scalar.h"
-#include "fx_body.h" /* fxb_rshr64 */
 #include "fx_fast_body.h"
 
 #include "../core/port.h"
@@ -12,10 +11,10 @@
  * every kernel with a fixed-point version. */
 #define PARAM_(q) int32_t x##q
 #define ARG_(q) x##q
-#define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type,           \
-    fx_type facet_##name##_fx_fast(FACET_EACH_INPUT(n, PARAM_))                  \
-    {                                                                            \
-        return (fx_type)fxf_fast_##name(FACET_EACH_INPUT(n, ARG_));              \
+#define FACET_KERNEL(name, NAME, n, fx_type, ...) FACET_IF_FX(fx_type, \
+    fx_type facet_##name##_fx_fast(FACET_EACH_INPUT(n, PARAM_))        \
+    {                                                                  \
+        return (fx_type)fxq_##name(FACET_EACH_INPUT(n, ARG_));         \
     })
 #include "../core/kernels.def"
 #undef FACET_KERNEL
@@ -23,11 +22,11 @@
 void facet_brdf_hammon_rgb_fx_fast(uint64_t out[3], int32_t nol, int32_t nov, int32_t lov,
                                    int32_t alpha, const int32_t f0[3], const int32_t albedo[3])
 {
-    fxv_u32 FXF_BRDF_GEOM_ARGS_(G_);
+    fxv_u32 FXQ_BRDF_GEOM_ARGS_(G_);
     int c;
-    fxf_fast_brdf_geometry(nol, nov, lov, alpha, FXF_BRDF_GEOM_ARGS_(&G_));
+    fxq_brdf_geometry(nol, nov, lov, alpha, FXQ_BRDF_GEOM_ARGS_(&G_));
     for (c = 0; c < 3; c++)
-        out[c] = fxf_fast_brdf_channel(FXF_BRDF_GEOM_ARGS_(G_), f0[c], albedo[c]);
+        out[c] = fxq_brdf_channel(FXQ_BRDF_GEOM_ARGS_(G_), f0[c], albedo[c]);
 }
 
 /* ---- the scalar port's batches: src/fx/fx_batch_scalar.h ----------------- */

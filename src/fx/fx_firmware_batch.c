@@ -1,4 +1,4 @@
-/* fx_batch_scalar.c - the fixed-point batch API for firmware: every
+/* fx_firmware_batch.c - the fixed-point batch API for firmware: every
  * facet_<kernel>_fx_batch and _fx_fast_batch of facet/fx.h as its own loop
  * over the scalar kernel, with no port table, no dispatcher, no CPU
  * detection, no f32 code and no libm.  Each function references only its
@@ -8,8 +8,9 @@
  * identical to libfacet's batches (the same scalar kernels; libfacet's own
  * scalar loops are src/fx/fx_batch_scalar.h).  One of `make fx-sources`; not
  * part of libfacet, whose src/fx/fx_batch.c dispatches.
- * Names generated here from src/core/kernels.def: two batch functions per
- * fixed-point kernel (the fast one only where fx_code is fast). */
+ * Names generated here from src/core/kernels.def: the fast batch for every
+ * fixed-point kernel, the precise one where it has a precise kernel
+ * (fx_code both, not fast). */
 #include "facet/fx.h"
 #include "../core/kernel_list.h"
 

@@ -1,6 +1,11 @@
-/* fx_ops_scalar.h - the lane op layer of src/fx/fx_body.h on one lane: plain
- * uint32_t / uint64_t C, the fixed-point specification.  Products go
- * through fx_mul64 (one UMULL, or four 16x16 MULS on ARMv6-M). */
+/* fx_ops_scalar.h - the integer lane op layer (src/fx/fx_ops.h lists the
+ * ops and their contracts) on one lane: plain uint32_t / uint64_t C, so the
+ * bodies instantiated on it (src/fx/fx_kernels.c, src/fx/fx_fast.c) are the
+ * fixed-point specification.  Built from the exact primitives of
+ * src/fx/fx_prims.h: products through fxp_mul64 (one UMULL, or four 16x16
+ * MULS on ARMv6-M), variable 64-bit shifts from 32-bit ones (no libgcc
+ * call on Thumb-1), the 64/32 division and the integer square root the
+ * primitives' exact methods (any exact method gives the same bits). */
 #ifndef FACET_FX_OPS_SCALAR_H
 #define FACET_FX_OPS_SCALAR_H
 
@@ -11,29 +16,41 @@ typedef int32_t fxv_i32;
 typedef uint32_t fxv_u32;
 typedef uint64_t fxv_u64;
 
-static inline fxv_u32 fxv_k32(uint32_t c) { return c; }
-static inline fxv_u32 fxv_clamp(fxv_i32 x, int32_t lo, int32_t hi)
+/* FXV_INLINE the ops, FXV_BODY the precise body's functions (src/fx/fx_ops.h).
+ * A kernel inlined whole is the fastest on one lane; at -Os (a firmware
+ * build) the pseudo-float ops stay functions, one copy each (fx_kernels.o
+ * -Os on Cortex-M4: 8.4 KB against 21 KB inlined). */
+#if defined(__GNUC__)
+#define FXV_INLINE static inline __attribute__((unused))
+#if defined(__OPTIMIZE_SIZE__)
+#define FXV_BODY FXV_INLINE
+#else
+#define FXV_BODY static inline __attribute__((always_inline, unused))
+#endif
+#else
+#define FXV_INLINE static inline
+#define FXV_BODY static inline
+#endif
+
+FXV_INLINE fxv_u32 fxv_k32(uint32_t c) { return c; }
+FXV_INLINE fxv_u32 fxv_clamp(fxv_i32 x, int32_t lo, int32_t hi)
 {
     return (uint32_t)(x < lo ? lo : x > hi ? hi : x);
 }
-static inline fxv_u32 fxv_add32(fxv_u32 a, fxv_u32 b) { return a + b; }
-static inline fxv_u32 fxv_sub32(fxv_u32 a, fxv_u32 b) { return a - b; }
-static inline fxv_u32 fxv_mul32(fxv_u32 a, fxv_u32 b) { return a * b; }
-static inline fxv_u64 fxv_mulw(fxv_u32 a, fxv_u32 b) { return fx_mul64(a, b); }
-static inline fxv_u64 fxv_add64(fxv_u64 a, fxv_u64 b) { return a + b; }
-static inline fxv_u64 fxv_shr64(fxv_u64 a, int k) { return a >> k; }
-static inline fxv_u64 fxv_and64(fxv_u64 a, uint64_t c) { return a & c; }
-static inline fxv_u32 fxv_lo(fxv_u64 a) { return (uint32_t)a; }
-static inline fxv_u32 fxv_hi(fxv_u64 a) { return (uint32_t)(a >> 32); }
-static inline fxv_u32 fxv_narrow(fxv_u64 a) { return (uint32_t)a; }
-/* the fast tier's ops (src/fx/fx_fast_body.h) */
-static inline fxv_u32 fxv_shr(fxv_u32 a, int k) { return a >> k; }
-static inline fxv_u32 fxv_shl(fxv_u32 a, int k) { return a << k; }
-static inline fxv_u32 fxv_shrv(fxv_u32 a, fxv_u32 n) { return a >> n; }
-static inline fxv_u32 fxv_shlv(fxv_u32 a, fxv_u32 n) { return a << n; }
+FXV_INLINE fxv_u32 fxv_clamp_off(fxv_i32 x, int32_t lo, int32_t hi)
+{
+    return (uint32_t)(x < lo ? lo : x > hi ? hi : x) - (uint32_t)lo;
+}
+FXV_INLINE fxv_u32 fxv_add32(fxv_u32 a, fxv_u32 b) { return a + b; }
+FXV_INLINE fxv_u32 fxv_sub32(fxv_u32 a, fxv_u32 b) { return a - b; }
+FXV_INLINE fxv_u32 fxv_mul32(fxv_u32 a, fxv_u32 b) { return a * b; }
+FXV_INLINE fxv_u32 fxv_shr(fxv_u32 a, int k) { return a >> k; }
+FXV_INLINE fxv_u32 fxv_shl(fxv_u32 a, int k) { return a << k; }
+FXV_INLINE fxv_u32 fxv_shrv(fxv_u32 a, fxv_u32 n) { return a >> n; }
+FXV_INLINE fxv_u32 fxv_shlv(fxv_u32 a, fxv_u32 n) { return a << n; }
 #if !defined(FACET_FX_PORTABLE) && defined(__GNUC__) && \
     (defined(__x86_64__) || defined(__i386__) || defined(__aarch64__) || defined(__ARM_FEATURE_CLZ))
-static inline fxv_u32 fxv_clz(fxv_u32 a) { return a ? (uint32_t)fx_clz32(a) : 32u; }
+FXV_INLINE fxv_u32 fxv_clz(fxv_u32 a) { return a ? (uint32_t)fxp_clz32(a) : 32u; }
 #else
 /* no clz instruction (ARMv6-M, RV32IMC, FACET_FX_PORTABLE): two halving
  * steps and a byte table, the same counts (clz is exact) */
@@ -47,7 +64,7 @@ static const uint8_t fxv_clz8_[256] = {
     0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
     0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
 };
-static inline fxv_u32 fxv_clz(fxv_u32 a)
+FXV_INLINE fxv_u32 fxv_clz(fxv_u32 a)
 {
     uint32_t n = 0;
     if (a < 0x10000u) {
@@ -61,17 +78,36 @@ static inline fxv_u32 fxv_clz(fxv_u32 a)
     return n + fxv_clz8_[a >> 24];
 }
 #endif
-static inline fxv_u32 fxv_min(fxv_u32 a, fxv_u32 b) { return a < b ? a : b; }
-static inline fxv_u32 fxv_max(fxv_u32 a, fxv_u32 b) { return a > b ? a : b; }
-static inline fxv_u32 fxv_lt(fxv_u32 a, fxv_u32 b) { return a < b ? 0xFFFFFFFFu : 0u; }
-static inline fxv_u32 fxv_sel(fxv_u32 m, fxv_u32 a, fxv_u32 b) { return (a & m) | (b & ~m); }
-static inline fxv_u32 fxv_and(fxv_u32 a, fxv_u32 b) { return a & b; }
-static inline fxv_u32 fxv_not(fxv_u32 a) { return ~a; }
-static inline fxv_u32 fxv_or(fxv_u32 a, fxv_u32 b) { return a | b; }
-static inline fxv_u32 fxv_clamp_off(fxv_i32 x, int32_t lo, int32_t hi)
+FXV_INLINE fxv_u32 fxv_min(fxv_u32 a, fxv_u32 b) { return a < b ? a : b; }
+FXV_INLINE fxv_u32 fxv_max(fxv_u32 a, fxv_u32 b) { return a > b ? a : b; }
+FXV_INLINE fxv_u32 fxv_lt(fxv_u32 a, fxv_u32 b) { return a < b ? 0xFFFFFFFFu : 0u; }
+FXV_INLINE fxv_u32 fxv_sel(fxv_u32 m, fxv_u32 a, fxv_u32 b) { return (a & m) | (b & ~m); }
+FXV_INLINE fxv_u32 fxv_and(fxv_u32 a, fxv_u32 b) { return a & b; }
+FXV_INLINE fxv_u32 fxv_or(fxv_u32 a, fxv_u32 b) { return a | b; }
+FXV_INLINE fxv_u32 fxv_not(fxv_u32 a) { return ~a; }
+FXV_INLINE fxv_u32 fxv_lut(const uint32_t *t, fxv_u32 i) { return t[i]; }
+
+FXV_INLINE fxv_u64 fxv_mulw(fxv_u32 a, fxv_u32 b) { return fxp_mul64(a, b); }
+FXV_INLINE fxv_u64 fxv_wide(fxv_u32 a) { return a; }
+FXV_INLINE fxv_u32 fxv_lo(fxv_u64 a) { return (uint32_t)a; }
+FXV_INLINE fxv_u32 fxv_hi(fxv_u64 a) { return (uint32_t)(a >> 32); }
+FXV_INLINE fxv_u32 fxv_narrow(fxv_u64 a) { return (uint32_t)a; }
+FXV_INLINE fxv_u64 fxv_add64(fxv_u64 a, fxv_u64 b) { return a + b; }
+FXV_INLINE fxv_u64 fxv_sub64(fxv_u64 a, fxv_u64 b) { return a - b; }
+FXV_INLINE fxv_u64 fxv_shr64(fxv_u64 a, int k) { return a >> k; }
+FXV_INLINE fxv_u64 fxv_shl64(fxv_u64 a, int k) { return a << k; }
+FXV_INLINE fxv_u64 fxv_shrv64(fxv_u64 a, fxv_u32 n) { return fxp_shr64(a, (int)n); }
+FXV_INLINE fxv_u64 fxv_shlv64(fxv_u64 a, fxv_u32 n) { return fxp_shl64(a, (int)n); }
+FXV_INLINE fxv_u64 fxv_and64(fxv_u64 a, uint64_t c) { return a & c; }
+FXV_INLINE fxv_u32 fxv_lt64(fxv_u64 a, fxv_u64 b) { return a < b ? 0xFFFFFFFFu : 0u; }
+/* by words (a 64-bit mask m 0x100000001 is a multiply on Thumb-1) */
+FXV_INLINE fxv_u64 fxv_sel64(fxv_u32 m, fxv_u64 a, fxv_u64 b)
 {
-    return (uint32_t)(x < lo ? lo : x > hi ? hi : x) - (uint32_t)lo;
+    uint32_t lo = ((uint32_t)a & m) | ((uint32_t)b & ~m);
+    uint32_t hi = ((uint32_t)(a >> 32) & m) | ((uint32_t)(b >> 32) & ~m);
+    return ((uint64_t)hi << 32) | lo;
 }
-static inline fxv_u32 fxv_lut(const uint32_t *t, fxv_u32 i) { return t[i]; }
+FXV_INLINE fxv_u32 fxv_div64(fxv_u32 u1, fxv_u32 u0, fxv_u32 d, fxv_u32 *r) { return fxp_div64(u1, u0, d, r); }
+FXV_INLINE fxv_u32 fxv_isqrt64(fxv_u64 x, fxv_u64 *rem) { return facet_fx_isqrt64_rem(x, rem); }
 
 #endif

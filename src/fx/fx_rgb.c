@@ -1,9 +1,10 @@
 /* fx_rgb.c - the fixed-point RGB batches of brdf_hammon, both tiers
  * (facet/fx.h): the scalar loop over facet_brdf_hammon_rgb_fx[_fast], which
- * share the geometry across channels (src/fx/fx_kernels.c, src/fx/fx_fast_body.h)
- * and give each channel the per-channel kernel's bits.  brdf_hammon runs the
- * scalar loop on every port (kernels.def: fx_code scalar), so these are the
- * same on every port; part of the firmware sources (make fx-sources). */
+ * share the geometry across channels (src/fx/fx_body.h, src/fx/fx_fast_body.h)
+ * and give each channel the per-channel kernel's bits, so these are the
+ * per-channel kernels' bits on every port; the scalar loop everywhere
+ * (no port runs the RGB form on lanes); part of the firmware sources (make
+ * fx-sources). */
 #include <stddef.h>
 #include "facet/fx.h"
 

@@ -17,16 +17,23 @@ expect() { # expect DESC EXPECTED ACTUAL
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# list: one line per kernel, the core table present with its inputs
+# list: one line per kernel, then per sampler, exactly the lists
+# (src/core/kernels.def, src/core/sample_kernels.def, expanded by the C
+# preprocessor: name, inputs; a sampler's "-> outputs") in their order
 "$facet" list > "$tmp/list"; expect "list exit" 0 $?
 expect "list ggx_d" "ggx_d noh alpha" "$(grep '^ggx_d ' "$tmp/list")"
 expect "list brdf_hammon" "brdf_hammon nol nov lov alpha f0 albedo" "$(grep '^brdf_hammon ' "$tmp/list")"
-for k in noh_from_dots loh_from_dots fresnel_schlick ggx_d smith_g1 smith_g2 smith_g2_uncorrelated \
-         smith_vis smith_g1_hammon smith_g2_hammon smith_vis_hammon diffuse_hammon brdf_hammon \
-         g_implicit g_neumann g_cook_torrance g_kelemen smith_g1_beckmann smith_g1_schlick_beckmann \
-         smith_vis_joint_approx smith_vis_fit; do
-    grep -q "^$k " "$tmp/list" && ok || bad "list lacks $k"
-done
+top=$(cd "$(dirname "$0")/../.." && pwd)
+printf '%s\n' '#define FACET_IN(input, domain) input' \
+    '#define FACET_KERNEL(name, NAME, n, t, f, m, q, c, ...) name __VA_ARGS__' \
+    "#include \"$top/src/core/kernels.def\"" \
+    '#define FACET_SAMPLER(name, NAME, kind, err, n_out, n_in, outs, ins) name ins -> outs' \
+    "#include \"$top/src/core/sample_kernels.def\"" |
+    ${CC:-cc} -E -P -x c - 2> "$tmp/cpp.err" | tr -d '(),"' | awk 'NF { $1 = $1; print }' > "$tmp/list.def"
+[ -s "$tmp/list.def" ] && ok || bad "the lists did not expand: $(cat "$tmp/cpp.err")"
+if cmp -s "$tmp/list.def" "$tmp/list"; then ok; else
+    bad "facet list differs from the lists (< lists, > facet list): $(diff "$tmp/list.def" "$tmp/list" | grep '^[<>]' | tr '\n' ' ')"
+fi
 
 # eval: every listed kernel accepts a line of 0.5s and prints one number;
 # every sampler ("name inputs -> outputs") one number per output, in f32,

@@ -1,7 +1,9 @@
 #!/bin/sh
-# test_readme.sh BUILD_DIR - every C block in README.md preceded by a line
+# test_readme.sh BUILD_DIR - every C block in a README.md of the tree (the
+# top one and each folder's) preceded by a line
 # "<!-- compiled by tests: NAME -->" is extracted, compiled with the
-# project's warning flags against the built library, and run; it must exit 0.
+# project's warning flags against the built library, and run; it must exit 0
+# (NAME unique across the READMEs; the top README must have some).
 # And the quick start at the top, as written: the blocks after "<!-- quick
 # start: NAME -->" (install, build, app.c, CMakeLists.txt).  HOME is a
 # temporary directory, so `make install PREFIX=$HOME/.local` installs there;
@@ -18,14 +20,20 @@ pass=0 fail=0 skip=0
 target=$($cc -dumpmachine)
 dir=$build/readme
 mkdir -p "$dir"
-names=$(sed -n 's/^<!-- compiled by tests: \([a-z0-9_]*\) -->$/\1/p' README.md)
-[ -n "$names" ] || { echo "FAIL readme: no compiled examples found"; fail=1; }
-for n in $names; do
+readmes=$(find . -name README.md ! -path './build*' ! -path './.git/*' | sed 's|^\./||' | sort)
+sed -n 's/^<!-- compiled by tests: \([a-z0-9_]*\) -->$/\1/p' README.md | grep -q . ||
+    { echo "FAIL readme: no compiled examples found in README.md"; fail=1; }
+for f in $readmes; do
+    sed -n 's/^<!-- compiled by tests: \([a-z0-9_]*\) -->$/\1/p' "$f" | sed "s|^|$f |"
+done > "$dir/examples"
+dups=$(awk '{ print $2 }' "$dir/examples" | sort | uniq -d)
+[ -z "$dups" ] || { echo "FAIL readme: example names used twice: $dups"; fail=$((fail + 1)); }
+while read -r f n; do
     awk -v n="$n" '
         $0 == "<!-- compiled by tests: " n " -->" { want = 1; next }
         want && /^```c$/ { inside = 1; next }
         inside && /^```$/ { exit }
-        inside { print }' README.md > "$dir/$n.c"
+        inside { print }' "$f" > "$dir/$n.c"
     flags="-std=c99 -Wall -Wextra -Werror -Iinclude"
     case "$build" in *asan*) flags="$flags -fsanitize=address,undefined" ;; esac
     if grep -q '^// cflags: -m' "$dir/$n.c" && ! case $target in x86_64*|i?86*) true ;; *) false ;; esac; then
@@ -39,7 +47,7 @@ for n in $names; do
     else
         pass=$((pass + 1))
     fi
-done
+done < "$dir/examples"
 
 # ---- the quick start ---------------------------------------------------------
 block() { # the fenced block after "<!-- quick start: $1 -->"

@@ -9,10 +9,9 @@
 #include "../lib/sample.h"
 #include "facet/oracle.h"
 
-/* values this small are compared absolutely: the error allowed there is
- * bound * floor (facet.h); flush-to-zero ports have the larger floor */
-#define ERR_FLOOR 0x1p-100
-#define ERR_FLOOR_FTZ 0x1p-60
+/* values below the floor (SMP_ERR_FLOOR, tests/lib/sample.h) are compared
+ * absolutely: the error allowed there is bound * floor (facet.h);
+ * flush-to-zero ports have the larger floor */
 
 typedef struct {
     double max_rel, max_ulp;
@@ -65,15 +64,6 @@ static void set_oracle(set *st, const facet_kernel *k)
     }
 }
 
-/* Does the active port flush denormal inputs to zero (armv7 NEON does)?
- * Probed, not assumed: lambert(1e-39) is 0 only if the input was flushed. */
-static int port_flushes_denormals(void)
-{
-    float in = 1e-39f, out = 1.0f;
-    facet_lambert_f32_batch(&out, &in, 1);
-    return out == 0.0f;
-}
-
 static int has_denormal(const set *st, const facet_kernel *k, long j)
 {
     int i;
@@ -96,8 +86,8 @@ typedef void (*batch_fn)(float *out, const float *const *in, size_t n);
 static void measure(const set *st, const facet_kernel *k, batch_fn batch, float *out, stat *r)
 {
     long j;
-    int i, ftz = port_flushes_denormals();
-    double floor_ = ftz ? ERR_FLOOR_FTZ : ERR_FLOOR;
+    int i, ftz = smp_port_flushes_denormals();
+    double floor_ = ftz ? SMP_ERR_FLOOR_FTZ : SMP_ERR_FLOOR;
     memset(r, 0, sizeof *r);
     batch(out, (const float *const *)st->in, (size_t)st->n);
     for (j = 0; j < st->n; j++) {

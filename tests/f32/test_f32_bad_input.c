@@ -4,7 +4,9 @@
  * documented substitute (-Inf, below-domain -> the low end; +Inf,
  * above-domain -> the high end), and every NaN class (quiet, signalling,
  * either sign, payloads) in each input position gives +0 (the NaN rule).
- * Also the named special points. */
+ * Also the named special points, and both tiers of every kernel at its
+ * golden values (tests/lib/golden.h): within the bound, to the bit where
+ * the point is a named point of the contract. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <float.h>
@@ -12,6 +14,7 @@
 #include <string.h>
 #include "../lib/harness.h"
 #include "../lib/sample.h"
+#include "../lib/golden.h"
 #include "facet/oracle.h"
 
 static int same(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
@@ -259,6 +262,33 @@ int main(void)
         /* the case: NaN cosines no longer give the grazing maximum */
         CHECK(same(facet_brdf_hammon_f32(NAN, NAN, 0.1f, 0.16f, 0.04f, 0.5f), 0.0f),
               "brdf_hammon(NaN, NaN, 0.1, 0.16, ...) = 0");
+    }
+    /* the golden values, both tiers (the error measure of the accuracy
+     * test: relative, absolute below 2^-100) */
+    {
+        size_t j, count;
+        const golden_point *gt = golden_table(&count);
+        golden_covers();
+        for (j = 0; j < count; j++) {
+            const golden_point *g = &gt[j];
+            const facet_kernel *k = facet_kernel_find(g->kernel);
+            float in[FACET_MAX_INPUTS] = { 0 }, got, fast;
+            int i;
+            if (!k)
+                continue;
+            for (i = 0; i < k->n_inputs; i++)
+                in[i] = (float)g->in[i];
+            got = k->f32(in);
+            fast = k->f32_fast(in);
+            CHECK(fabs(got - g->want) <= k->err_f32 * fmax(fabs(g->want), SMP_ERR_FLOOR),
+                  "%s at golden point %d: %.9g vs %.17g (bound %.3g)", g->kernel, (int)j, got, g->want, k->err_f32);
+            CHECK(fabs(fast - g->want) <= k->err_f32_fast * fmax(fabs(g->want), SMP_ERR_FLOOR),
+                  "%s (fast) at golden point %d: %.9g vs %.17g (bound %.3g)", g->kernel, (int)j, fast, g->want,
+                  k->err_f32_fast);
+            if (g->exact)
+                CHECK(same(got, (float)g->want), "%s at golden point %d: %.9g, not %.9g to the bit", g->kernel,
+                      (int)j, got, (float)g->want);
+        }
     }
     return th_done();
 }

@@ -9,8 +9,9 @@
 #include <stdint.h>
 #include "../lib/harness.h"
 #include "../lib/sample.h"
+#include "../lib/batch_check.h"
 
-#define MAXN 256
+#define MAXN BC_MAXN
 
 static int fast_tier; /* 0: facet_kernel.f32_batch, 1: f32_fast_batch */
 
@@ -18,9 +19,11 @@ static int same(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
 
 /* runs k's batch on n samples taken from src (SoA, stride MAXN) starting at
  * index `first`, with each input copied to a buffer of exactly n floats at
- * float offset `misalign`, so a sanitizer sees any access past the end */
-static void run(const facet_kernel *k, float src[][MAXN], int first, int n, int misalign, float *out)
+ * float offset `misalign`, so a sanitizer sees any access past the end;
+ * out[0] gets the results (tests/lib/batch_check.h's run) */
+static void run(const void *ctx, float src[][MAXN], int first, int n, int misalign, float out[][MAXN])
 {
+    const facet_kernel *k = ctx;
     float *buf[FACET_MAX_INPUTS], *o;
     int i;
     for (i = 0; i < k->n_inputs; i++) {
@@ -30,7 +33,7 @@ static void run(const facet_kernel *k, float src[][MAXN], int first, int n, int 
     }
     o = malloc((n + misalign) * sizeof(float) + 1);
     (fast_tier ? k->f32_fast_batch : k->f32_batch)(o + misalign, (const float *const *)buf, (size_t)n);
-    memcpy(out, o + misalign, n * sizeof(float));
+    memcpy(out[0], o + misalign, n * sizeof(float));
     free(o);
     for (i = 0; i < k->n_inputs; i++)
         free(buf[i] - misalign);
@@ -43,8 +46,9 @@ static void test_port(const char *port, int lanes)
     size_t ki;
     for (ki = 0; ki < facet_kernel_count(); ki++) {
         const facet_kernel *k = facet_kernel_at(ki);
-        float ref[MAXN], out[MAXN];
-        int i, j, n, lane, bad_lane = 0, bad_tail = 0, bad_align = 0, bad_alias = 0;
+        static float ref[1][MAXN], out[1][MAXN], sub[1][MAXN];
+        int i, j, bad_alias = 0;
+        bc_counts bc;
         for (j = 0; j < MAXN; j++) {
             float in[FACET_MAX_INPUTS];
             smp_inputs(&rng, k, in);
@@ -52,36 +56,8 @@ static void test_port(const char *port, int lanes)
                 src[i][j] = in[i];
         }
         run(k, src, 0, MAXN, 0, ref);
-
-        /* lane independence: sample 0 in every lane position, neighbours random */
-        for (lane = 0; lane < 3 * lanes; lane++) {
-            float save[FACET_MAX_INPUTS];
-            for (i = 0; i < k->n_inputs; i++) {
-                save[i] = src[i][100 + lane];
-                src[i][100 + lane] = src[i][0];
-            }
-            run(k, src, 100, 3 * lanes + 1, 0, out);
-            if (!same(out[lane], ref[0]))
-                bad_lane++;
-            for (i = 0; i < k->n_inputs; i++)
-                src[i][100 + lane] = save[i];
-        }
-        /* every tail length 0 .. 3W+1, from several starting points */
-        for (n = 0; n <= 3 * lanes + 1; n++)
-            for (j = 0; j < 3; j++) {
-                int first = j * 37 % (MAXN - n);
-                run(k, src, first, n, 0, out);
-                for (i = 0; i < n; i++)
-                    if (!same(out[i], ref[first + i]))
-                        bad_tail++;
-            }
-        /* unaligned buffers */
-        for (j = 1; j < 8; j++) {
-            run(k, src, 0, 61, j, out);
-            for (i = 0; i < 61; i++)
-                if (!same(out[i], ref[i]))
-                    bad_align++;
-        }
+        /* lane independence, every tail length, unaligned buffers */
+        bc = bc_mechanics(run, k, k->n_inputs, 1, lanes, src, ref);
         /* out aliases the first and the last input */
         for (j = 0; j < 2; j++) {
             float *a[FACET_MAX_INPUTS];
@@ -92,7 +68,7 @@ static void test_port(const char *port, int lanes)
             }
             (fast_tier ? k->f32_fast_batch : k->f32_batch)(a[which], (const float *const *)a, 77);
             for (i = 0; i < 77; i++)
-                if (!same(a[which][i], ref[i]))
+                if (!same(a[which][i], ref[0][i]))
                     bad_alias++;
             for (i = 0; i < k->n_inputs; i++)
                 free(a[i]);
@@ -105,15 +81,15 @@ static void test_port(const char *port, int lanes)
                 swapped[i] = src[i];
             swapped[0] = src[1];
             swapped[1] = src[0];
-            (fast_tier ? k->f32_fast_batch : k->f32_batch)(out, (const float *const *)swapped, MAXN);
+            (fast_tier ? k->f32_fast_batch : k->f32_batch)(out[0], (const float *const *)swapped, MAXN);
             for (i = 0; i < MAXN; i++)
-                if (!same(out[i], ref[i]))
+                if (!same(out[0][i], ref[0][i]))
                     bad_sym++;
             CHECK(bad_sym == 0, "%s/%s: not symmetric in N.L and N.V (%d values)", port, k->name, bad_sym);
         }
-        CHECK(bad_lane == 0, "%s/%s: result depends on the lane (%d cases)", port, k->name, bad_lane);
-        CHECK(bad_tail == 0, "%s/%s: tails differ from the full batch (%d values)", port, k->name, bad_tail);
-        CHECK(bad_align == 0, "%s/%s: unaligned buffers change results (%d values)", port, k->name, bad_align);
+        CHECK(bc.lane == 0, "%s/%s: result depends on the lane (%ld cases)", port, k->name, bc.lane);
+        CHECK(bc.tail == 0, "%s/%s: tails differ from the full batch (%ld values)", port, k->name, bc.tail);
+        CHECK(bc.align == 0, "%s/%s: unaligned buffers change results (%ld values)", port, k->name, bc.align);
         CHECK(bad_alias == 0, "%s/%s: out aliasing an input changes results (%d values)", port, k->name, bad_alias);
 
         /* bad input: finite, >= 0, equal to the port's value at the substitute */
@@ -142,15 +118,15 @@ static void test_port(const char *port, int lanes)
                 run(k, src, 0, nb, 0, out);
                 for (j = 0; j < nb; j++) {
                     float v = src[pos][j], lo = smp_domain_lo(k, pos), hi = smp_domain_hi(k, pos);
-                    if (!(out[j] == out[j]) || out[j] > FLT_MAX || out[j] < 0.0f || same(out[j], -0.0f))
+                    if (!(out[0][j] == out[0][j]) || out[0][j] > FLT_MAX || out[0][j] < 0.0f || same(out[0][j], -0.0f))
                         bad_val++;
-                    if (v != v && !same(out[j], 0.0f))
+                    if (v != v && !same(out[0][j], 0.0f))
                         bad_nan++;
                     src[pos][j] = v != v ? 0.5f : v < lo ? lo : v > hi ? hi : v;
                 }
-                run(k, src, 0, nb, 0, ref + 128);
+                run(k, src, 0, nb, 0, sub);
                 for (j = 0; j < nb; j++)
-                    if (!(bad[j % n_bad] != bad[j % n_bad]) && !same(out[j], ref[128 + j]))
+                    if (!(bad[j % n_bad] != bad[j % n_bad]) && !same(out[0][j], sub[0][j]))
                         bad_sub++;
                 memcpy(src[pos], save, sizeof save);
             }

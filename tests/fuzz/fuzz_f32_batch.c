@@ -21,8 +21,6 @@
 #include "../lib/sample.h"
 
 #define MAX_N 80
-#define ERR_FLOOR 0x1p-100
-#define ERR_FLOOR_FTZ 0x1p-60
 
 static int same(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
 
@@ -34,19 +32,12 @@ static float clamp_in(const facet_kernel *k, int i, float v)
     return v < lo ? lo : v > hi ? hi : v;
 }
 
-static int flushes(void)
-{
-    float in = 1e-39f, out = 1.0f;
-    facet_lambert_f32_batch(&out, &in, 1);
-    return out == 0.0f;
-}
-
 static void run_port(const facet_kernel *k, const char *port, float in[][MAX_N], size_t n, size_t off, int alias)
 {
     void *base[FACET_MAX_INPUTS + 1];
     float *buf[FACET_MAX_INPUTS], *out, one, cl[FACET_MAX_INPUTS][1];
     const float *ptr[FACET_MAX_INPUTS];
-    int i, ftz = flushes();
+    int i, ftz = smp_port_flushes_denormals();
     size_t j;
     for (i = 0; i < k->n_inputs; i++) {
         buf[i] = fuzz_buf(n, sizeof(float), off, &base[i]);
@@ -58,7 +49,7 @@ static void run_port(const facet_kernel *k, const char *port, float in[][MAX_N],
     for (j = 0; j < n; j++) {
         const float *p1[FACET_MAX_INPUTS];
         float single[FACET_MAX_INPUTS][1], got = out[j];
-        double din[FACET_MAX_INPUTS], want, floor_ = ftz ? ERR_FLOOR_FTZ : ERR_FLOOR;
+        double din[FACET_MAX_INPUTS], want, floor_ = ftz ? SMP_ERR_FLOOR_FTZ : SMP_ERR_FLOOR;
         if (!(got >= 0.0f && got <= FLT_MAX) || same(got, -0.0f))
             FUZZ_FAIL("%s/%s: sample %zu gives %a", port, k->name, j, got);
         for (i = 0; i < k->n_inputs; i++) {

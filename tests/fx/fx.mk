@@ -13,7 +13,7 @@
 #       fw_oracle.elf  also calls the oracle: the symbol check must flag it
 FX_KSRC   := $(filter-out src/fx/fx_table.c,$(FX_SOURCES)) # the Makefile's firmware list
 FX_TSRC   := $(FX_KSRC) src/fx/fx_table.c
-FX_HDRS   := include/facet/fx.h $(wildcard src/fx_*.h) src/core/port.h src/core/kernel_list.h src/core/kernels.def \
+FX_HDRS   := include/facet/fx.h $(wildcard src/fx/*.h) src/core/port.h src/core/kernel_list.h src/core/kernels.def \
              tests/lib/harness.h tests/lib/fx_hash.h
 FX_CFLAGS := $(WARN) -Iinclude -O2
 FX_CM_CC  ?= arm-none-eabi-gcc

@@ -32,8 +32,6 @@ typedef struct {
     double want;
 } stat;
 
-static double round_hu(double x) { return floor(x + 0.5); }
-
 static void one(const facet_fx_kernel *fk, const facet_kernel *k, const int32_t *in, stat *st)
 {
     double din[FACET_FX_MAX_INPUTS], want, scaled, err, lsb;
@@ -52,7 +50,7 @@ static void one(const facet_fx_kernel *fk, const facet_kernel *k, const int32_t 
         return;
     }
     err = (double)got - scaled;
-    lsb = fabs((double)got - round_hu(scaled));
+    lsb = fabs((double)got - fx_round_hu(scaled));
     st->n++;
     st->sum += err;
     st->exact += lsb == 0;
@@ -66,83 +64,12 @@ static void one(const facet_fx_kernel *fk, const facet_kernel *k, const int32_t 
     }
 }
 
-/* alphas: both ends, their neighbours, and a log-spaced set */
-static int alpha_set(int32_t *a, int n_log)
+/* one() as an fx_edge_grid visitor */
+struct one_ctx { const facet_fx_kernel *fk; const facet_kernel *k; stat *st; };
+static void one_visit(const int32_t *in, void *ctx)
 {
-    int n = 0, i;
-    a[n++] = 32; a[n++] = 33; a[n++] = 32767; a[n++] = 32768;
-    for (i = 0; i < n_log; i++)
-        a[n++] = (int32_t)floor(32.0 * pow(1024.0, (i + 0.5) / n_log));
-    return n;
-}
-
-/* a pair of cosines and L.V from unit vectors, quantised to Q15 */
-static void geometry(fx_rng *r, int32_t *nl, int32_t *nv, int32_t *lv)
-{
-    double cl, cv, phi, u = (fx_next(r) >> 11) * 0x1p-53, w = (fx_next(r) >> 11) * 0x1p-53;
-    unsigned mode = (unsigned)(fx_next(r) % 6);
-    cl = u;
-    cv = w;
-    phi = 2 * M_PI * ((fx_next(r) >> 11) * 0x1p-53);
-    if (mode == 0) { /* the specular peak: mirror azimuth, equal angles */
-        cv = cl + (w - 0.5) * 0x1p-10;
-        phi = M_PI + (phi - M_PI) * 0x1p-12;
-    } else if (mode == 1) { /* grazing */
-        cl = pow(2.0, -8.0 * u);
-        cl = 1.0 - cl + 0x1p-8;
-        cl = 0x1p-8 * (1 + 8 * u);
-    } else if (mode == 2) { /* L near V */
-        cv = cl + (w - 0.5) * 0x1p-9;
-        phi = (phi - M_PI) * 0x1p-10;
-    }
-    cl = fmin(fmax(cl, 0x1p-8), 1.0);
-    cv = fmin(fmax(cv, 0x1p-8), 1.0);
-    *nl = (int32_t)round_hu(cl * 32768);
-    *nv = (int32_t)round_hu(cv * 32768);
-    *lv = (int32_t)round_hu(fmin(fmax(cl * cv + sqrt(1 - cl * cl) * sqrt(1 - cv * cv) * cos(phi), -1.0), 1.0) * 32768);
-}
-
-static void random_inputs(fx_rng *r, const facet_fx_kernel *fk, int32_t *in)
-{
-    int32_t nl, nv, lv;
-    int i;
-    geometry(r, &nl, &nv, &lv);
-    for (i = 0; i < fk->n_inputs; i++) {
-        const char *nm = fk->inputs[i];
-        if (!strcmp(nm, "nol")) in[i] = nl;
-        else if (!strcmp(nm, "nov")) in[i] = nv;
-        else if (!strcmp(nm, "lov")) in[i] = lv;
-        else if (!strcmp(nm, "alpha")) in[i] = (fx_next(r) & 3) ? (int32_t)floor(32.0 * pow(1024.0, (fx_next(r) >> 11) * 0x1p-53)) : fx_range(r, 32, 32768);
-        else in[i] = fx_range(r, 0, 32768);
-        if (fx_next(r) % 16 == 0) /* any raw value of the domain, consistent or not */
-            in[i] = fx_range(r, fk->lo[i], fk->hi[i]);
-    }
-}
-
-static const int32_t edges_[] = { 0, 1, 32, 33, 127, 128, 129, 1000, 16384, 23170, 32000, 32767, 32768,
-                                  -1, -16384, -32767, -32768 };
-
-static void edge_grid(const facet_fx_kernel *fk, const facet_kernel *k, stat *st)
-{
-    const int ne = (int)(sizeof edges_ / sizeof edges_[0]);
-    long total = 1, c;
-    int i;
-    for (i = 0; i < fk->n_inputs; i++)
-        total *= ne;
-    if (total > 2000000)
-        total = 2000000;
-    for (c = 0; c < total; c++) {
-        int32_t in[FACET_FX_MAX_INPUTS];
-        long q = c;
-        int ok = 1;
-        for (i = 0; i < fk->n_inputs; i++) {
-            in[i] = edges_[q % ne];
-            q /= ne;
-            ok &= in[i] >= fk->lo[i] && in[i] <= fk->hi[i];
-        }
-        if (ok)
-            one(fk, k, in, st);
-    }
+    struct one_ctx *c = (struct one_ctx *)ctx;
+    one(c->fk, c->k, in, c->st);
 }
 
 static void accuracy(const facet_fx_kernel *fk, const facet_kernel *k)
@@ -162,7 +89,7 @@ static void accuracy(const facet_fx_kernel *fk, const facet_kernel *k)
         }
     } else if (fk->n_inputs == 2) {
         int step = quick ? 61 : 1;
-        na = alpha_set(al, quick ? 12 : 28);
+        na = fx_alpha_set(al, quick ? 12 : 28);
         if (!strcmp(fk->inputs[1], "cos")) { /* fresnel: f0 set x all cos, all f0 x cos set */
             for (i = 0; i < na; i++)
                 for (j = 0; j <= 32768; j += step) {
@@ -180,9 +107,9 @@ static void accuracy(const facet_fx_kernel *fk, const facet_kernel *k)
                     in[1] = al[i];
                     one(fk, k, in, &st);
                 }
-            for (i = 0; i < (int)(sizeof edges_ / sizeof edges_[0]); i++)
+            for (i = 0; i < FX_N_EDGES; i++)
                 for (j = 32; j <= 32768; j += step) {
-                    in[0] = edges_[i] < 0 ? -edges_[i] : edges_[i];
+                    in[0] = fx_edges[i] < 0 ? -fx_edges[i] : fx_edges[i];
                     in[1] = (int32_t)j;
                     one(fk, k, in, &st);
                 }
@@ -192,10 +119,16 @@ static void accuracy(const facet_fx_kernel *fk, const facet_kernel *k)
     if (quick)
         nr /= 20;
     for (j = 0; j < nr; j++) {
-        random_inputs(&r, fk, in);
+        fx_random_inputs(&r, 0, fk, in);
         one(fk, k, in, &st);
     }
-    edge_grid(fk, k, &st);
+    {
+        struct one_ctx c;
+        c.fk = fk;
+        c.k = k;
+        c.st = &st;
+        fx_edge_grid(fk, 2000000, one_visit, &c);
+    }
     printf("%-22s %-8s %9ld %7.0f %9.3f %+9.5f %8.3f%%  (", fk->name, fk->out_format, st.n, st.max_lsb,
            st.max_real, st.sum / st.n, 100.0 * st.exact / st.n);
     for (i = 0; i < fk->n_inputs; i++)
@@ -240,7 +173,7 @@ static void monotonic(const facet_fx_kernel *fk, const char *input, int dir)
         if (!strcmp(fk->inputs[i], input))
             which = i;
     for (i = 0; i < lines; i++) {
-        random_inputs(&r, fk, in);
+        fx_random_inputs(&r, 0, fk, in);
         if (i < 4) { /* the ends of every other input */
             int j;
             for (j = 0; j < fk->n_inputs; j++)
@@ -286,7 +219,7 @@ static void clamping(const facet_fx_kernel *fk)
     int i, j, t;
     for (t = 0; t < (quick ? 20 : 200); t++) {
         int32_t in[FACET_FX_MAX_INPUTS], cl[FACET_FX_MAX_INPUTS];
-        random_inputs(&r, fk, in);
+        fx_random_inputs(&r, 0, fk, in);
         for (i = 0; i < fk->n_inputs; i++)
             for (j = 0; j < (int)(sizeof bad_vals / sizeof bad_vals[0]); j++) {
                 memcpy(cl, in, sizeof cl);
@@ -336,8 +269,14 @@ int main(void)
             { "smith_g1_schlick_beckmann", "nov", 1 }, { "smith_g1_schlick_beckmann", "alpha", -1 },
             { "smith_vis_joint_approx", "nov", -1 }, { "smith_vis_fit", "nov", -1 },
         };
-        for (i = 0; i < sizeof mono / sizeof mono[0]; i++)
-            monotonic(facet_fx_kernel_find(mono[i].k), mono[i].in, mono[i].dir);
+        /* the directions are golden values, the names must be the table's */
+        for (i = 0; i < sizeof mono / sizeof mono[0]; i++) {
+            const facet_fx_kernel *fk = facet_fx_kernel_find(mono[i].k);
+            if (fk && fk->fx)
+                monotonic(fk, mono[i].in, mono[i].dir);
+            else
+                CHECK(0, "monotonicity: %s is not a precise fx kernel", mono[i].k);
+        }
     }
     key_points();
     return th_done();

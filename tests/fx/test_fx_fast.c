@@ -14,6 +14,7 @@
  * argmax of the error.  Also: every out-of-domain int32 class (INT32_MIN/MAX
  * included) gives the kernel at the clamped input, no output exceeds the
  * format maximum, and the exact key points the body promises. */
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,63 +25,6 @@
 #include "facet/oracle.h"
 
 typedef uint64_t (*fast_fn)(const int32_t *in);
-#define W1(k, T) static uint64_t f_##k(const int32_t *x) { return (uint64_t)(T)facet_##k##_fx_fast(x[0]); }
-#define W2(k, T) static uint64_t f_##k(const int32_t *x) { return (uint64_t)(T)facet_##k##_fx_fast(x[0], x[1]); }
-#define W3(k, T) static uint64_t f_##k(const int32_t *x) { return (uint64_t)(T)facet_##k##_fx_fast(x[0], x[1], x[2]); }
-#define W4(k, T) static uint64_t f_##k(const int32_t *x) { return (uint64_t)(T)facet_##k##_fx_fast(x[0], x[1], x[2], x[3]); }
-W3(noh_from_dots, uint32_t) W1(loh_from_dots, uint32_t) W2(fresnel_schlick, uint32_t) W2(ggx_d, uint32_t)
-W2(smith_g1, uint32_t) W3(smith_g2, uint32_t) W3(smith_g2_uncorrelated, uint32_t) W3(smith_vis, uint32_t)
-W2(smith_g1_hammon, uint32_t) W3(smith_g2_hammon, uint32_t) W3(smith_vis_hammon, uint32_t)
-W2(g_implicit, uint32_t) W2(g_neumann, uint32_t) W4(g_cook_torrance, uint32_t) W3(g_kelemen, uint32_t)
-W2(smith_g1_beckmann, uint32_t) W2(smith_g1_schlick_beckmann, uint32_t) W3(smith_vis_joint_approx, uint32_t)
-W3(smith_vis_fit, uint32_t)
-W3(gtr_d, uint32_t)
-W3(smith_g1_gtr, int32_t)
-W2(blinn_phong_d, uint32_t)
-W2(beckmann_d, uint32_t)
-static uint64_t f_ggx_aniso_d(const int32_t *x) { return facet_ggx_aniso_d_fx_fast(x[0], x[1], x[2], x[3], x[4]); }
-W2(fresnel_cook_torrance, uint32_t) W3(fresnel_schlick_f90, uint32_t) W2(fresnel_schlick_sg, uint32_t)
-#define W5(k) static uint64_t f_##k(const int32_t *x) { return facet_##k##_fx_fast(x[0], x[1], x[2], x[3], x[4]); }
-W5(diffuse_burley) W5(diffuse_oren_nayar) W5(diffuse_hammon_hybrid) W5(diffuse_hammon_cheap)
-static uint64_t f_diffuse_hammon(const int32_t *x) { return facet_diffuse_hammon_fx_fast(x[0], x[1], x[2], x[3], x[4]); }
-static uint64_t f_brdf_hammon(const int32_t *x) { return facet_brdf_hammon_fx_fast(x[0], x[1], x[2], x[3], x[4], x[5]); }
-
-static const struct { const char *name; fast_fn fn; double err; } fast[] = {
-    { "noh_from_dots", f_noh_from_dots, FACET_FX_FAST_ERR_NOH_FROM_DOTS },
-    { "loh_from_dots", f_loh_from_dots, FACET_FX_FAST_ERR_LOH_FROM_DOTS },
-    { "fresnel_schlick", f_fresnel_schlick, FACET_FX_FAST_ERR_FRESNEL_SCHLICK },
-    { "ggx_d", f_ggx_d, FACET_FX_FAST_ERR_GGX_D },
-    { "blinn_phong_d", f_blinn_phong_d, FACET_FX_FAST_ERR_BLINN_PHONG_D },
-    { "beckmann_d", f_beckmann_d, FACET_FX_FAST_ERR_BECKMANN_D },
-    { "ggx_aniso_d", f_ggx_aniso_d, FACET_FX_FAST_ERR_GGX_ANISO_D },
-    { "gtr_d", f_gtr_d, FACET_FX_FAST_ERR_GTR_D },
-    { "smith_g1", f_smith_g1, FACET_FX_FAST_ERR_SMITH_G1 },
-    { "smith_g2", f_smith_g2, FACET_FX_FAST_ERR_SMITH_G2 },
-    { "smith_g2_uncorrelated", f_smith_g2_uncorrelated, FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED },
-    { "smith_vis", f_smith_vis, FACET_FX_FAST_ERR_SMITH_VIS },
-    { "smith_g1_hammon", f_smith_g1_hammon, FACET_FX_FAST_ERR_SMITH_G1_HAMMON },
-    { "smith_g1_gtr", f_smith_g1_gtr, FACET_FX_FAST_ERR_SMITH_G1_GTR },
-    { "smith_g2_hammon", f_smith_g2_hammon, FACET_FX_FAST_ERR_SMITH_G2_HAMMON },
-    { "smith_vis_hammon", f_smith_vis_hammon, FACET_FX_FAST_ERR_SMITH_VIS_HAMMON },
-    { "g_implicit", f_g_implicit, FACET_FX_FAST_ERR_G_IMPLICIT },
-    { "g_neumann", f_g_neumann, FACET_FX_FAST_ERR_G_NEUMANN },
-    { "g_cook_torrance", f_g_cook_torrance, FACET_FX_FAST_ERR_G_COOK_TORRANCE },
-    { "g_kelemen", f_g_kelemen, FACET_FX_FAST_ERR_G_KELEMEN },
-    { "smith_g1_beckmann", f_smith_g1_beckmann, FACET_FX_FAST_ERR_SMITH_G1_BECKMANN },
-    { "smith_g1_schlick_beckmann", f_smith_g1_schlick_beckmann, FACET_FX_FAST_ERR_SMITH_G1_SCHLICK_BECKMANN },
-    { "smith_vis_joint_approx", f_smith_vis_joint_approx, FACET_FX_FAST_ERR_SMITH_VIS_JOINT_APPROX },
-    { "smith_vis_fit", f_smith_vis_fit, FACET_FX_FAST_ERR_SMITH_VIS_FIT },
-    { "diffuse_hammon", f_diffuse_hammon, FACET_FX_FAST_ERR_DIFFUSE_HAMMON },
-    { "fresnel_cook_torrance", f_fresnel_cook_torrance, FACET_FX_FAST_ERR_FRESNEL_COOK_TORRANCE },
-    { "fresnel_schlick_f90", f_fresnel_schlick_f90, FACET_FX_FAST_ERR_FRESNEL_SCHLICK_F90 },
-    { "fresnel_schlick_sg", f_fresnel_schlick_sg, FACET_FX_FAST_ERR_FRESNEL_SCHLICK_SG },
-    { "diffuse_burley", f_diffuse_burley, FACET_FX_FAST_ERR_DIFFUSE_BURLEY },
-    { "diffuse_oren_nayar", f_diffuse_oren_nayar, FACET_FX_FAST_ERR_DIFFUSE_OREN_NAYAR },
-    { "diffuse_hammon_hybrid", f_diffuse_hammon_hybrid, FACET_FX_FAST_ERR_DIFFUSE_HAMMON_HYBRID },
-    { "diffuse_hammon_cheap", f_diffuse_hammon_cheap, FACET_FX_FAST_ERR_DIFFUSE_HAMMON_CHEAP },
-    { "brdf_hammon", f_brdf_hammon, FACET_FX_FAST_ERR_BRDF_HAMMON },
-};
-#define N_FAST (sizeof fast / sizeof fast[0])
 
 static int quick;
 static fast_fn cur;
@@ -92,8 +36,6 @@ typedef struct {
     uint64_t got;
     double want;
 } stat;
-
-static double round_hu(double x) { return floor(x + 0.5); }
 
 static void one(const facet_fx_kernel *fk, const facet_kernel *k, const int32_t *in, stat *st)
 {
@@ -124,60 +66,6 @@ static void one(const facet_fx_kernel *fk, const facet_kernel *k, const int32_t 
     }
 }
 
-static int alpha_set(int32_t *a, int n_log)
-{
-    int n = 0, i;
-    a[n++] = 32; a[n++] = 33; a[n++] = 32767; a[n++] = 32768;
-    for (i = 0; i < n_log; i++)
-        a[n++] = (int32_t)floor(32.0 * pow(1024.0, (i + 0.5) / n_log));
-    return n;
-}
-
-static void geometry(fx_rng *r, int32_t *nl, int32_t *nv, int32_t *lv)
-{
-    double cl, cv, phi, u = (fx_next(r) >> 11) * 0x1p-53, w = (fx_next(r) >> 11) * 0x1p-53;
-    unsigned mode = (unsigned)(fx_next(r) % 7);
-    cl = u;
-    cv = w;
-    phi = 2 * M_PI * ((fx_next(r) >> 11) * 0x1p-53);
-    if (mode == 0) { /* the specular peak */
-        cv = cl + (w - 0.5) * 0x1p-10;
-        phi = M_PI + (phi - M_PI) * 0x1p-12;
-    } else if (mode == 1) { /* grazing */
-        cl = 0x1p-8 * (1 + 8 * u);
-    } else if (mode == 2) { /* L near V */
-        cv = cl + (w - 0.5) * 0x1p-9;
-        phi = (phi - M_PI) * 0x1p-10;
-    } else if (mode == 3) { /* the peak near normal incidence: L ~ V ~ N */
-        cl = cos(0.3 * u);
-        cv = cos(0.3 * u * (1 + (w - 0.5) * 0.02));
-        phi = M_PI + (phi - M_PI) * 0x1p-8;
-    }
-    cl = fmin(fmax(cl, 0x1p-8), 1.0);
-    cv = fmin(fmax(cv, 0x1p-8), 1.0);
-    *nl = (int32_t)round_hu(cl * 32768);
-    *nv = (int32_t)round_hu(cv * 32768);
-    *lv = (int32_t)round_hu(fmin(fmax(cl * cv + sqrt(1 - cl * cl) * sqrt(1 - cv * cv) * cos(phi), -1.0), 1.0) * 32768);
-}
-
-static void random_inputs(fx_rng *r, const facet_fx_kernel *fk, int32_t *in)
-{
-    int32_t nl, nv, lv;
-    int i;
-    geometry(r, &nl, &nv, &lv);
-    for (i = 0; i < fk->n_inputs; i++) {
-        const char *nm = fk->inputs[i];
-        if (!strcmp(nm, "nol")) in[i] = nl;
-        else if (!strcmp(nm, "nov")) in[i] = nv;
-        else if (!strcmp(nm, "lov")) in[i] = lv;
-        else if (!strcmp(nm, "alpha")) in[i] = (fx_next(r) & 3) ? (int32_t)floor(32.0 * pow(1024.0, (fx_next(r) >> 11) * 0x1p-53)) : fx_range(r, 32, 32768);
-        else if (fx_next(r) % 4 == 0) in[i] = (int32_t)(fx_next(r) % 64); /* tiny (or 0) f0 / albedo / cos */
-        else in[i] = fx_range(r, 0, 32768);
-        if (fx_next(r) % 16 == 0)
-            in[i] = fx_range(r, fk->lo[i], fk->hi[i]);
-    }
-}
-
 /* raw tuples uniform over the domain, 1 in 4 inputs pinned near an end of
  * its range, alpha log-uniform 1 in 8, L.V half the time near the peak's
  * 2 nl nv - 1 or L = V's value (then maybe inconsistent by up to 2^-10) */
@@ -197,33 +85,17 @@ static void uniform_inputs(fx_rng *r, const facet_fx_kernel *fk, int32_t *in)
             double nl = in[0] / 32768.0, nv = in[1] / 32768.0;
             double v = (x & 2) ? 2 * nl * nv - 1 : nl * nv + sqrt(1 - nl * nl) * sqrt(1 - nv * nv);
             v += ((double)(fx_next(r) % 2001) - 1000) * 0x1p-20;
-            in[i] = (int32_t)round_hu(fmin(fmax(v, -1.0), 1.0) * 32768);
+            in[i] = (int32_t)fx_round_hu(fmin(fmax(v, -1.0), 1.0) * 32768);
         }
     }
 }
 
-static const int32_t edges_[] = { 0, 1, 32, 33, 127, 128, 129, 1000, 16384, 23170, 32000, 32767, 32768,
-                                  -1, -16384, -32767, -32768 };
-
-static void edge_grid(const facet_fx_kernel *fk, const facet_kernel *k, stat *st)
+/* one() as an fx_edge_grid visitor */
+struct one_ctx { const facet_fx_kernel *fk; const facet_kernel *k; stat *st; };
+static void one_visit(const int32_t *in, void *ctx)
 {
-    const int ne = (int)(sizeof edges_ / sizeof edges_[0]);
-    long total = 1, c;
-    int i;
-    for (i = 0; i < fk->n_inputs; i++)
-        total *= ne;
-    for (c = 0; c < total; c++) {
-        int32_t in[FACET_FX_MAX_INPUTS];
-        long q = c;
-        int ok = 1;
-        for (i = 0; i < fk->n_inputs; i++) {
-            in[i] = edges_[q % ne];
-            q /= ne;
-            ok &= in[i] >= fk->lo[i] && in[i] <= fk->hi[i];
-        }
-        if (ok)
-            one(fk, k, in, st);
-    }
+    struct one_ctx *c = (struct one_ctx *)ctx;
+    one(c->fk, c->k, in, c->st);
 }
 
 static void accuracy(const facet_fx_kernel *fk, const facet_kernel *k, double bound)
@@ -242,7 +114,7 @@ static void accuracy(const facet_fx_kernel *fk, const facet_kernel *k, double bo
         }
     } else if (fk->n_inputs == 2) {
         int step = quick ? 61 : 1;
-        na = alpha_set(al, quick ? 12 : 28);
+        na = fx_alpha_set(al, quick ? 12 : 28);
         for (i = 0; i < na; i++)
             for (j = 0; j <= 32768; j += step) {
                 int cosk = !strcmp(fk->inputs[1], "cos");
@@ -260,14 +132,20 @@ static void accuracy(const facet_fx_kernel *fk, const facet_kernel *k, double bo
     if (quick)
         nr /= 20;
     for (j = 0; j < nr; j++) {
-        random_inputs(&r, fk, in);
+        fx_random_inputs(&r, FX_GEOM_NEAR_NORMAL | FX_GEOM_TINY, fk, in);
         one(fk, k, in, &st);
     }
     for (j = 0; j < nr; j++) {
         uniform_inputs(&r, fk, in);
         one(fk, k, in, &st);
     }
-    edge_grid(fk, k, &st);
+    {
+        struct one_ctx c;
+        c.fk = fk;
+        c.k = k;
+        c.st = &st;
+        fx_edge_grid(fk, LONG_MAX, one_visit, &c);
+    }
     printf(getenv("FACET_FX_FAST_DIGITS") ? "%-22s %-8s %9ld %.6f %6.3f 2^%6.2f " : "%-22s %-8s %9ld %7.4f %6.3f 2^%6.2f ", fk->name, fk->out_format, st.n, st.max_err, st.max_lsb,
            st.max_rel > 0 ? log2(st.max_rel) : -99.0);
     if (st.max_rel_big > 0)
@@ -292,7 +170,7 @@ static void clamping(const facet_fx_kernel *fk)
     int i, j, t;
     for (t = 0; t < (quick ? 20 : 300); t++) {
         int32_t in[FACET_FX_MAX_INPUTS], cl[FACET_FX_MAX_INPUTS];
-        random_inputs(&r, fk, in);
+        fx_random_inputs(&r, FX_GEOM_NEAR_NORMAL | FX_GEOM_TINY, fk, in);
         for (i = 0; i < fk->n_inputs; i++)
             for (j = 0; j < (int)(sizeof bad_vals / sizeof bad_vals[0]); j++) {
                 uint64_t y;
@@ -346,16 +224,16 @@ int main(void)
     th_name = "fx_fast";
     printf("%-22s %-8s %9s %7s %6s %9s %9s  argmax of err\n", "kernel", "format", "samples", "err", "LSB<1K",
            "rel>=1K", "rel>=32K");
-    CHECK(N_FAST == facet_fx_kernel_count(), "fast kernels %u, fx kernels %u", (unsigned)N_FAST,
-          (unsigned)facet_fx_kernel_count());
-    for (i = 0; i < N_FAST; i++) {
-        const facet_fx_kernel *fk = facet_fx_kernel_find(fast[i].name);
-        const facet_kernel *k = facet_kernel_find(fast[i].name);
-        CHECK(fk && k, "%s: no fx/oracle kernel of that name", fast[i].name);
-        if (!fk || !k)
+    /* every kernel of the fx table (src/core/kernels.def), its fast tier
+     * and its FACET_FX_FAST_ERR_<NAME> bound from the table */
+    for (i = 0; i < facet_fx_kernel_count(); i++) {
+        const facet_fx_kernel *fk = facet_fx_kernel_at(i);
+        const facet_kernel *k = facet_kernel_find(fk->name);
+        CHECK(k && fk->fx_fast, "%s: no oracle kernel of that name, or no fast tier", fk->name);
+        if (!k || !fk->fx_fast)
             continue;
-        cur = fast[i].fn;
-        accuracy(fk, k, fast[i].err);
+        cur = fk->fx_fast;
+        accuracy(fk, k, fk->err_fast);
         clamping(fk);
     }
     key_points();

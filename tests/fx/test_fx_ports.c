@@ -25,13 +25,15 @@
 #define MAXLANES 16 /* tails 0 .. 3 * MAXLANES + 1 cover every port's width */
 
 static int fast_tier; /* 0: fx, 1: fx_fast */
+typedef void (*batch_fn)(void *out, const int32_t *const *in, size_t n);
 
-/* the public batch entry point of k in the tier under test; out holds
- * out_bits/8-byte elements */
+/* the public batch entry point of k in the tier under test;
+ * out holds out_bits/8-byte elements */
 static void batch(const facet_fx_kernel *k, void *out, int32_t *const *in, size_t n)
 {
     (fast_tier ? k->fx_fast_batch : k->fx_batch)(out, (const int32_t *const *)in, n);
 }
+
 
 static uint64_t get(const facet_fx_kernel *k, const void *out, size_t i)
 {

@@ -24,19 +24,19 @@ int main(void)
     for (bad = 0, i = 0; i < n; i++) {
         uint32_t a = (uint32_t)fx_next(&r), b = (uint32_t)fx_next(&r);
         if (i < 64) { a = i & 1 ? 0xFFFFFFFFu : a; b = i & 2 ? 0xFFFFFFFFu : i & 4 ? 0 : b; }
-        bad += fx_mul64_portable(a, b) != (uint64_t)a * b;
+        bad += fxp_mul64_portable(a, b) != (uint64_t)a * b;
     }
     CHECK(bad == 0, "portable mul64 differs from native in %ld cases", bad);
 
     /* clz: portable == native for every bit length and random values */
     for (bad = 0, i = 0; i < 32; i++) {
         uint32_t x = 1u << i;
-        bad += fx_clz32_portable(x) != 31 - i || fx_clz32_portable(x | (x - 1)) != 31 - i;
+        bad += fxp_clz32_portable(x) != 31 - i || fxp_clz32_portable(x | (x - 1)) != 31 - i;
     }
     for (i = 0; i < n; i++) {
         uint32_t x = (uint32_t)fx_next(&r) >> (fx_next(&r) % 32);
         if (x)
-            bad += fx_clz32_portable(x) != fx_clz32(x);
+            bad += fxp_clz32_portable(x) != fxp_clz32(x);
     }
     CHECK(bad == 0, "portable clz wrong in %ld cases", bad);
 
@@ -71,8 +71,8 @@ int main(void)
     }
     CHECK(bad == 0, "div2by1 wrong in %ld cases", bad);
 
-    /* fx_div64_udiv (the Cortex-M3/M4 path, built here with the host's
-     * 32-bit division) and fx_div64 (this host's path): exact quotient and
+    /* fxp_div64_udiv (the Cortex-M3/M4 path, built here with the host's
+     * 32-bit division) and fxp_div64 (this host's path): exact quotient and
      * remainder, including the digit-correction corners (u1 = d - 1,
      * d = 2^31, d with a small or all-ones low half) */
     for (bad = 0, i = 0; i < n; i++) {
@@ -92,11 +92,11 @@ int main(void)
         if (i % 11 == 0)
             u0 = i & 1 ? 0xFFFFFFFFu : 0;
         u = ((uint64_t)u1 << 32) | u0;
-        q = fx_div64_udiv(u1, u0, d, &rem);
-        q2 = fx_div64(u1, u0, d, &rem2);
+        q = fxp_div64_udiv(u1, u0, d, &rem);
+        q2 = fxp_div64(u1, u0, d, &rem2);
         bad += q != (uint32_t)(((unsigned __int128)u) / d) || rem != (uint32_t)(u % d) || q2 != q || rem2 != rem;
     }
-    CHECK(bad == 0, "fx_div64_udiv / fx_div64 wrong in %ld cases", bad);
+    CHECK(bad == 0, "fxp_div64_udiv / fxp_div64 wrong in %ld cases", bad);
 #else
     SKIP("no 128-bit integer type for the rcp/div references");
 #endif
@@ -147,8 +147,8 @@ int main(void)
         printf("rsqrt32 max relative error 2^%.2f\n", log2(worst));
         CHECK(worst <= ldexp(1.0, -29), "rsqrt32 error 2^%.2f exceeds 2^-29", log2(worst));
     }
-    /* the GTR terms' integer log2 (fxw_log2m31: Q31 of log2 m, x = m 2^31)
-     * and 2^f (fxw_exp2f30: Q30 of 2^f, f = F 2^-32) against libm, every
+    /* the GTR terms' integer log2 (fxq_log2m31: Q31 of log2 m, x = m 2^31)
+     * and 2^f (fxq_exp2f30: Q30 of 2^f, f = F 2^-32) against libm, every
      * table bin's ends and random mantissas: the bounds src/fx/fx_fast_body.h
      * states (2^-25.5 absolute, 2^-22.9 relative) */
     {
@@ -158,8 +158,8 @@ int main(void)
             uint32_t x = i < 32 ? 0x80000000u + ((uint32_t)(i >> 1) << 27) + (i & 1 ? (1u << 27) - 1u : 0u)
                                 : (uint32_t)fx_next(&r) | 0x80000000u;
             uint32_t f = i < 4 ? (uint32_t)(0u - (uint32_t)i) : (uint32_t)fx_next(&r);
-            double dl = fabs(fxw_log2m31(x) * 0x1p-31 - log2(x * 0x1p-31));
-            double de = fabs(fxw_exp2f30(f) * 0x1p-30 / exp2(f * 0x1p-32) - 1.0);
+            double dl = fabs(fxq_log2m31(x) * 0x1p-31 - log2(x * 0x1p-31));
+            double de = fabs(fxq_exp2f30(f) * 0x1p-30 / exp2(f * 0x1p-32) - 1.0);
             el = dl > el ? dl : el;
             ee = de > ee ? de : ee;
         }

@@ -22,6 +22,41 @@ static inline uint64_t smp_next(smp_rng *r) /* splitmix64 */
 
 static inline double smp_u01(smp_rng *r) { return (smp_next(r) >> 11) * (1.0 / 9007199254740992.0); }
 
+/* the index of name among names[0 .. n - 1] (a kernel's or a sampler's
+ * inputs), or -1 */
+static inline int smp_name_index(const char *const *names, int n, const char *name)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        if (!strcmp(names[i], name))
+            return i;
+    return -1;
+}
+
+/* a seed from a kernel's name (FNV-1a): a test seeded so per kernel draws
+ * the same samples when kernels are added to the list */
+static inline uint64_t smp_name_seed(const char *name)
+{
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (; *name; name++)
+        h = (h ^ (unsigned char)*name) * 0x100000001b3ull;
+    return h;
+}
+
+/* The error measure's floor (facet.h): a result is judged relative to
+ * max(|oracle|, floor), the larger floor on a port that flushes denormals */
+#define SMP_ERR_FLOOR 0x1p-100
+#define SMP_ERR_FLOOR_FTZ 0x1p-60
+
+/* Does the active port flush denormal inputs to zero (armv7 NEON does)?
+ * Probed, not assumed: lambert(1e-39) is 0 only if the input was flushed. */
+static inline int smp_port_flushes_denormals(void)
+{
+    float in = 1e-39f, out = 1.0f;
+    facet_lambert_f32_batch(&out, &in, 1);
+    return out == 0.0f;
+}
+
 /* log-uniform in [2^lo, 2^hi] */
 static inline double smp_log2u(smp_rng *r, double lo, double hi) { return exp2(lo + (hi - lo) * smp_u01(r)); }
 

@@ -67,11 +67,7 @@ static void ss_inputs(smp_rng *r, const facet_sampler *k, float *in)
 /* The index of the input called name, or -1. */
 static inline int ss_input_index(const facet_sampler *k, const char *name)
 {
-    int i;
-    for (i = 0; i < k->n_inputs; i++)
-        if (!strcmp(k->inputs[i], name))
-            return i;
-    return -1;
+    return smp_name_index(k->inputs, k->n_inputs, name);
 }
 
 /* The error measure of the samplers' contracts (facet.h), shared by

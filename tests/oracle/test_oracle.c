@@ -7,7 +7,13 @@
  * evaluation at the ill-conditioned points.  Each check prints its measured
  * residual next to its tolerance; every quadrature is also run with a second,
  * higher-order rule so that the printed quadrature error backs the tolerance.
- * FACET_TEST_QUICK=1 cuts the random sample counts (sanitizer builds). */
+ * FACET_TEST_QUICK=1 cuts the random sample counts (sanitizer builds).
+ * Which kernels a check covers comes from the kernel table (facet_kernel_at)
+ * by their inputs and names: every D term (a name ending in _d) is
+ * normalised, every term of N.L and N.V is symmetric in them, every
+ * diffuse model (albedo and geometry only) gets the white furnace; the
+ * golden values are per kernel (tests/lib/golden.h, the furnace's closed
+ * forms below), each list checked to cover every kernel it should. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,6 +22,8 @@
 #include <stdarg.h>
 #include "../lib/harness.h"
 #include "../lib/sample.h"
+#include "../lib/quad.h"
+#include "../lib/golden.h"
 #include "facet/oracle.h"
 
 #define EPS DBL_EPSILON /* 2^-52 */
@@ -70,50 +78,9 @@ static double agg_done(const agg *a)
     return a->worst;
 }
 
-/* ---- Gauss-Legendre quadrature -------------------------------------------
- * Nodes by Newton's method on P_n (three-term recurrence), weights
- * 2 / ((1 - x^2) P_n'(x)^2).  Integrals are split into panels so that each
- * panel's integrand is analytic and well resolved. */
-#define GL_MAX 48
-
-typedef struct {
-    int n;
-    double x[GL_MAX], w[GL_MAX];
-} gl_rule;
-
-static void legendre(int n, double x, double *p, double *dp)
-{
-    double p0 = 1.0, p1 = x;
-    int k;
-    for (k = 2; k <= n; k++) {
-        double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-    }
-    *p = p1;
-    *dp = n * (x * p1 - p0) / (x * x - 1.0);
-}
-
-static void gl_make(gl_rule *r, int n)
-{
-    int i, it;
-    r->n = n;
-    for (i = 0; i < n; i++) {
-        double x = cos(M_PI * (i + 0.75) / (n + 0.5)), p, dp;
-        for (it = 0; it < 50; it++) {
-            double dx;
-            legendre(n, x, &p, &dp);
-            dx = p / dp;
-            x -= dx;
-            if (fabs(dx) < 1e-17)
-                break;
-        }
-        legendre(n, x, &p, &dp);
-        r->x[i] = x;
-        r->w[i] = 2.0 / ((1.0 - x * x) * dp * dp);
-    }
-}
-
+/* ---- Gauss-Legendre quadrature (the rule: tests/lib/quad.h) ---------------
+ * Integrals are split into panels so that each panel's integrand is
+ * analytic and well resolved. */
 typedef double (*fn1)(double x, const void *ctx);
 
 static double gl_int(fn1 f, const void *ctx, double a, double b, const gl_rule *r)
@@ -252,92 +219,131 @@ static void check_d_normalisation(void)
            agg_done(&aq));
 }
 
-/* ---- 1b. the other D terms: normalisation, GTR's limits -------------------
- * Blinn-Phong, Beckmann and GTR (gamma = 0 .. 4, including the gamma = 1
- * limit) in theta as above; anisotropic GGX in (theta, phi), h =
- * (sin cos phi, sin sin phi, cos).  D(cos) is conditioned by its input as
- * GGX's is (a relative 2^-53 in cos theta moves these D by up to about
- * 2^-50 / alpha^2, times gamma for GTR), hence the same tolerance form. */
+/* ---- 1b. every D term: normalisation; GTR's limits ----------------------
+ * Every D term of the table (a kernel whose name ends in _d), evaluated by
+ * its table oracle with the inputs by name, in theta as above; gamma (GTR's
+ * tail) over 0 .. 4, including the gamma = 1 limit; the anisotropic ones
+ * (with a T.H input) in (theta, phi), h = (sin cos phi, sin sin phi, cos).
+ * D(cos) is conditioned by its input as GGX's is (a relative 2^-53 in cos
+ * theta moves these D by up to about 2^-50 / alpha^2, times gamma for GTR),
+ * hence the same tolerance form. */
 typedef struct {
-    int which; /* 0 Blinn-Phong, 1 Beckmann, 2 GTR, 3 aniso GGX (phi integrated inside) */
+    const facet_kernel *k;
     double alpha, gamma, ax, ay;
     const gl_rule *rphi;
 } dm_ctx;
 
-static double dm_phi_f(double phi, const void *c)
+static int is_d_term(const facet_kernel *k)
 {
-    const double *p = c; /* theta, ax, ay */
-    double st = sin(p[0]), ct = cos(p[0]);
-    return facet_oracle_ggx_aniso_d(ct, st * cos(phi), st * sin(phi), p[1], p[2]);
+    size_t n = strlen(k->name);
+    return n > 2 && !strcmp(k->name + n - 2, "_d");
+}
+
+static int has_input(const facet_kernel *k, const char *name)
+{
+    return smp_name_index(k->inputs, k->n_inputs, name) >= 0;
+}
+
+/* the kernel's oracle at h = (toh, boh, ct), the widths of the context */
+static double dm_d(const dm_ctx *c, double ct, double toh, double boh)
+{
+    double in[FACET_MAX_INPUTS];
+    int i;
+    for (i = 0; i < c->k->n_inputs; i++) {
+        const char *n = c->k->inputs[i];
+        in[i] = !strcmp(n, "noh") ? ct : !strcmp(n, "toh") ? toh : !strcmp(n, "boh") ? boh
+              : !strcmp(n, "gamma") ? c->gamma : !strcmp(n, "alpha_x") ? c->ax
+              : !strcmp(n, "alpha_y") ? c->ay : c->alpha;
+    }
+    return c->k->oracle(in);
+}
+
+typedef struct {
+    const dm_ctx *c;
+    double theta;
+} dm_phi_ctx;
+
+static double dm_phi_f(double phi, const void *ctx)
+{
+    const dm_phi_ctx *p = ctx;
+    double st = sin(p->theta), ct = cos(p->theta);
+    return dm_d(p->c, ct, st * cos(phi), st * sin(phi));
 }
 
 static double dm_f(double th, const void *c)
 {
     const dm_ctx *k = c;
-    double ct = cos(th), st = sin(th), d;
-    if (k->which == 0)
-        d = facet_oracle_blinn_phong_d(ct, k->alpha);
-    else if (k->which == 1)
-        d = facet_oracle_beckmann_d(ct, k->alpha);
-    else if (k->which == 2)
-        d = facet_oracle_gtr_d(ct, k->alpha, k->gamma);
-    else {
-        double p[3], s = 0.0;
+    double ct = cos(th), st = sin(th);
+    if (has_input(k->k, "toh")) {
+        dm_phi_ctx p;
+        double s = 0.0;
         int j;
-        p[0] = th;
-        p[1] = k->ax;
-        p[2] = k->ay;
+        p.c = k;
+        p.theta = th;
         for (j = 0; j < 8; j++) /* 8 panels over [0, 2 pi] */
-            s += gl_int(dm_phi_f, p, j * M_PI / 4, (j + 1) * M_PI / 4, k->rphi);
+            s += gl_int(dm_phi_f, &p, j * M_PI / 4, (j + 1) * M_PI / 4, k->rphi);
         return s * ct * st;
     }
-    return 2.0 * M_PI * d * ct * st;
+    return 2.0 * M_PI * dm_d(k, ct, 0.0, 0.0) * ct * st;
 }
 
 static void check_d_menu(void)
 {
-    static const char *const names[3] = { "blinn_phong_d", "beckmann_d", "gtr_d" };
     static const double gammas[] = { 0.0, 0.25, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 4.0 };
     static const double aniso[][2] = { { 0.05, 0.3 }, { 0.2, 0.8 }, { 1.0, 0.5 }, { 0.01, 0.02 },
                                        { 0.6, 0.6 } };
     agg an, ag2, ag1, aa;
-    int w, i, g;
-    printf("1b. D normalisation of blinn_phong_d, beckmann_d, gtr_d (gamma 0 .. 4), ggx_aniso_d\n");
-    agg_init(&an, "D normalisation (Blinn-Phong, Beckmann, GTR), |I - 1| - input-rounding bound", 1e-12);
-    for (w = 0; w < 3; w++)
-        for (g = 0; g < (w == 2 ? (int)(sizeof gammas / sizeof gammas[0]) : 1); g++)
+    size_t ki;
+    int i, g, nd = 0;
+    printf("1b. D normalisation of every D term of the table:");
+    for (ki = 0; ki < facet_kernel_count(); ki++)
+        if (is_d_term(facet_kernel_at(ki)))
+            printf(" %s", facet_kernel_at(ki)->name);
+    printf(" (gamma 0 .. 4)\n");
+    agg_init(&an, "D normalisation (isotropic D terms), |I - 1| - input-rounding bound", 1e-12);
+    agg_init(&aa, "D normalisation (anisotropic D terms), |I - 1|", 1e-10);
+    for (ki = 0; ki < facet_kernel_count(); ki++) {
+        const facet_kernel *d = facet_kernel_at(ki);
+        int ng = has_input(d, "gamma") ? (int)(sizeof gammas / sizeof gammas[0]) : 1;
+        if (!is_d_term(d))
+            continue;
+        nd++;
+        if (has_input(d, "toh")) {
+            for (i = 0; i < (int)(sizeof aniso / sizeof aniso[0]); i++) {
+                double bp[32], I;
+                dm_ctx k;
+                int n = peak_breaks(fmin(aniso[i][0], aniso[i][1]), bp);
+                memset(&k, 0, sizeof k);
+                k.k = d;
+                k.ax = aniso[i][0];
+                k.ay = aniso[i][1];
+                k.rphi = &R32;
+                I = gl_panels(dm_f, &k, bp, n, -1.0, &R32);
+                printf("   %-14s ax %-6g ay %-6g I - 1 = %.3g\n", d->name, k.ax, k.ay, I - 1.0);
+                agg_add(&aa, fabs(I - 1.0), "%s ax %g ay %g: I = %.17g", d->name, k.ax, k.ay, I);
+            }
+            continue;
+        }
+        for (g = 0; g < ng; g++)
             for (i = 0; i < 8; i++) {
                 double alpha = exp2(-10.0 + 10.0 * i / 7.0), bp[32], I, tol;
                 dm_ctx k;
                 int n = peak_breaks(alpha, bp);
                 memset(&k, 0, sizeof k);
-                k.which = w;
+                k.k = d;
                 k.alpha = alpha;
                 k.gamma = gammas[g];
                 I = gl_panels(dm_f, &k, bp, n, -1.0, &R32);
                 tol = 4.0 * 0x1p-50 / (alpha * alpha);
                 if (i == 7 || (i % 3) == 0)
-                    printf("   %-14s gamma %-5.3g alpha %-10.4g I - 1 = %.3g\n", names[w], w == 2 ? gammas[g] : 0.0,
+                    printf("   %-14s gamma %-5.3g alpha %-10.4g I - 1 = %.3g\n", d->name, ng > 1 ? gammas[g] : 0.0,
                            alpha, I - 1.0);
-                agg_add(&an, fabs(I - 1.0) - tol, "%s alpha %.6g gamma %g: I = %.17g", names[w], alpha,
+                agg_add(&an, fabs(I - 1.0) - tol, "%s alpha %.6g gamma %g: I = %.17g", d->name, alpha,
                         gammas[g], I);
             }
-    agg_done(&an);
-
-    agg_init(&aa, "D normalisation (anisotropic GGX), |I - 1|", 1e-10);
-    for (i = 0; i < (int)(sizeof aniso / sizeof aniso[0]); i++) {
-        double bp[32], I;
-        dm_ctx k;
-        int n = peak_breaks(fmin(aniso[i][0], aniso[i][1]), bp);
-        memset(&k, 0, sizeof k);
-        k.which = 3;
-        k.ax = aniso[i][0];
-        k.ay = aniso[i][1];
-        k.rphi = &R32;
-        I = gl_panels(dm_f, &k, bp, n, -1.0, &R32);
-        printf("   ggx_aniso_d    ax %-6g ay %-6g I - 1 = %.3g\n", k.ax, k.ay, I - 1.0);
-        agg_add(&aa, fabs(I - 1.0), "ax %g ay %g: I = %.17g", k.ax, k.ay, I);
     }
+    CHECK(nd > 0, "no D term (a kernel named *_d) in the table");
+    agg_done(&an);
     agg_done(&aa);
 
     /* GTR at gamma = 2 is GGX; near gamma = 1 it meets its limit; at gamma =
@@ -721,22 +727,40 @@ static void check_fresnel(void)
  *   Burley at N.V = 1 (L.H^2 = (1 + mu)/2): 1 - 1/42 + 5 sqrt(alpha) / 84
  *     (int (1-mu)^5 mu = 1/42, int (1-mu)^5 mu^2 = 1/168);
  *   Oren-Nayar at N.V = 1 (its max(0, ..) term vanishes): A(alpha);
- *   the smooth part of Hammon's hybrid (affine in alpha: extrapolated to
- *   alpha = 0): (1 - (1 - N.V)^5 / 2)(1 - 1/42); of the cheap one: 1. */
-typedef double (*diffuse_fn)(double, double, double, double, double);
-
-static double burley_lv(double nl, double nv, double lv, double a, double rho)
+ *   the smooth part of Hammon's diffuse (affine in alpha: extrapolated to
+ *   alpha = 0): 1 - (1 - N.V)^5 (section 4's); of the hybrid:
+ *   (1 - (1 - N.V)^5 / 2)(1 - 1/42); of the cheap one: 1.
+ * The models are the table's diffuse kernels (below); those closed forms
+ * are their golden values, kept per model in furnace_golden. */
+/* A diffuse model: a kernel of the table whose inputs are the geometry
+ * (N.L, N.V, and L.V or L.H), alpha and albedo only, and that has an albedo */
+static int is_diffuse_model(const facet_kernel *k)
 {
-    return facet_oracle_diffuse_burley(nl, nv, sqrt(0.5 * (1.0 + lv)), a, rho);
+    static const char *const ok[] = { "nol", "nov", "lov", "loh", "alpha", "albedo" };
+    int i, j, fine = 1;
+    for (i = 0; i < k->n_inputs; i++) {
+        int known = 0;
+        for (j = 0; j < (int)(sizeof ok / sizeof ok[0]); j++)
+            known |= !strcmp(k->inputs[i], ok[j]);
+        fine &= known;
+    }
+    return fine && has_input(k, "albedo");
 }
 
-static double lambert5(double nl, double nv, double lv, double a, double rho)
+/* the model's oracle at (N.L, N.V, L.V), its inputs by name (L.H from L.V) */
+static double diffuse_at(const facet_kernel *k, double nl, double nv, double lv, double a, double rho)
 {
-    (void)nl; (void)nv; (void)lv; (void)a;
-    return facet_oracle_lambert(rho);
+    double in[FACET_MAX_INPUTS];
+    int i;
+    for (i = 0; i < k->n_inputs; i++) {
+        const char *n = k->inputs[i];
+        in[i] = !strcmp(n, "nol") ? nl : !strcmp(n, "nov") ? nv : !strcmp(n, "lov") ? lv
+              : !strcmp(n, "loh") ? sqrt(0.5 * (1.0 + lv)) : !strcmp(n, "alpha") ? a : rho;
+    }
+    return k->oracle(in);
 }
 
-static double dir_albedo(diffuse_fn f, double nv, double a, int nmu, int nphi)
+static double dir_albedo(const facet_kernel *f, double nv, double a, int nmu, int nphi)
 {
     double sv = sqrt((1.0 - nv) * (1.0 + nv)), sum = 0.0, bp[3];
     int p, i, ip;
@@ -759,7 +783,7 @@ static double dir_albedo(diffuse_fn f, double nv, double a, int nmu, int nphi)
             for (ip = 0; ip < 2 * rp.n; ip++) {
                 double phi = 0.25 * M_PI * (1.0 + rp.x[ip % rp.n]) + (ip < rp.n ? 0.0 : 0.5 * M_PI);
                 row += 0.25 * M_PI * rp.w[ip % rp.n]
-                       * f(fmax(mu, FACET_COS_MIN), nv, fmin(fmax(mu * nv + sl * sv * cos(phi), -1.0), 1.0), a, 1.0);
+                       * diffuse_at(f, fmax(mu, FACET_COS_MIN), nv, fmin(fmax(mu * nv + sl * sv * cos(phi), -1.0), 1.0), a, 1.0);
             }
             sum += 0.5 * (hi - lo) * r.w[i] * mu * sl * 2.0 * row;
         }
@@ -767,56 +791,94 @@ static double dir_albedo(diffuse_fn f, double nv, double a, int nmu, int nphi)
     return sum;
 }
 
+/* The furnace's golden values per diffuse model: the closed form of its
+ * directional albedo where it has one (at N.V = 1 only, or at every N.V),
+ * and that of its smooth part (models affine in alpha: extrapolated to
+ * alpha = 0 from alpha_min and 2 alpha_min).  Every diffuse model of the
+ * table has an entry (checked). */
+static double al_lambert(double nv, double a) { (void)nv; (void)a; return 1.0; }
+static double al_burley_nv1(double nv, double a)
+{
+    return nv == 1.0 ? 1.0 - 1.0 / 42.0 + 5.0 * sqrt(a) / 84.0 : NAN;
+}
+static double al_oren_nayar_nv1(double nv, double a)
+{
+    double s2 = 0.25 * a * a;
+    return nv == 1.0 ? 1.0 - 0.5 * s2 / (s2 + 0.33) : NAN;
+}
+static double sm_hammon(double nv) { return 1.0 - pow(1.0 - nv, 5.0); }
+static double sm_hybrid(double nv) { return (1.0 - 0.5 * pow(1.0 - nv, 5.0)) * (1.0 - 1.0 / 42.0); }
+static double sm_cheap(double nv) { (void)nv; return 1.0; }
+
+static const struct {
+    const char *name;
+    double (*albedo)(double nv, double alpha); /* NaN where it has none */
+    double tol;
+    double (*smooth)(double nv);
+} furnace_golden[] = {
+    { "lambert", al_lambert, 1e-12, NULL },
+    { "diffuse_hammon", NULL, 0, sm_hammon },
+    { "diffuse_burley", al_burley_nv1, 1e-10, NULL },
+    { "diffuse_oren_nayar", al_oren_nayar_nv1, 1e-10, NULL },
+    { "diffuse_hammon_hybrid", NULL, 0, sm_hybrid },
+    { "diffuse_hammon_cheap", NULL, 0, sm_cheap },
+};
+#define N_FURNACE_GOLDEN ((int)(sizeof furnace_golden / sizeof furnace_golden[0]))
+
+static int furnace_entry(const char *name)
+{
+    int g;
+    for (g = 0; g < N_FURNACE_GOLDEN; g++)
+        if (!strcmp(furnace_golden[g].name, name))
+            return g;
+    return -1;
+}
+
 static void check_diffuse_furnace(void)
 {
-    static const struct { const char *name; diffuse_fn f; } m[] = {
-        { "lambert", lambert5 }, { "diffuse_hammon", facet_oracle_diffuse_hammon },
-        { "diffuse_burley", burley_lv }, { "diffuse_oren_nayar", facet_oracle_diffuse_oren_nayar },
-        { "diffuse_hammon_hybrid", facet_oracle_diffuse_hammon_hybrid },
-        { "diffuse_hammon_cheap", facet_oracle_diffuse_hammon_cheap },
-    };
     static const double nvs[] = {1.0, 0.5, 0.1, 0.01};
     static const double as[] = {FACET_ALPHA_MIN, 0.25, 0.5, 1.0};
     double worst_q = 0.0;
     size_t i, j, l;
-    int nphi = 24;
+    int nphi = 24, g;
     printf("4c. white furnace: directional albedo (albedo = 1) per diffuse model; rows N.V, columns alpha\n");
-    for (i = 0; i < sizeof m / sizeof m[0]; i++) {
+    for (g = 0; g < N_FURNACE_GOLDEN; g++) {
+        const facet_kernel *k = facet_kernel_find(furnace_golden[g].name);
+        CHECK(k && is_diffuse_model(k), "furnace golden values for '%s', which is no diffuse model of the table",
+              furnace_golden[g].name);
+    }
+    for (i = 0; i < facet_kernel_count(); i++) {
+        const facet_kernel *m = facet_kernel_at(i);
         double lo = INFINITY, hi = -INFINITY;
-        printf("   %-22s", m[i].name);
+        if (!is_diffuse_model(m))
+            continue;
+        g = furnace_entry(m->name);
+        CHECK(g >= 0, "diffuse model %s has no furnace golden values (tests/oracle/test_oracle.c, furnace_golden)",
+              m->name);
+        printf("   %-22s", m->name);
         for (j = 0; j < sizeof nvs / sizeof nvs[0]; j++) {
             printf("%s N.V %-4g:", j ? "\n                         " : "", nvs[j]);
             for (l = 0; l < sizeof as / sizeof as[0]; l++) {
-                double v = dir_albedo(m[i].f, nvs[j], as[l], 20, nphi);
-                double v2 = dir_albedo(m[i].f, nvs[j], as[l], 32, 32);
+                double v = dir_albedo(m, nvs[j], as[l], 20, nphi);
+                double v2 = dir_albedo(m, nvs[j], as[l], 32, 32);
+                double want = g >= 0 && furnace_golden[g].albedo ? furnace_golden[g].albedo(nvs[j], as[l]) : NAN;
                 worst_q = fmax(worst_q, fabs(v - v2));
                 printf(" %.4f", v2);
                 lo = fmin(lo, v2);
                 hi = fmax(hi, v2);
-                if (i == 0)
-                    CHECK(fabs(v2 - 1.0) <= 1e-12, "Lambert albedo %.17g, not 1", v2);
-                if (nvs[j] == 1.0 && !strcmp(m[i].name, "diffuse_burley")) {
-                    double want = 1.0 - 1.0 / 42.0 + 5.0 * sqrt(as[l]) / 84.0;
-                    CHECK(fabs(v2 - want) <= 1e-10, "Burley albedo at N.V = 1, alpha %g: %.15f vs %.15f", as[l], v2, want);
-                }
-                if (nvs[j] == 1.0 && !strcmp(m[i].name, "diffuse_oren_nayar")) {
-                    double s2 = 0.25 * as[l] * as[l], want = 1.0 - 0.5 * s2 / (s2 + 0.33);
-                    CHECK(fabs(v2 - want) <= 1e-10, "Oren-Nayar albedo at N.V = 1, alpha %g: %.15f vs A = %.15f", as[l], v2, want);
-                }
+                if (want == want)
+                    CHECK(fabs(v2 - want) <= furnace_golden[g].tol, "%s albedo at N.V = %g, alpha %g: %.15f vs %.15f",
+                          m->name, nvs[j], as[l], v2, want);
             }
         }
         printf("\n   %-22s range over these: [%.4f, %.4f]\n", "", lo, hi);
-    }
-    /* the smooth parts of Hammon's variants, extrapolated to alpha = 0 */
-    for (j = 0; j < sizeof nvs / sizeof nvs[0]; j++) {
-        double a1 = FACET_ALPHA_MIN;
-        double hy = 2.0 * dir_albedo(facet_oracle_diffuse_hammon_hybrid, nvs[j], a1, 32, nphi)
-                    - dir_albedo(facet_oracle_diffuse_hammon_hybrid, nvs[j], 2.0 * a1, 32, nphi);
-        double ch = 2.0 * dir_albedo(facet_oracle_diffuse_hammon_cheap, nvs[j], a1, 32, nphi)
-                    - dir_albedo(facet_oracle_diffuse_hammon_cheap, nvs[j], 2.0 * a1, 32, nphi);
-        double want = (1.0 - 0.5 * pow(1.0 - nvs[j], 5.0)) * (1.0 - 1.0 / 42.0);
-        CHECK(fabs(hy - want) <= 1e-9, "hybrid smooth albedo at N.V = %g: %.15f vs %.15f", nvs[j], hy, want);
-        CHECK(fabs(ch - 1.0) <= 1e-9, "cheap smooth albedo at N.V = %g: %.15f vs 1", nvs[j], ch);
+        /* the smooth part, extrapolated to alpha = 0 */
+        for (j = 0; g >= 0 && furnace_golden[g].smooth && j < sizeof nvs / sizeof nvs[0]; j++) {
+            double a1 = FACET_ALPHA_MIN;
+            double sm = 2.0 * dir_albedo(m, nvs[j], a1, 32, nphi) - dir_albedo(m, nvs[j], 2.0 * a1, 32, nphi);
+            double want = furnace_golden[g].smooth(nvs[j]);
+            CHECK(fabs(sm - want) <= 1e-9, "%s smooth albedo at N.V = %g: %.15f vs %.15f", m->name, nvs[j], sm, want);
+        }
     }
     printf("   quadrature: 20 vs 32 nodes per panel: max difference %.3g (tol 1e-5)\n", worst_q);
     CHECK(worst_q <= 1e-5, "furnace quadrature not converged: %.3g", worst_q);
@@ -852,45 +914,28 @@ static void rnd_triple(smp_rng *r, double *nl, double *nv, double *lv)
         *lv = 2.0 * smp_u01(r) - 1.0;
 }
 
-/* ---- 5. reciprocity: every (nol, nov, ...) term is symmetric in L and V --- */
-static const char *const sym_names[] = {
-    "noh_from_dots", "smith_g2", "smith_g2_uncorrelated", "smith_vis", "smith_g2_hammon",
-    "smith_vis_hammon", "diffuse_hammon", "brdf_hammon", "diffuse_burley", "diffuse_oren_nayar",
-    "diffuse_hammon_hybrid", "diffuse_hammon_cheap", "g_implicit", "g_neumann", "g_cook_torrance",
-    "g_kelemen", "smith_vis_joint_approx", "smith_vis_fit",
-};
-
-static int input_index(const facet_kernel *k, const char *name)
-{
-    int i;
-    for (i = 0; i < k->n_inputs; i++)
-        if (!strcmp(k->inputs[i], name))
-            return i;
-    return -1;
-}
-
+/* ---- 5. reciprocity: every (nol, nov, ...) term is symmetric in L and V ---
+ * The terms: every kernel of the table with both an N.L and an N.V input;
+ * each seeded by its name (smp_name_seed), so that its samples stay when
+ * kernels are added. */
 static void check_symmetry(void)
 {
     long n = quick ? 4000 : 40000, j;
     size_t ki;
+    int n_terms = 0;
     printf("5. symmetry in L and V (swap N.L and N.V), %ld samples per kernel\n", n);
     printf("   %-22s %12s %14s %12s %12s\n", "kernel", "oracle max", "f32 bit-equal", "f32 max", "f32 bound");
-    for (ki = 0; ki < sizeof sym_names / sizeof sym_names[0]; ki++) {
-        const facet_kernel *k = facet_kernel_find(sym_names[ki]);
+    for (ki = 0; ki < facet_kernel_count(); ki++) {
+        const facet_kernel *k = facet_kernel_at(ki);
         double worst_o = 0.0, worst_f = 0.0, bound;
         long same = 0;
-        int il, iv;
+        int il = smp_name_index(k->inputs, k->n_inputs, "nol"), iv = smp_name_index(k->inputs, k->n_inputs, "nov");
         smp_rng rng;
-        CHECK(k != NULL, "kernel %s not in the table", sym_names[ki]);
-        if (!k)
-            continue;
-        il = input_index(k, "nol");
-        iv = input_index(k, "nov");
-        CHECK(il >= 0 && iv >= 0, "kernel %s has no nol/nov inputs", k->name);
         if (il < 0 || iv < 0)
-            continue;
+            continue; /* not a term of N.L and N.V */
+        n_terms++;
         bound = 2.0 * k->err_f32; /* each side within err of the (symmetric) oracle */
-        rng.s = 0x5e11 + ki;
+        rng.s = 0x5e11 ^ smp_name_seed(k->name);
         for (j = 0; j < n; j++) {
             double din[FACET_MAX_INPUTS], dsw[FACET_MAX_INPUTS], nl, nv, lv, a, b;
             float fin[FACET_MAX_INPUTS], fsw[FACET_MAX_INPUTS], fa, fb;
@@ -931,6 +976,31 @@ static void check_symmetry(void)
         CHECK(worst_o <= 1e-15, "oracle %s not symmetric in N.L, N.V: rel %.3g", k->name, worst_o);
         CHECK(worst_f <= bound, "f32 %s: |f(l,v) - f(v,l)| %.3g > 2 err bound %.3g", k->name, worst_f, bound);
     }
+    CHECK(n_terms > 0, "no kernel of N.L and N.V in the table");
+}
+
+/* ---- 11. named points: the oracle at every golden value -------------------
+ * tests/lib/golden.h: per kernel, points where the contract's formula is
+ * written out in closed form; every kernel of the table has one. */
+static void check_named_points(void)
+{
+    agg ap;
+    size_t j, count;
+    const golden_point *gt = golden_table(&count);
+    golden_covers();
+    agg_init(&ap, "oracle at the named points of tests/lib/golden.h, relative (absolute at 0)", GOLDEN_ORACLE_TOL);
+    for (j = 0; j < count; j++) {
+        const golden_point *g = &gt[j];
+        const facet_kernel *k = facet_kernel_find(g->kernel);
+        double got;
+        if (!k)
+            continue;
+        got = k->oracle(g->in);
+        agg_add(&ap, g->want != 0 ? fabs(got - g->want) / fabs(g->want) : fabs(got), "%s point %d: %.17g vs %.17g",
+                g->kernel, (int)j, got, g->want);
+    }
+    printf("11. named points (tests/lib/golden.h): %d points, every kernel of the table; max rel %.3g (tol %.0e)\n",
+           (int)count, agg_done(&ap), GOLDEN_ORACLE_TOL);
 }
 
 /* ---- 6. height correlation can only increase G2 ---------------------------
@@ -1427,5 +1497,6 @@ int main(void)
     check_ill_conditioned();
     check_end_points();
     check_antipodal();
+    check_named_points();
     return th_done();
 }

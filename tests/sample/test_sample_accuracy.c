@@ -15,13 +15,6 @@
 
 #define NOUT FACET_SAMPLER_MAX_OUTPUTS
 #define NIN FACET_SAMPLER_MAX_INPUTS
-#define ERR_FLOOR 0x1p-100
-#define ERR_FLOOR_FTZ 0x1p-60
-#if defined(__arm__) && !defined(__aarch64__)
-#define FTZ_TARGET 1 /* armv7 NEON flushes denormals */
-#else
-#define FTZ_TARGET 0
-#endif
 
 static int is_sampler(const facet_sampler *k) { return strstr(k->name, "sample") != NULL; }
 
@@ -75,7 +68,7 @@ int main(int argc, char **argv)
                 if (!sup)
                     continue;
                 CHECK(facet_set_port(pn) == 0, "cannot select port %s", pn);
-                ftz = !strcmp(pn, "neon") && FTZ_TARGET;
+                ftz = smp_port_flushes_denormals();
                 (tier ? k->f32_fast_batch : k->f32_batch)(out, (const float *const *)in, (size_t)n);
                 for (j = 0; j < n; j++) {
                     double e = 0;
@@ -97,7 +90,7 @@ int main(int argc, char **argv)
                         }
                     } else {
                         double w = want[0][j], g = out[0][j];
-                        double fl = ftz ? ERR_FLOOR_FTZ : ERR_FLOOR;
+                        double fl = ftz ? SMP_ERR_FLOOR_FTZ : SMP_ERR_FLOOR;
                         e = (fabs(w) < fl ? fabs(g - w) / fl : fabs(g - w) / fabs(w)) / cond[j];
                         if (!(g == g))
                             e = INFINITY;

@@ -12,32 +12,10 @@
 #include <stdlib.h>
 #include "../lib/harness.h"
 #include "../lib/sample_common.h"
+#include "../lib/quad.h"
 
-#define GL_N 8
 static const double PI_ = 3.14159265358979323846;
-static double gl_x[GL_N], gl_w[GL_N];
-
-static void gl_init(void)
-{
-    int i, j;
-    for (i = 0; i < GL_N; i++) {
-        double x = cos(PI_ * (i + 0.75) / (GL_N + 0.5)), p0 = 1, p1 = x, dp = 1;
-        for (j = 0; j < 100; j++) {
-            int k;
-            p0 = 1;
-            p1 = x;
-            for (k = 2; k <= GL_N; k++) {
-                double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = GL_N * (x * p1 - p0) / (x * x - 1);
-            x -= p1 / dp;
-        }
-        gl_x[i] = x;
-        gl_w[i] = 2 / ((1 - x * x) * dp * dp);
-    }
-}
+static gl_rule GL8;
 
 /* the integrand over h: f(l, v) N.L 4 V.H with f = D Vis from the f32 kernels */
 static double integrand(const double v[3], const double h[3], float a)
@@ -51,29 +29,31 @@ static double integrand(const double v[3], const double h[3], float a)
     return (double)facet_ggx_d_f32((float)h[2], a) * facet_smith_vis_f32((float)lz, (float)v[2], a) * lz * 4 * vh;
 }
 
+typedef struct {
+    const double *v;
+    float a;
+    double sum;
+} quad_ctx;
+
+static void quad_node(const double h[3], double weight, void *ctx)
+{
+    quad_ctx *c = ctx;
+    c->sum += weight * integrand(c->v, h, c->a);
+}
+
 static double quadrature(const double v[3], float a)
 {
     const int NW = 96, NF = 96;
-    double sum = 0;
-    int iw, ip, i, k;
+    quad_ctx c;
+    int iw, ip;
+    c.v = v;
+    c.a = a;
+    c.sum = 0;
     for (iw = 0; iw < NW; iw++)
-        for (ip = 0; ip < NF; ip++) {
-            double wa = (double)iw / NW, wb = (double)(iw + 1) / NW;
-            double fa = 2 * PI_ * ip / NF, fb = 2 * PI_ * (ip + 1) / NF;
-            for (i = 0; i < GL_N; i++)
-                for (k = 0; k < GL_N; k++) {
-                    double w = 0.5 * (wa + wb) + 0.5 * (wb - wa) * gl_x[i];
-                    double f = 0.5 * (fa + fb) + 0.5 * (fb - fa) * gl_x[k];
-                    /* q = 1 - w^2, tan^2 = a^2 q / w^2, |dcos/dw| = c^3 a^2 / w^3 */
-                    double q = 1 - w * w, t2 = (double)a * a * q / (w * w), c = 1 / sqrt(1 + t2);
-                    double s = sqrt(t2) * c, h[3], jac = c * c * c * a * a / (w * w * w);
-                    h[0] = s * cos(f);
-                    h[1] = s * sin(f);
-                    h[2] = c;
-                    sum += gl_w[i] * gl_w[k] * 0.25 * (wb - wa) * (fb - fa) * jac * integrand(v, h, a);
-                }
-        }
-    return sum;
+        for (ip = 0; ip < NF; ip++)
+            gl_q_cell(&GL8, a, (double)iw / NW, (double)(iw + 1) / NW, 2 * PI_ * ip / NF, 2 * PI_ * (ip + 1) / NF,
+                      quad_node, &c);
+    return c.sum;
 }
 
 int main(void)
@@ -89,7 +69,7 @@ int main(void)
     float *pdf = malloc(n * sizeof(float)), *d = malloc(n * sizeof(float)), *vis = malloc(n * sizeof(float));
     size_t ia, iv;
     th_name = "sample_furnace";
-    gl_init();
+    gl_make(&GL8, 8);
     printf("port %s, %ld samples each\n| alpha | view (deg) | MC | std err | quadrature | (MC - Q) / SE |\n|---|---|---|---|---|---|\n",
            facet_port_name(), n);
     for (ia = 0; ia < sizeof alphas / sizeof alphas[0]; ia++)

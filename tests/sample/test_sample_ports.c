@@ -11,8 +11,9 @@
 #include <float.h>
 #include "../lib/harness.h"
 #include "../lib/sample_common.h"
+#include "../lib/batch_check.h"
 
-#define MAXN 256
+#define MAXN BC_MAXN
 #define NIN FACET_SAMPLER_MAX_INPUTS
 #define NOUT FACET_SAMPLER_MAX_OUTPUTS
 
@@ -23,8 +24,8 @@ static int is_sampler(const facet_sampler *k) { return strstr(k->name, "sample")
 
 /* runs k on n samples of src (SoA, stride MAXN) from `first`, inputs copied to
  * exactly-sized buffers at float offset `mis`; alias: output o written over input o */
-static void run(const facet_sampler *k, float src[][MAXN], int first, int n, int mis, int alias,
-                float out[][MAXN])
+static void run_alias(const facet_sampler *k, float src[][MAXN], int first, int n, int mis, int alias,
+                      float out[][MAXN])
 {
     float *in[NIN], *o[NOUT];
     int i;
@@ -43,6 +44,12 @@ static void run(const facet_sampler *k, float src[][MAXN], int first, int n, int
     }
     for (i = 0; i < k->n_inputs; i++)
         free(in[i] - mis);
+}
+
+/* the same without aliasing (tests/lib/batch_check.h's run) */
+static void run(const void *ctx, float src[][MAXN], int first, int n, int mis, float out[][MAXN])
+{
+    run_alias(ctx, src, first, n, mis, 0, out);
 }
 
 static float bad_value(smp_rng *r)
@@ -89,9 +96,9 @@ static void test_port(const char *port, int lanes)
     for (ki = 0; ki < facet_sampler_count(); ki++) {
         const facet_sampler *k = facet_sampler_at(ki);
         smp_rng rng = { 4242 + ki };
-        long bad_fin = 0, bad_unit = 0, bad_z = 0, bad_neg = 0, bad_sub = 0, bad_lane = 0, bad_tail = 0,
-             bad_align = 0, bad_alias = 0, rep;
-        int i, j, n, o;
+        long bad_fin = 0, bad_unit = 0, bad_z = 0, bad_neg = 0, bad_sub = 0, bad_alias = 0, rep;
+        bc_counts bc;
+        int i, j, o;
         /* the bad-input contract: 64 batches of mixed special and valid values */
         for (rep = 0; rep < 64; rep++) {
             for (j = 0; j < MAXN; j++) {
@@ -100,7 +107,7 @@ static void test_port(const char *port, int lanes)
                 for (i = 0; i < k->n_inputs; i++)
                     src[i][j] = (smp_next(&rng) & 1) ? bad_value(&rng) : x[i];
             }
-            run(k, src, 0, MAXN, 0, 0, out);
+            run(k, src, 0, MAXN, 0, out);
             for (j = 0; j < MAXN; j++) {
                 double l2 = 0;
                 for (o = 0; o < k->n_outputs; o++) {
@@ -118,7 +125,7 @@ static void test_port(const char *port, int lanes)
             for (j = 0; j < MAXN; j++)
                 for (i = 0; i < k->n_inputs; i++)
                     src[i][j] = substitute(k, i, src[i][j]);
-            run(k, src, 0, MAXN, 0, 0, ref);
+            run(k, src, 0, MAXN, 0, ref);
             for (j = 0; j < MAXN; j++)
                 for (o = 0; o < k->n_outputs; o++)
                     bad_sub += !same(out[o][j], ref[o][j]);
@@ -136,40 +143,15 @@ static void test_port(const char *port, int lanes)
             for (i = 0; i < k->n_inputs; i++)
                 src[i][j] = x[i];
         }
-        run(k, src, 0, MAXN, 0, 0, ref);
-        for (j = 0; j < 3 * lanes; j++) {
-            float save[NIN];
-            for (i = 0; i < k->n_inputs; i++) {
-                save[i] = src[i][100 + j];
-                src[i][100 + j] = src[i][0];
-            }
-            run(k, src, 100, 3 * lanes + 1, 0, 0, out);
-            for (o = 0; o < k->n_outputs; o++)
-                bad_lane += !same(out[o][j], ref[o][0]);
-            for (i = 0; i < k->n_inputs; i++)
-                src[i][100 + j] = save[i];
-        }
-        for (n = 0; n <= 3 * lanes + 1; n++)
-            for (j = 0; j < 3; j++) {
-                int first = j * 37 % (MAXN - n);
-                run(k, src, first, n, 0, 0, out);
-                for (i = 0; i < n; i++)
-                    for (o = 0; o < k->n_outputs; o++)
-                        bad_tail += !same(out[o][i], ref[o][first + i]);
-            }
-        for (j = 1; j < 8; j++) {
-            run(k, src, 0, 61, j, 0, out);
-            for (i = 0; i < 61; i++)
-                for (o = 0; o < k->n_outputs; o++)
-                    bad_align += !same(out[o][i], ref[o][i]);
-        }
-        run(k, src, 0, MAXN, 0, 1, out);
+        run(k, src, 0, MAXN, 0, ref);
+        bc = bc_mechanics(run, k, k->n_inputs, k->n_outputs, lanes, src, ref);
+        run_alias(k, src, 0, MAXN, 0, 1, out);
         for (i = 0; i < MAXN; i++)
             for (o = 0; o < k->n_outputs; o++)
                 bad_alias += !same(out[o][i], ref[o][i]);
-        CHECK(bad_lane + bad_tail + bad_align + bad_alias == 0,
+        CHECK(bc.lane + bc.tail + bc.align + bad_alias == 0,
               "%s%s on %s: lane %ld, tail %ld, alignment %ld, aliasing %ld mismatches", k->name,
-              tier ? " (fast)" : "", port, bad_lane, bad_tail, bad_align, bad_alias);
+              tier ? " (fast)" : "", port, bc.lane, bc.tail, bc.align, bad_alias);
     }
 
     /* v below the horizon is sampled as v.z = 0; gamma NaN as gamma = 2 */
@@ -189,10 +171,10 @@ static void test_port(const char *port, int lanes)
             src[4][j] = x[4];
             src[5][j] = x[5];
         }
-        run(k, src, 0, MAXN, 0, 0, out);
+        run(k, src, 0, MAXN, 0, out);
         for (j = 0; j < MAXN; j++)
             src[2][j] = 0.0f;
-        run(k, src, 0, MAXN, 0, 0, ref);
+        run(k, src, 0, MAXN, 0, ref);
         for (j = 0; j < MAXN; j++)
             for (o = 0; o < 3; o++)
                 bad += !same(out[o][j], ref[o][j]);
@@ -204,10 +186,10 @@ static void test_port(const char *port, int lanes)
             src[2][j] = smp_alpha(&rng);
             src[3][j] = (float)NAN;
         }
-        run(g, src, 0, MAXN, 0, 0, out);
+        run(g, src, 0, MAXN, 0, out);
         for (j = 0; j < MAXN; j++)
             src[3][j] = 2.0f;
-        run(g, src, 0, MAXN, 0, 0, ref);
+        run(g, src, 0, MAXN, 0, ref);
         for (j = 0; j < MAXN; j++)
             for (o = 0; o < 3; o++)
                 bad += !same(out[o][j], ref[o][j]);

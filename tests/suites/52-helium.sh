@@ -46,7 +46,7 @@ m55() { # m55 DIR LABEL HELIUM_CC TESTS...
     done
 }
 m55 build/m55 helium arm-none-eabi-gcc test_f32_ports test_f32_accuracy test_fx_ports test_fx_hash \
-    test_sample_ports test_f32_bad_input test_f32_rgb test_fx_rgb test_tails
+    test_sample_ports test_sample_small test_f32_bad_input test_f32_rgb test_fx_rgb test_tails
 if have clang; then
     m55 build/m55-clang helium-clang clang test_f32_ports test_f32_accuracy test_fx_ports test_sample_ports
 else

@@ -36,7 +36,7 @@ have qemu-riscv64 || skip "qemu-riscv64 not installed (apt-get install qemu-user
 have clang || skip "clang not installed (apt-get install clang: the RVV intrinsics; gcc 12 has none)"
 sysroot=/usr/riscv64-linux-gnu
 dir=build/rv64
-tests="test_f32_ports test_f32_accuracy test_fx_ports test_fx_hash test_sample_ports test_f32_bad_input test_f32_rgb
+tests="test_f32_ports test_f32_accuracy test_fx_ports test_fx_hash test_sample_ports test_sample_small test_f32_bad_input test_f32_rgb
        test_tails_rvv"
 bins=""
 for t in $tests; do bins="$bins $dir/tests/$t"; done

@@ -183,21 +183,16 @@ awk '/^### whole BRDF/ { f = 1 } f && /^\| NEON \(aarch64, Cortex-A57 model\) \|
 awk '/^### whole BRDF/ { f = 1 } f && /^\| Helium \(Cortex-M55\) \| 0 \| not costed: skipped: a 60-bench fixture reason \|/ { g = 1 } END { exit !g }' $r/bench.md &&
     ok || bad "chooser: no Helium row stating why it was not costed"
 grep -q 'Helium: skipped: a 60-bench fixture reason' $r/bench.md && ok || bad "chooser: the Helium status is not stated"
-# the menu's variants in image space: one row per variant (names from the
-# menu, the ones this build has), numbers in every measured cell, no inf or
-# nan, a model error wherever the variant approximates a reference, and the
-# labelled figure of the model rows
+# the menu's variants in image space: one row per variant (the variants the
+# report's per-kernel table names, bench/report/kernel_facts.c), numbers in
+# every measured cell, no inf or nan, a model error wherever the variant
+# approximates a reference, and the labelled figure of the model rows
 sed -n '/^### The menu.s variants in image space/,/^#/p' $r/bench.md > $r/variants.md
-for v in 'ggx_d' 'blinn_phong_d' 'beckmann_d' 'ggx_aniso_d (alpha_y = alpha/2)' 'gtr_d (gamma 1)' 'gtr_d (gamma 1.5)' \
-         'gtr_d (gamma 2)' 'gtr_d (gamma 3)' smith_vis smith_vis_hammon smith_vis_joint_approx smith_vis_fit smith_g2 \
-         smith_g2_hammon smith_g2_uncorrelated g_implicit g_neumann g_cook_torrance g_kelemen smith_g1 smith_g1_hammon \
-         smith_g1_beckmann smith_g1_schlick_beckmann 'smith_g1_gtr (gamma 1.5)' 'smith_g1_gtr (gamma 3)' \
-         fresnel_schlick 'fresnel_schlick_f90 (f90 = 1)' fresnel_schlick_sg fresnel_cook_torrance diffuse_hammon \
-         diffuse_hammon_hybrid diffuse_hammon_cheap diffuse_burley diffuse_oren_nayar lambert; do
-    k=${v%% *}
-    build/facet list | grep -q "^$k " || continue
+build/facet-bench report --facts | awk -F '\t' '$1 == "variant" { print $3 }' > $r/variants.want
+[ "$(wc -l < $r/variants.want)" -ge 30 ] && ok || bad "facet-bench report --facts lists $(wc -l < $r/variants.want) image-space variants"
+while IFS= read -r v; do
     grep -qF "| $v | " $r/variants.md && ok || bad "image-space variants: no row for '$v'"
-done
+done < $r/variants.want
 cell='[0-9]+ / [0-9]+ / [0-9]+\.[0-9][0-9][0-9] \([0-9]+\.[0-9][0-9]\)' # (no {n}: mawk has none)
 # columns: variant, term, f32, f32_fast, fx, fx_fast, model against, model error
 CELL="^$cell\$" awk 'BEGIN { c = ENVIRON["CELL"] } /^\| / && !/^\| variant / && !/^\|---/ {
@@ -218,6 +213,32 @@ grep -q '<b>Model error in image space: each variant against its exact reference
 grep -qE '^\| lambert \| any \| 1\.000[0-9] \| 1\.000[0-9] \| 1\.000[0-9] \|' $r/bench.md && ok ||
     bad "white furnace: Lambert's albedo is not 1"
 grep -qE '^\| diffuse_hammon \| 0\.3 \| ' $r/bench.md && ok || bad "white furnace: no diffuse_hammon row"
+# the report's per-kernel table (bench/report/kernel_facts.c: each kernel's
+# term, exact form or model, image-space variants) has one entry per kernel
+# of the list: the check passes on the library's list and fails on a list
+# with a kernel it has no entry for, or without one it has
+kernels=$(build/facet list | grep -v -- '->' | awk '{ print $1 }')
+build/facet-bench report --facts > /dev/null 2>&1 && ok || bad "facet-bench report --facts: the table does not match the kernel list"
+# shellcheck disable=SC2086
+build/facet-bench report --facts $kernels > /dev/null 2>&1 && ok || bad "facet-bench report --facts KERNELS... fails on the list itself"
+# shellcheck disable=SC2086
+build/facet-bench report --facts $kernels no_such_kernel > /dev/null 2> $r.facts.err; rc=$?
+[ $rc -eq 1 ] && grep -q 'no entry for kernel no_such_kernel' $r.facts.err && ok ||
+    bad "a kernel without an entry in kernel_facts.c passes the check (exit $rc)"
+# shellcheck disable=SC2086
+build/facet-bench report --facts $(printf '%s\n' $kernels | sed 1d) > /dev/null 2> $r.facts.err; rc=$?
+[ $rc -eq 1 ] && grep -q 'which the kernel list lacks' $r.facts.err && ok ||
+    bad "an entry for a kernel the list lacks passes the check (exit $rc)"
+# the measured set: a report rendered from the set the quick run recorded
+# (--replay OUTDIR/measured.tsv) is the quick run's report, byte for byte
+# (a measurement the set does not record would differ: timings vary)
+r2=build/bench-suite-replay
+rm -rf $r2 && mkdir -p $r2
+cp $r/accuracy.md $r/arm_vec.tsv $r/arm_vec.status $r2/
+if build/facet-bench report $r2 --replay $r/measured.tsv > $r2.log 2>&1; then ok; else bad "facet-bench report --replay failed (log $r2.log)"; fi
+for f in bench.md report.md index.html sampling.svg image_variants_model.png raster_oracle.png; do
+    cmp -s $r/$f $r2/$f && ok || bad "the replayed report's $f differs from the recorded run's"
+done
 # the report in a browser: no missing image, no script error; screenshot
 run_one report-browser sh tests/report/report_browser.sh $r
 echo "bench: $pass passed, $fail failed, 0 skipped"

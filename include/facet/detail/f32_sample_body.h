@@ -171,7 +171,11 @@ FACET_INLINE V_ FACET_K(ggx_pdf_d_aniso)(V_ hx, V_ hy, V_ hz, V_ alpha_x, V_ alp
     V_ ax = FACET_K(x_alpha)(alpha_x), ay = FACET_K(x_alpha)(alpha_y), a3;
     V_ z = FACET_K(x_unit)(hz);
     V_ K = S_ANISO_K_(CLAMP_(hx, C_(-1.0f), C_(1.0f)), CLAMP_(hy, C_(-1.0f), C_(1.0f)), z, ax, ay, &a3);
-    return MUL_(MUL_(MUL_(z, C_(S_INV_PI_)), a3), RCP_(MUL_(K, K)));
+    /* a3 / K^2 first: it lies in [2^-65, 2^22] (K in [a2 / 2, 3]), so the
+     * products with h.z and 1/pi underflow only where the pdf itself does
+     * (h.z first would take h.z ax^3 ay^3 below 2^-126 for pdfs far above
+     * the 2^-100 floor) */
+    return MUL_(MUL_(z, MUL_(a3, RCP_(MUL_(K, K)))), C_(S_INV_PI_));
 }
 
 /* ---- visible normals (VNDF) ---------------------------------------------
@@ -310,8 +314,10 @@ FACET_INLINE V_ FACET_K(ggx_pdf_vndf_aniso)(V_ vx, V_ vy, V_ vz, V_ hx, V_ hy, V
     V_ den = MAX_(ADD_(cz, FACET_K(x_sqrt)(MAX_(w, C_(7.88860905e-31f)))), C_(9.53674316e-07f));
     V_ vh = MAX_(FMA_(cx, gx, FMA_(cy, gy, MUL_(cz, gz))), C_(0.0f));
     V_ a3, K = S_ANISO_K_(gx, gy, gz, ax, ay, &a3);
-    /* pdf = 2 vh D / den, D = ax^3 ay^3 / (pi K^2): one reciprocal */
-    return MUL_(MUL_(MUL_(vh, C_(2.0f * S_INV_PI_)), a3), RCP_(MUL_(MUL_(K, K), den)));
+    /* pdf = 2 vh D / den, D = ax^3 ay^3 / (pi K^2): one reciprocal, and
+     * a3 / (K^2 den) first (in [2^-70, 2^42]: K^2 den >= 2^-102), so that
+     * vh times it underflows only where the pdf does */
+    return MUL_(MUL_(vh, MUL_(a3, RCP_(MUL_(MUL_(K, K), den)))), C_(2.0f * S_INV_PI_));
 }
 
 /* l = 2 (v.h) h - v, components clamped to [-1, 1] first (NaN -> -1). */

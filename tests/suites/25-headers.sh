@@ -1,0 +1,57 @@
+# Every installed header compiles on its own, in a translation unit that
+# includes nothing else, with compilers other than the one that built the
+# library: gcc and clang as strict C99 (-pedantic -Werror), gcc with
+# __GNUC__ undefined (the branch a non-GNU compiler takes; the generic
+# headers: the ISA headers' intrinsics need a GNU compiler's headers), tcc
+# and pcc (non-GNU C compilers), and g++ as C++17 (-pedantic -Wall -Wextra
+# -Werror).  The port headers that need ISA flags get them (x86 only; the
+# ARM and RISC-V headers are compiled by their suites).  A compiler that is
+# missing is named and its checks skipped.
+pass=0 fail=0 skip=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL headers: $*"; }
+have() { command -v "$1" > /dev/null 2>&1; }
+dir=build/headers
+mkdir -p $dir
+x86=
+case "$(${CC:-cc} -dumpmachine)" in x86_64*) x86=1 ;; esac
+# header FLAGS: the ISA flags a header needs (empty: none), or "skip"
+isa() {
+    case $1 in
+    facet/sse2.h) [ -n "$x86" ] && echo "-msse2" || echo skip ;;
+    facet/avx2.h) [ -n "$x86" ] && echo "-mavx2 -mfma" || echo skip ;;
+    facet/avx512.h) [ -n "$x86" ] && echo "-mavx512f -mavx2 -mfma" || echo skip ;;
+    facet/neon.h | facet/helium.h | facet/rvv.h) echo skip ;;
+    *) echo "" ;;
+    esac
+}
+headers="facet.h $(cd include && ls facet/*.h)"
+try() { # try LABEL HEADER COMPILER ARGS...: compiles a TU that includes HEADER
+    label=$1 h=$2
+    shift 2
+    ext=c
+    case $label in c++*) ext=cc ;; esac
+    src=$dir/$(echo "$h" | tr '/.' '__').$ext
+    printf '#include <%s>\nint facet_header_probe_(void);\nint facet_header_probe_(void) { return 0; }\n' "$h" > $src
+    if out=$("$@" -Iinclude -c $src -o $dir/probe.o 2>&1); then ok
+    else bad "$label: $h does not compile: $(printf '%s' "$out" | head -n 3 | tr '\n' ' ')"; fi
+}
+for h in $headers; do
+    f=$(isa $h)
+    [ "$f" = skip ] && continue
+    try gcc-c99 $h gcc -std=c99 -pedantic -Wall -Wextra -Werror $f
+    [ -z "$f" ] && try gcc-no-gnuc $h gcc -std=c99 -U__GNUC__ -Wall -Wextra -Werror
+    if have clang; then try clang-c99 $h clang -std=c99 -pedantic -Wall -Wextra -Werror $f; fi
+    if have g++; then try c++17 $h g++ -std=c++17 -pedantic -Wall -Wextra -Werror $f; fi
+    # tcc and pcc take no ISA flags: the generic headers only
+    [ -n "$f" ] && continue
+    if have tcc; then try tcc $h tcc -Wall -Werror; fi
+    if have pcc; then try pcc $h pcc; fi
+done
+for c in clang g++ tcc pcc; do
+    if ! have $c; then
+        echo "SKIP headers: $c not installed (apt-get install $c)"
+        skip=$((skip + 1))
+    fi
+done
+echo "headers: $pass passed, $fail failed, $skip skipped"
