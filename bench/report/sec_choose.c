@@ -59,9 +59,15 @@ static void frontier_cell(char *out, size_t cap, choice *c, int n, const char *u
         if (e >= best * 0.999)
             continue;
         best = e;
-        len += (size_t)snprintf(out + len, len < cap ? cap - len : 0, "%s<= %.3g %s: <b>%s %s</b> (error %s%s)",
-                                len ? "<br>" : "", c[i].cost, unit, c[i].kernel, c[i].format, report_g3(eb, e),
-                                c[i].model > 0 ? ", mostly model" : "");
+        {
+            const kf_sim *sim = kf_sim_of(c[i].kernel); /* a diffuse kernel: say which material, and the noise */
+            char sb[96] = "";
+            if (sim)
+                snprintf(sb, sizeof sb, " (+- %.2g), vs the %s microsurface", sim->sig, sim->reference);
+            len += (size_t)snprintf(out + len, len < cap ? cap - len : 0, "%s<= %.3g %s: <b>%s %s</b> (error %s%s%s)",
+                                    len ? "<br>" : "", c[i].cost, unit, c[i].kernel, c[i].format, report_g3(eb, e), sb,
+                                    c[i].model > 0 ? ", mostly model" : "");
+        }
         if (len >= cap)
             break;
     }
@@ -134,8 +140,11 @@ void section_choose(report *r)
          "same bounds by the 40-arm and 52-helium suites). Cortex-M in cycles per call, "
          "MODELLED from executed-instruction traces (M0: TRM timings, M4: llvm-mca; section Cortex-M). RISC-V "
          "is not costed here. NEON: %s. Helium: %s. Details: the Pareto figures below, then the long "
-         "tables. D and diffuse have no exact reference (each variant is a model of its own, a look rather "
-         "than an approximation): there each variant's cheapest format is listed with its cost.",
+         "tables. D has no exact reference (each variant is a model of its own, a look rather than an "
+         "approximation): there each variant's cheapest format is listed with its cost. Diffuse: the model error "
+         "is against the simulated Smith microsurface of the material each kernel approximates (the model-error "
+         "section; max relative over its grid, with the simulation's standard error), so the diffuse rows rank by "
+         "it as the shadowing rows do.",
          r->quick ? "a quick" : "a full", why_neon, why_helium);
     for (g = 0; g < kf_term_count(); g++) {
         int any = 0;
