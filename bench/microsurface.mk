@@ -13,7 +13,7 @@ MSIM_OBJ   := $(MSIM_CORE:%=$(BUILD)/microsurface/%.o)
 MSIM_TOOL_OBJ := $(MSIM_OBJ) $(BUILD)/microsurface/msim_main.o $(BUILD)/microsurface/msim_analyse.o
 MSIM_FLAGS  = $(BASEFLAGS) -D_DEFAULT_SOURCE -I$(MSIM_DIR) -pthread
 MSIM_DEPS  := $(wildcard $(MSIM_DIR)/*.h) $(HEADERS)
-MSIM_PATHS   ?= 1000000
+MSIM_PATHS   ?= 500000
 MSIM_THREADS ?= 2
 MSIM_SEED    ?= 1
 

@@ -10,6 +10,7 @@
 #include "report.h"
 
 static void section_model_diffuse(report *r);
+static void section_spec_loss(report *r);
 
 void section_model(report *r)
 {
@@ -55,6 +56,7 @@ void section_model(report *r)
     }
     doc_table_end(r->doc);
     section_model_diffuse(r);
+    section_spec_loss(r);
 }
 
 /* a simulated figure with its standard error beside it; a maximum inside 3
@@ -138,4 +140,35 @@ static void section_model_diffuse(report *r)
         }
         doc_table_end(r->doc);
     }
+}
+
+/* the committed figure of the energy single-scattering GGX loses
+ * (microsurface energy), inline */
+#define SPEC_LOSS_SVG "bench/microsurface/spec_loss.svg"
+static void section_spec_loss(report *r)
+{
+    FILE *f = fopen(SPEC_LOSS_SVG, "rb");
+    char *svg;
+    long n;
+    doc_heading(r->doc, 3, "%s", "Multiple-scattering specular: the energy single-scattering GGX loses");
+    if (!f) {
+        doc_para(r->doc, "%s could not be read.", SPEC_LOSS_SVG);
+        return;
+    }
+    fseek(f, 0, SEEK_END);
+    n = ftell(f);
+    rewind(f);
+    svg = n > 0 ? malloc((size_t)n + 1) : NULL;
+    if (svg)
+        svg[fread(svg, 1, (size_t)n, f)] = '\0';
+    fclose(f);
+    doc_para(r->doc, "1 - E(N.V, alpha) of the GGX BRDF D G2 / (4 N.L N.V) with F = 1 (a white conductor) by "
+         "quadrature, and the simulated mirror microsurface's multiple-scattering albedo beside it (%s; the "
+         "table, and a Kulla-Conty compensation lobe fitted with two rationals and its errors against the "
+         "simulation: bench/microsurface/spec_loss.md). No compensation kernel is offered: the fitted lobe restores "
+         "the energy but its shape is far from the simulated multiple scattering (spec_loss.md).", SPEC_LOSS_SVG);
+    if (svg)
+        report_svg_figure(r, svg, "Energy single-scattering GGX loses",
+                          "bench/microsurface/spec_loss.svg (microsurface energy): 1 - E by quadrature (lines) and "
+                          "the simulated multiple-scattering albedo (dots), the compensation fit dashed, per alpha over N.V.");
 }
