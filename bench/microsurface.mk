@@ -4,7 +4,8 @@
 #                               (run by tests/suites/65-microsurface.sh)
 #   make microsurface           regenerates the committed tables and results
 #                               (MSIM_PATHS paths per run, MSIM_THREADS threads,
-#                               niced; a few core-hours: README.md gives the time)
+#                               niced; about 12 CPU-minutes at the default:
+#                               README.md gives the time)
 # Not part of the library, and not built by `make tests`: the suite builds it.
 
 MSIM_DIR   := bench/microsurface
