@@ -22,8 +22,10 @@
  *     importance samplers below keep their own rules (NaN to a documented
  *     substitute); fixed point (facet/fx.h) has integer inputs and no NaN.
  *   - Denormal inputs are values like any other, except on ports that run
- *     with flush-to-zero (armv7 NEON): there they act as 0 (the tests judge
- *     such a port at the flushed input), and an intermediate below 2^-126
+ *     with flush-to-zero (armv7 NEON, Helium): there they act as 0 in
+ *     arithmetic, while a compare may see their value (qemu's armv7 NEON
+ *     does; the tests judge such a port at the flushed input, or at the
+ *     unflushed one where a select differs), and an intermediate below 2^-126
  *     becomes 0, so results below 2^-60 are only good to bound * 2^-60
  *     absolutely (elsewhere: below 2^-100, to bound * 2^-100).
  *   - (N.L, N.V, L.V) triples that no pair of unit vectors can form (e.g.
