@@ -79,7 +79,7 @@ $(BUILD)/libfacet.so: $(LIB_OBJ)
 $(BUILD)/facet: $(CLI_OBJ) $(BUILD)/libfacet.a
 	$(CC) $(CFLAGS) -o $@ $^ -lm
 
-$(BUILD)/tests/%: %.c tests/lib/harness.h tests/lib/sample.h $(BUILD)/libfacet.a
+$(BUILD)/tests/%: %.c $(wildcard tests/lib/*.h) $(BUILD)/libfacet.a
 	@mkdir -p $(dir $@)
 	$(CC) $(BASEFLAGS) -D_DEFAULT_SOURCE -o $@ $< $(BUILD)/libfacet.a -lm $(if $(findstring test_threads,$@),-pthread)
 

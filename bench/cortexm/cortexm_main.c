@@ -4,7 +4,7 @@
  * script can cut out each call's executed instructions: from the kernel's
  * first instruction to its return, callees and libgcc helpers included, the
  * caller's argument set-up and the call instruction not.
- *   -DBENCH_FX      the fixed-point kernels facet_<kernel>_fx (src/fx/*.c);
+ *   -DBENCH_FX      the fixed-point kernels facet_<kernel>_fx (the src/fx/ sources);
  *                   with -DBENCH_FX_FAST their fast tier facet_<kernel>_fx_fast
  *   otherwise       the f32 scalar kernels of facet/scalar.h built for the
  *                   same core (soft float, or the core's FPU with a

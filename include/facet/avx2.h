@@ -139,17 +139,9 @@ FACET_INLINE __m256 facet_avx2_getmant(__m256 x)
 }
 
 #define FACET_V __m256
-#define FACET_OP(op) facet_avx2_##op
-#define FACET_K(k) facet_##k##_f32_avx2
-#include "facet/detail/f32_body.h"
-#undef FACET_K
-#define FACET_TIER_FAST 1
-#define FACET_K(k) facet_##k##_f32_fast_avx2
-#include "facet/detail/f32_body.h"
-#undef FACET_TIER_FAST
-#undef FACET_V
-#undef FACET_OP
-#undef FACET_K
+#define FACET_PORT_NAME avx2
+#define FACET_BODY "facet/detail/f32_body.h"
+#include "facet/detail/f32_tiers.h"
 
 #endif
 
@@ -159,16 +151,8 @@ FACET_INLINE __m256 facet_avx2_getmant(__m256 x)
 
 
 #define FACET_V __m256
-#define FACET_OP(op) facet_avx2_##op
-#define FACET_K(k) facet_##k##_f32_avx2
-#include "facet/detail/f32_sample_body.h"
-#undef FACET_K
-#define FACET_TIER_FAST 1
-#define FACET_K(k) facet_##k##_f32_fast_avx2
-#include "facet/detail/f32_sample_body.h"
-#undef FACET_TIER_FAST
-#undef FACET_V
-#undef FACET_OP
-#undef FACET_K
+#define FACET_PORT_NAME avx2
+#define FACET_BODY "facet/detail/f32_sample_body.h"
+#include "facet/detail/f32_tiers.h"
 
 #endif

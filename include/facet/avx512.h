@@ -117,17 +117,9 @@ FACET_INLINE __m512 facet_avx512_getmant(__m512 x)
 }
 
 #define FACET_V __m512
-#define FACET_OP(op) facet_avx512_##op
-#define FACET_K(k) facet_##k##_f32_avx512
-#include "facet/detail/f32_body.h"
-#undef FACET_K
-#define FACET_TIER_FAST 1
-#define FACET_K(k) facet_##k##_f32_fast_avx512
-#include "facet/detail/f32_body.h"
-#undef FACET_TIER_FAST
-#undef FACET_V
-#undef FACET_OP
-#undef FACET_K
+#define FACET_PORT_NAME avx512
+#define FACET_BODY "facet/detail/f32_body.h"
+#include "facet/detail/f32_tiers.h"
 
 #endif
 
@@ -137,16 +129,8 @@ FACET_INLINE __m512 facet_avx512_getmant(__m512 x)
 
 
 #define FACET_V __m512
-#define FACET_OP(op) facet_avx512_##op
-#define FACET_K(k) facet_##k##_f32_avx512
-#include "facet/detail/f32_sample_body.h"
-#undef FACET_K
-#define FACET_TIER_FAST 1
-#define FACET_K(k) facet_##k##_f32_fast_avx512
-#include "facet/detail/f32_sample_body.h"
-#undef FACET_TIER_FAST
-#undef FACET_V
-#undef FACET_OP
-#undef FACET_K
+#define FACET_PORT_NAME avx512
+#define FACET_BODY "facet/detail/f32_sample_body.h"
+#include "facet/detail/f32_tiers.h"
 
 #endif

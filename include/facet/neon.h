@@ -131,17 +131,9 @@ FACET_INLINE float32x4_t facet_neon_getmant(float32x4_t x)
 }
 
 #define FACET_V float32x4_t
-#define FACET_OP(op) facet_neon_##op
-#define FACET_K(k) facet_##k##_f32_neon
-#include "facet/detail/f32_body.h"
-#undef FACET_K
-#define FACET_TIER_FAST 1
-#define FACET_K(k) facet_##k##_f32_fast_neon
-#include "facet/detail/f32_body.h"
-#undef FACET_TIER_FAST
-#undef FACET_V
-#undef FACET_OP
-#undef FACET_K
+#define FACET_PORT_NAME neon
+#define FACET_BODY "facet/detail/f32_body.h"
+#include "facet/detail/f32_tiers.h"
 
 #endif
 
@@ -151,16 +143,8 @@ FACET_INLINE float32x4_t facet_neon_getmant(float32x4_t x)
 
 
 #define FACET_V float32x4_t
-#define FACET_OP(op) facet_neon_##op
-#define FACET_K(k) facet_##k##_f32_neon
-#include "facet/detail/f32_sample_body.h"
-#undef FACET_K
-#define FACET_TIER_FAST 1
-#define FACET_K(k) facet_##k##_f32_fast_neon
-#include "facet/detail/f32_sample_body.h"
-#undef FACET_TIER_FAST
-#undef FACET_V
-#undef FACET_OP
-#undef FACET_K
+#define FACET_PORT_NAME neon
+#define FACET_BODY "facet/detail/f32_sample_body.h"
+#include "facet/detail/f32_tiers.h"
 
 #endif

@@ -186,17 +186,9 @@ FACET_INLINE facet_rvv_v facet_rvv_load(const float *p, size_t vl) { return FACE
 FACET_INLINE void facet_rvv_store(float *p, facet_rvv_v v, size_t vl) { FACET_RVV_F_(vse32_v)(p, v, vl); }
 
 #define FACET_V facet_rvv_v
-#define FACET_OP(op) facet_rvv_##op
-#define FACET_K(k) facet_##k##_f32_rvv
-#include "facet/detail/f32_body.h"
-#undef FACET_K
-#define FACET_TIER_FAST 1
-#define FACET_K(k) facet_##k##_f32_fast_rvv
-#include "facet/detail/f32_body.h"
-#undef FACET_TIER_FAST
-#undef FACET_V
-#undef FACET_OP
-#undef FACET_K
+#define FACET_PORT_NAME rvv
+#define FACET_BODY "facet/detail/f32_body.h"
+#include "facet/detail/f32_tiers.h"
 
 #endif
 
@@ -205,16 +197,8 @@ FACET_INLINE void facet_rvv_store(float *p, facet_rvv_v v, size_t vl) { FACET_RV
 #define FACET_RVV_SAMPLE_H
 
 #define FACET_V facet_rvv_v
-#define FACET_OP(op) facet_rvv_##op
-#define FACET_K(k) facet_##k##_f32_rvv
-#include "facet/detail/f32_sample_body.h"
-#undef FACET_K
-#define FACET_TIER_FAST 1
-#define FACET_K(k) facet_##k##_f32_fast_rvv
-#include "facet/detail/f32_sample_body.h"
-#undef FACET_TIER_FAST
-#undef FACET_V
-#undef FACET_OP
-#undef FACET_K
+#define FACET_PORT_NAME rvv
+#define FACET_BODY "facet/detail/f32_sample_body.h"
+#include "facet/detail/f32_tiers.h"
 
 #endif

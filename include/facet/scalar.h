@@ -137,17 +137,9 @@ FACET_INLINE float facet_scalar_getmant(float x)
 }
 
 #define FACET_V float
-#define FACET_OP(op) facet_scalar_##op
-#define FACET_K(k) facet_##k##_f32_scalar
-#include "facet/detail/f32_body.h"
-#undef FACET_K
-#define FACET_TIER_FAST 1
-#define FACET_K(k) facet_##k##_f32_fast_scalar
-#include "facet/detail/f32_body.h"
-#undef FACET_TIER_FAST
-#undef FACET_V
-#undef FACET_OP
-#undef FACET_K
+#define FACET_PORT_NAME scalar
+#define FACET_BODY "facet/detail/f32_body.h"
+#include "facet/detail/f32_tiers.h"
 
 #endif
 
@@ -160,16 +152,8 @@ FACET_INLINE float facet_scalar_getmant(float x)
 
 
 #define FACET_V float
-#define FACET_OP(op) facet_scalar_##op
-#define FACET_K(k) facet_##k##_f32_scalar
-#include "facet/detail/f32_sample_body.h"
-#undef FACET_K
-#define FACET_TIER_FAST 1
-#define FACET_K(k) facet_##k##_f32_fast_scalar
-#include "facet/detail/f32_sample_body.h"
-#undef FACET_TIER_FAST
-#undef FACET_V
-#undef FACET_OP
-#undef FACET_K
+#define FACET_PORT_NAME scalar
+#define FACET_BODY "facet/detail/f32_sample_body.h"
+#include "facet/detail/f32_tiers.h"
 
 #endif

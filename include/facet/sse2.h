@@ -113,17 +113,9 @@ FACET_INLINE __m128 facet_sse2_getmant(__m128 x)
 }
 
 #define FACET_V __m128
-#define FACET_OP(op) facet_sse2_##op
-#define FACET_K(k) facet_##k##_f32_sse2
-#include "facet/detail/f32_body.h"
-#undef FACET_K
-#define FACET_TIER_FAST 1
-#define FACET_K(k) facet_##k##_f32_fast_sse2
-#include "facet/detail/f32_body.h"
-#undef FACET_TIER_FAST
-#undef FACET_V
-#undef FACET_OP
-#undef FACET_K
+#define FACET_PORT_NAME sse2
+#define FACET_BODY "facet/detail/f32_body.h"
+#include "facet/detail/f32_tiers.h"
 
 #endif
 
@@ -133,16 +125,8 @@ FACET_INLINE __m128 facet_sse2_getmant(__m128 x)
 
 
 #define FACET_V __m128
-#define FACET_OP(op) facet_sse2_##op
-#define FACET_K(k) facet_##k##_f32_sse2
-#include "facet/detail/f32_sample_body.h"
-#undef FACET_K
-#define FACET_TIER_FAST 1
-#define FACET_K(k) facet_##k##_f32_fast_sse2
-#include "facet/detail/f32_sample_body.h"
-#undef FACET_TIER_FAST
-#undef FACET_V
-#undef FACET_OP
-#undef FACET_K
+#define FACET_PORT_NAME sse2
+#define FACET_BODY "facet/detail/f32_sample_body.h"
+#include "facet/detail/f32_tiers.h"
 
 #endif

@@ -1014,7 +1014,7 @@ FXQ_INLINE fxv_u32 fxq_diffuse_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 lov, fxv
 }
 
 /* ---- the whole model ------------------------------------------------------------
- * brdf = spec + diffuse, spec = (a 2t)^2 F / (2 pi e^2 m) (fx_kernels.c):
+ * brdf = spec + diffuse, spec = (a 2t)^2 F / (2 pi e^2 m) (fx_body.h):
  *   y = 1 - L.H = u 2^-32 / (1 + L.H): (1 + L.H) Q31 is a normalised
  *     mantissa [2^31, 2^32), r1 = rcp20 ~ 2^20 / (1 + L.H); u 2^ku in
  *     [2^31, 2^32) (u = 0 read as 1: y ~ 2^-32, its y^5 vanishes);

@@ -8,11 +8,14 @@
 #include <stddef.h>
 #include "facet/fx.h"
 
+/* One loop per tier: channel c of sample i is p[c][s * i] (planar: the
+ * channel arrays, s = 1; interleaved: the array from its c-th element,
+ * s = 3). */
 #define RGB_FX_(tier)                                                                          \
-    void facet_brdf_hammon_rgb_##tier##_batch(uint64_t *const out[3], const int32_t *nol,       \
-                                              const int32_t *nov, const int32_t *lov,           \
-                                              const int32_t *alpha, const int32_t *const f0[3], \
-                                              const int32_t *const albedo[3], size_t n)         \
+    static void rgb_loop_##tier(uint64_t *const out[3], const int32_t *nol, const int32_t *nov, \
+                                const int32_t *lov, const int32_t *alpha,                       \
+                                const int32_t *const f0[3], const int32_t *const albedo[3],     \
+                                size_t s, size_t n)                                             \
     {                                                                                           \
         size_t i;                                                                               \
         for (i = 0; i < n; i++) {                                                               \
@@ -20,13 +23,20 @@
             uint64_t o[3];                                                                      \
             int c;                                                                              \
             for (c = 0; c < 3; c++) {                                                           \
-                f[c] = f0[c][i];                                                                \
-                a[c] = albedo[c][i];                                                            \
+                f[c] = f0[c][s * i];                                                            \
+                a[c] = albedo[c][s * i];                                                        \
             }                                                                                   \
             facet_brdf_hammon_rgb_##tier(o, nol[i], nov[i], lov[i], alpha[i], f, a);            \
             for (c = 0; c < 3; c++)                                                             \
-                out[c][i] = o[c];                                                               \
+                out[c][s * i] = o[c];                                                           \
         }                                                                                       \
+    }                                                                                           \
+    void facet_brdf_hammon_rgb_##tier##_batch(uint64_t *const out[3], const int32_t *nol,       \
+                                              const int32_t *nov, const int32_t *lov,           \
+                                              const int32_t *alpha, const int32_t *const f0[3], \
+                                              const int32_t *const albedo[3], size_t n)         \
+    {                                                                                           \
+        rgb_loop_##tier(out, nol, nov, lov, alpha, f0, albedo, 1, n);                           \
     }                                                                                           \
     void facet_brdf_hammon_rgb_##tier##_batch_interleaved(uint64_t *out, const int32_t *nol,    \
                                                           const int32_t *nov,                   \
@@ -35,18 +45,11 @@
                                                           const int32_t *f0,                    \
                                                           const int32_t *albedo, size_t n)      \
     {                                                                                           \
-        size_t i;                                                                               \
-        for (i = 0; i < n; i++) {                                                               \
-            int32_t f[3], a[3];                                                                 \
-            uint64_t o[3];                                                                      \
-            int c;                                                                              \
-            for (c = 0; c < 3; c++) {                                                           \
-                f[c] = f0[3 * i + c];                                                           \
-                a[c] = albedo[3 * i + c];                                                       \
-            }                                                                                   \
-            facet_brdf_hammon_rgb_##tier(o, nol[i], nov[i], lov[i], alpha[i], f, a);            \
-            for (c = 0; c < 3; c++)                                                             \
-                out[3 * i + c] = o[c];                                                          \
+        if (n) { /* no offset into a null array */                                              \
+            uint64_t *const o3[3] = { out, out + 1, out + 2 };                                  \
+            const int32_t *const f3[3] = { f0, f0 + 1, f0 + 2 };                                \
+            const int32_t *const a3[3] = { albedo, albedo + 1, albedo + 2 };                    \
+            rgb_loop_##tier(o3, nol, nov, lov, alpha, f3, a3, 3, n);                            \
         }                                                                                       \
     }
 RGB_FX_(fx)

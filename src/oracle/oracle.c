@@ -419,34 +419,32 @@ static double g1x_f(double th, const g1x_ctx *k)
 }
 
 #define GLN_ 32
+/* the Legendre polynomial P_GLN_(z) by its recurrence; *dp = P'(z) */
+static double g1x_legendre(double z, double *dp)
+{
+    double p0 = 1.0, p1 = z;
+    int k;
+    for (k = 2; k <= GLN_; k++) {
+        double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+    }
+    *dp = GLN_ * (z * p1 - p0) / (z * z - 1.0);
+    return p1;
+}
+
 static void g1x_rule(double *x, double *w)
 {
-    int i, k, it;
+    int i, it;
     for (i = 0; i < GLN_; i++) {
-        double z = cos(PI * (i + 0.75) / (GLN_ + 0.5)), p0, p1, dp;
-        for (it = 0; it < 100; it++) {
-            double dz;
-            p0 = 1.0;
-            p1 = z;
-            for (k = 2; k <= GLN_; k++) {
-                double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = GLN_ * (z * p1 - p0) / (z * z - 1.0);
-            dz = p1 / dp;
+        double z = cos(PI * (i + 0.75) / (GLN_ + 0.5)), dp;
+        for (it = 0; it < 100; it++) { /* Newton on P's root */
+            double p = g1x_legendre(z, &dp), dz = p / dp;
             z -= dz;
             if (fabs(dz) < 1e-16)
                 break;
         }
-        p0 = 1.0;
-        p1 = z;
-        for (k = 2; k <= GLN_; k++) {
-            double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
-            p0 = p1;
-            p1 = p2;
-        }
-        dp = GLN_ * (z * p1 - p0) / (z * z - 1.0);
+        g1x_legendre(z, &dp);
         x[i] = z;
         w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
     }

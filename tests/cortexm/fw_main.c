@@ -1,5 +1,5 @@
 /* fw_main.c - a firmware image that shades with the fixed-point batch API
- * alone, built from `make fx-sources` the way the README's "Firmware builds"
+ * alone, built from `make fx-sources` the way src/fx/README.md's "Firmware builds"
  * says (arm-none-eabi-gcc -Os -ffunction-sections -fdata-sections,
  * -Wl,--gc-sections, newlib; tests/fx/fx.mk: fx-firmware).  It runs on
  * qemu-system-arm (each batch result must equal the scalar kernel's: exit

@@ -7,7 +7,7 @@
 #   $(BUILD)/fx/<cpu>/fx_kernels.o, fx_fast.o Cortex-M objects for the size table
 #   $(BUILD)/fx/rv32/fx.elf                   freestanding RV32IMC link check
 #   $(BUILD)/fx/cortex-m<0|4>/fw*.elf         firmware images (tests/cortexm/fw_main.c):
-#       -Os, --gc-sections, newlib, exactly as the README's "Firmware builds"
+#       -Os, --gc-sections, newlib, exactly as src/fx/README.md's "Firmware builds"
 #       fw.elf       facet_brdf_hammon_fx_batch     fw_fast.elf  the _fx_fast_batch
 #       fw_base.elf  the same image, no facet call (the size baseline)
 #       fw_oracle.elf  also calls the oracle: the symbol check must flag it
@@ -27,7 +27,7 @@ FX_CM_LINK  = --specs=rdimon.specs -nostartfiles -T tests/cortexm/mps2.ld tests/
 fx-cortex-m: $(BUILD)/fx/cortex-m0/test_fx_hash.elf $(BUILD)/fx/cortex-m4/test_fx_hash.elf \
              $(foreach c,0 4,$(foreach f,fw fw_fast fw_base fw_oracle,$(BUILD)/fx/cortex-m$c/$f.elf)) \
              $(BUILD)/fx/cortex-m0/fx_kernels.o $(BUILD)/fx/cortex-m4/fx_kernels.o \
-             $(BUILD)/fx/cortex-m0/fx_core.o $(BUILD)/fx/cortex-m4/fx_core.o \
+             $(BUILD)/fx/cortex-m0/fx_prims.o $(BUILD)/fx/cortex-m4/fx_prims.o \
              $(BUILD)/fx/cortex-m0/fx_fast.o $(BUILD)/fx/cortex-m4/fx_fast.o
 fx-rv32: $(BUILD)/fx/rv32/fx.elf
 fx-linux-cross: $(BUILD)/fx/aarch64/test_fx_hash $(BUILD)/fx/armv7/test_fx_hash \
@@ -69,7 +69,7 @@ $(BUILD)/fx/host-syms.txt: $(LIB_SRC) $(HEADERS) $(SRC_HDRS)
 $(BUILD)/fx/cortex-m%/fx_kernels.o: src/fx/fx_kernels.c $(FX_HDRS)
 	@mkdir -p $(dir $@)
 	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_CM_FLAGS) $(WARN) -Iinclude -Os -c $< -o $@
-$(BUILD)/fx/cortex-m%/fx_core.o: src/fx/fx_prims.c $(FX_HDRS)
+$(BUILD)/fx/cortex-m%/fx_prims.o: src/fx/fx_prims.c $(FX_HDRS)
 	@mkdir -p $(dir $@)
 	$(FX_CM_CC) -mcpu=cortex-m$* $(FX_CM_FLAGS) $(WARN) -Iinclude -Os -c $< -o $@
 $(BUILD)/fx/cortex-m%/fx_fast.o: src/fx/fx_fast.c $(FX_HDRS)

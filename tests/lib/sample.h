@@ -48,7 +48,7 @@ static inline uint64_t smp_name_seed(const char *name)
 #define SMP_ERR_FLOOR 0x1p-100
 #define SMP_ERR_FLOOR_FTZ 0x1p-60
 
-/* Does the active port flush denormal inputs to zero (armv7 NEON does)?
+/* Does the active port flush denormal inputs to zero (armv7 NEON and Helium do)?
  * Probed, not assumed: lambert(1e-39) is 0 only if the input was flushed. */
 static inline int smp_port_flushes_denormals(void)
 {

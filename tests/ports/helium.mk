@@ -8,7 +8,7 @@
 # M55_ARG: the image's argv[1] (the accuracy test's random sample count).
 ifneq ($(filter arm-none-eabi%,$(TARGET)),)
 M55_LINK = --specs=rdimon.specs -nostartfiles -T tests/cortexm/an547.ld tests/cortexm/startup_m55.c
-$(BUILD)/tests/%.elf: %.c tests/lib/harness.h tests/lib/sample.h $(BUILD)/libfacet.a tests/cortexm/startup_m55.c tests/cortexm/an547.ld
+$(BUILD)/tests/%.elf: %.c $(wildcard tests/lib/*.h) $(BUILD)/libfacet.a tests/cortexm/startup_m55.c tests/cortexm/an547.ld
 	@mkdir -p $(dir $@)
 	$(CC) $(BASEFLAGS) -D_DEFAULT_SOURCE $(if $(M55_ARG),-DFACET_M55_ARG='"$(M55_ARG)"') -o $@ $< $(M55_LINK) $(BUILD)/libfacet.a -lm
 endif

@@ -1,8 +1,8 @@
 /* facet/detail/f32_body.h - the one body of every f32 kernel.
  *
  * Deliberately without an include guard: each port header includes it once
- * per tier,
- * after defining
+ * per tier (through facet/detail/f32_tiers.h, which defines FACET_OP and
+ * FACET_K from the port's name), after defining
  *   FACET_V        the vector (or scalar) type,
  *   FACET_OP(op)   the name of the port's op `op` (set add sub mul fma fnma
  *                  min max sel_lt clamp keep_ord rcp rsqrt sqr_err, and the

@@ -2,7 +2,7 @@
  * GGX visible normals, GTR D) and their pdfs.
  *
  * Like f32_body.h: no include guard; each port header includes it once per
- * tier, after f32_body.h (it calls that body's ggx_d core, x_ggx_d, which
+ * tier (facet/detail/f32_tiers.h), after f32_body.h (it calls that body's ggx_d core, x_ggx_d, which
  * has no NaN rule, and its Smith helpers), with
  * the same FACET_V / FACET_OP / FACET_K / FACET_TIER_FAST, and with three
  * ops more than f32_body.h needs (see facet/scalar.h, "sampling ops"):
