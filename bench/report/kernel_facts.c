@@ -26,8 +26,6 @@ M2(smith_g1) M2(smith_g1_hammon) M2(smith_g1_beckmann) M2(smith_g1_beckmann_exac
 M2(fresnel_schlick) M2(fresnel_schlick_sg) M2(fresnel_cook_torrance)
 M3(smith_g1_gtr) M3(smith_g1_gtr_exact)
 /* the diffuse and whole-BRDF rows: L.V = N.L N.V (azimuths 90 deg apart), f0 = 0.04, albedo = 0.8 */
-static double m_lambert(const double *x) { (void)x; return facet_oracle_lambert(0.8); }
-static double m_diffuse_hammon(const double *x) { return facet_oracle_diffuse_hammon(x[0], x[1], x[0] * x[1], x[2], 0.8); }
 static double m_brdf_hammon(const double *x) { return facet_oracle_brdf_hammon(x[0], x[1], x[0] * x[1], x[2], 0.04, 0.8); }
 static double m_brdf_exact(const double *x) { return bench_oracle_brdf_exact(x[0], x[1], x[0] * x[1], x[2], 0.04, 0.8); }
 
@@ -70,15 +68,16 @@ static const struct {
     const char *title;
     int has_reference;
 } terms[N_TERMS] = {
-    /* D and diffuse have no exact reference: each variant is its own model
-     * (a look, not an approximation) */
+    /* D has no exact reference: each variant is its own model (a look, not
+     * an approximation); diffuse's is the simulated Smith microsurface of
+     * the material each kernel approximates (bench/microsurface) */
     { "D (normal distribution)", 0 },
     { "G1 (masking)", 1 },
     { "G1 for Beckmann's D", 1 },
     { "G2 (masking-shadowing)", 1 },
     { "visibility (G2 / (4 N.L N.V))", 1 },
     { "Fresnel", 1 },
-    { "diffuse", 0 },
+    { "diffuse", 1 },
     { "whole BRDF", 1 },
 };
 /* the image-space role of each term's kernels (T_BRDF: its own section) */
@@ -89,7 +88,9 @@ static const char *const ref_name[] = { "", "GGX D", "exact height-correlated Sm
                                         "exact Beckmann G1 (separable)", "exact GTR G1 (separable)",
                                         "exact dielectric Fresnel" };
 
-enum { OWN, EXACT, APPROX }; /* against the exact form of the kernel's term */
+/* against the exact form of the kernel's term; SIM: against the microsurface
+ * simulation of its material (bench/microsurface/model_error.tsv, kf_sim_load) */
+enum { OWN, EXACT, APPROX, SIM };
 
 typedef struct fact {
     const char *kernel;
@@ -184,18 +185,16 @@ static const fact facts[] = {
     { "smith_vis_fit", T_VIS, APPROX,
       { "visibility", "smith_vis_fit (3 lines, fitted)", X_VIS, m3_smith_vis_fit, m3_smith_vis, VIS3 },
       0, NULL, DRAWN(KF_REF_VIS) },
-    { "diffuse_hammon", T_DIFFUSE, EXACT, NO_SWEEP, 0, NULL, DRAWN(KF_REF_NONE) },
-    { "diffuse_burley", T_DIFFUSE, OWN, NO_SWEEP, 0, NULL, DRAWN(KF_REF_NONE) },
-    { "diffuse_oren_nayar", T_DIFFUSE, OWN, NO_SWEEP, 0, NULL, DRAWN(KF_REF_NONE) },
-    { "diffuse_hammon_hybrid", T_DIFFUSE, OWN, NO_SWEEP, 0, NULL, DRAWN(KF_REF_NONE) },
-    { "diffuse_hammon_cheap", T_DIFFUSE, OWN, NO_SWEEP, 0, NULL, DRAWN(KF_REF_NONE) },
+    { "diffuse_hammon", T_DIFFUSE, SIM, NO_SWEEP, 0, NULL, DRAWN(KF_REF_NONE) },
+    { "diffuse_burley", T_DIFFUSE, SIM, NO_SWEEP, 0, NULL, DRAWN(KF_REF_NONE) },
+    { "diffuse_oren_nayar", T_DIFFUSE, SIM, NO_SWEEP, 0, NULL, DRAWN(KF_REF_NONE) },
+    { "diffuse_hammon_hybrid", T_DIFFUSE, SIM, NO_SWEEP, 0, NULL, DRAWN(KF_REF_NONE) },
+    { "diffuse_hammon_cheap", T_DIFFUSE, SIM, NO_SWEEP, 0, NULL, DRAWN(KF_REF_NONE) },
     { "brdf_hammon", T_BRDF, APPROX,
       { "whole BRDF", "brdf_hammon (Hammon Vis)", "D Vis_exact F + diffuse_hammon", "", m_brdf_hammon, m_brdf_exact,
         G3 },
       1, NULL, NOT_DRAWN },
-    { "lambert", T_DIFFUSE, APPROX,
-      { "diffuse", "lambert", "diffuse_hammon", "diffuse_hammon", m_lambert, m_diffuse_hammon, G3 },
-      0, NULL, DRAWN(KF_REF_NONE) },
+    { "lambert", T_DIFFUSE, SIM, NO_SWEEP, 0, NULL, DRAWN(KF_REF_NONE) },
 };
 #define N_FACTS ((int)(sizeof facts / sizeof facts[0]))
 
@@ -247,6 +246,11 @@ int kf_check(const char *const *names, int n, FILE *err)
                 fprintf(err, "%s: two entries for %s\n", here, f->kernel);
                 bad++;
             }
+        if (f->model == SIM && f->term != T_DIFFUSE) {
+            fprintf(err, "%s: %s: only diffuse kernels are measured against the microsurface simulation\n", here,
+                    f->kernel);
+            bad++;
+        }
         if (f->term < T_NONE || f->term >= N_TERMS || (f->term == T_NONE && f->model != OWN)) {
             fprintf(err, "%s: %s: no term, or a term outside the list\n", here, f->kernel);
             bad++;
@@ -361,11 +365,126 @@ double kf_model_of(const char *kernel)
         return -1;
     if (f->model == EXACT)
         return 0;
+    if (f->model == SIM) {
+        const kf_sim *x = kf_sim_of(kernel);
+        return x ? x->max : -1;
+    }
     list_models();
     for (i = 0; i < n_models; i++)
         if (model_fact[i] == f)
             return models[i].max_rel;
     return -1;
+}
+
+/* ---- the microsurface simulation's figures (bench/microsurface/model_error.tsv) --------- */
+
+static kf_sim sims[N_FACTS];
+static int n_sims;
+
+const kf_sim *kf_sim_of(const char *kernel)
+{
+    int i;
+    for (i = 0; i < n_sims; i++)
+        if (!strcmp(sims[i].kernel, kernel))
+            return &sims[i];
+    return NULL;
+}
+
+/* tab-separated fields of line into f[] (at most max), in place */
+static int split_tabs(char *line, char **f, int max)
+{
+    int n = 0;
+    char *p = line;
+    while (n < max) {
+        f[n++] = p;
+        p = strchr(p, '\t');
+        if (!p)
+            break;
+        *p++ = '\0';
+    }
+    return n;
+}
+
+/* the rows of the oracle form against each kernel's own material, every
+ * albedo: the whole grid (every alpha, and per alpha) and N.L, N.V >= 0.2 */
+int kf_sim_load(const char *path)
+{
+    FILE *in = fopen(path, "r");
+    char line[4096], *f[40];
+    int col[40], nc = 0, i;
+    enum { C_KERNEL, C_FORM, C_REF, C_PRIMARY, C_DOMAIN, C_ALBEDO, C_ALPHA, C_MAX, C_SIG, C_AA, C_ANL, C_ANV, C_APHI,
+           C_ARHO, C_MEAN, C_MSIG, NCOL };
+    static const char *const want[NCOL] = { "kernel", "form", "reference", "primary", "domain", "albedo", "alpha",
+                                            "max_abs_rel_err", "sigma_at_max", "at_alpha", "at_nl", "at_nv", "at_phi",
+                                            "at_albedo", "mean_abs_rel_err", "mean_sigma" };
+    n_sims = 0;
+    if (!in)
+        return -1;
+    for (i = 0; i < NCOL; i++)
+        col[i] = -1;
+    while (fgets(line, sizeof line, in)) {
+        int n;
+        const fact *fk;
+        kf_sim *x;
+        line[strcspn(line, "\r\n")] = '\0';
+        if (line[0] == '#' || !line[0])
+            continue;
+        n = split_tabs(line, f, 40);
+        if (!nc) { /* the header */
+            for (i = 0; i < NCOL; i++) {
+                int j;
+                for (j = 0; j < n; j++)
+                    if (!strcmp(f[j], want[i]))
+                        col[i] = j;
+                if (col[i] < 0) {
+                    fclose(in);
+                    return -1;
+                }
+            }
+            nc = n;
+            continue;
+        }
+        if (n != nc || strcmp(f[col[C_FORM]], "oracle") || strcmp(f[col[C_PRIMARY]], "1") ||
+            strcmp(f[col[C_ALBEDO]], "all") || !(fk = find(f[col[C_KERNEL]])) || fk->model != SIM)
+            continue;
+        x = (kf_sim *)kf_sim_of(fk->kernel);
+        if (!x) {
+            if (n_sims >= N_FACTS)
+                continue;
+            x = &sims[n_sims++];
+            memset(x, 0, sizeof *x);
+            x->kernel = fk->kernel;
+            snprintf(x->reference, sizeof x->reference, "%s", f[col[C_REF]]);
+            x->max = x->max2 = -1;
+        }
+        if (!strcmp(f[col[C_DOMAIN]], "all") && !strcmp(f[col[C_ALPHA]], "all")) {
+            x->max = atof(f[col[C_MAX]]);
+            x->sig = atof(f[col[C_SIG]]);
+            x->at[0] = atof(f[col[C_AA]]);
+            x->at[1] = atof(f[col[C_ANL]]);
+            x->at[2] = atof(f[col[C_ANV]]);
+            x->at[3] = atof(f[col[C_APHI]]);
+            x->at[4] = atof(f[col[C_ARHO]]);
+            x->mean = atof(f[col[C_MEAN]]);
+            x->mean_sig = atof(f[col[C_MSIG]]);
+        } else if (strcmp(f[col[C_DOMAIN]], "all") && !strcmp(f[col[C_ALPHA]], "all")) {
+            x->max2 = atof(f[col[C_MAX]]);
+            x->sig2 = atof(f[col[C_SIG]]);
+            x->mean2 = atof(f[col[C_MEAN]]);
+        } else if (!strcmp(f[col[C_DOMAIN]], "all") && x->n_alpha < KF_SIM_MAX_ALPHA) {
+            x->alpha[x->n_alpha] = atof(f[col[C_ALPHA]]);
+            x->amax[x->n_alpha] = atof(f[col[C_MAX]]);
+            x->asig[x->n_alpha] = atof(f[col[C_SIG]]);
+            x->amean[x->n_alpha] = atof(f[col[C_MEAN]]);
+            x->n_alpha++;
+        }
+    }
+    fclose(in);
+    /* a kernel without its whole-grid row is not compared */
+    for (i = 0; i < n_sims; i++)
+        if (sims[i].max < 0)
+            sims[i] = sims[--n_sims], i--;
+    return n_sims;
 }
 
 /* point i of n on an axis: even i log-spaced, odd i linear, both lo .. hi */
@@ -467,7 +586,7 @@ const kf_variant *kf_variant_at(int i)
 
 void kf_print(FILE *out)
 {
-    static const char *const model[] = { "own model", "exact", "approximation" };
+    static const char *const model[] = { "own model", "exact", "approximation", "vs the microsurface simulation" };
     int i;
     fprintf(out, "# bench/report/kernel_facts.c: kernel TAB term TAB against its term's exact form TAB what\n");
     for (i = 0; i < N_FACTS; i++) {

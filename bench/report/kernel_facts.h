@@ -18,8 +18,8 @@
 /* the terms a user chooses among, in the report's order */
 int kf_term_count(void);
 const char *kf_term_title(int t);
-/* 0 for the terms without an exact reference (D, diffuse: each variant a
- * model of its own) */
+/* 0 for the terms without an exact reference (D: each variant a model of
+ * its own; diffuse's reference is the microsurface simulation) */
 int kf_term_has_reference(int t);
 /* the kernels of term t, in the kernel list's order (names[] at most max);
  * returns the count */
@@ -55,8 +55,35 @@ void kf_model_sweep(int quick);
 int kf_model_count(void);
 const kf_model *kf_model_at(int i);
 /* the model error of kernel against its term's exact form: the sweep's
- * max; 0 for an exact form; -1 for a model of its own */
+ * max; for a diffuse kernel the max over the microsurface simulation's grid
+ * (kf_sim_load; -1 before it or without its row); 0 for an exact form; -1
+ * for a model of its own */
 double kf_model_of(const char *kernel);
+/* ---- the microsurface simulation (bench/microsurface/model_error.tsv) ------- */
+
+/* a diffuse kernel's model error against the simulated Smith microsurface of
+ * the material it approximates (facet's double oracle of the kernel; every
+ * facet albedo of the tables): relative |kernel / reference - 1|, each
+ * figure with the simulation's standard error of it */
+#define KF_SIM_MAX_ALPHA 16
+typedef struct kf_sim {
+    const char *kernel;
+    char reference[16];       /* the material: "hammon", "lambert" */
+    double max, sig, at[5];   /* the whole grid: max, its sigma, where (alpha, N.L, N.V, phi, albedo) */
+    double mean, mean_sig;    /* mean |e| and the mean sigma */
+    double max2, sig2, mean2; /* N.L, N.V >= 0.2 */
+    int n_alpha;              /* per alpha, the whole grid */
+    double alpha[KF_SIM_MAX_ALPHA], amax[KF_SIM_MAX_ALPHA], asig[KF_SIM_MAX_ALPHA], amean[KF_SIM_MAX_ALPHA];
+} kf_sim;
+
+/* the committed table, from the tree's top (where the report runs) */
+#define KF_SIM_TABLE "bench/microsurface/model_error.tsv"
+/* reads the table (microsurface error's output); returns the number of
+ * kernels it gives, -1 when it cannot be read */
+int kf_sim_load(const char *path);
+/* NULL before kf_sim_load or for a kernel the table lacks */
+const kf_sim *kf_sim_of(const char *kernel);
+
 
 /* ---- image space (image_error.c) ------------------------------------------------- */
 

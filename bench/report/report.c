@@ -329,6 +329,8 @@ int facet_bench_report(int argc, char **argv)
     }
     report_say("model-error sweep of the approximations ...");
     kf_model_sweep(quick);
+    if (kf_sim_load(KF_SIM_TABLE) <= 0)
+        report_say("cannot read %s: the diffuse kernels' model errors are left out", KF_SIM_TABLE);
 
     doc_heading(r.doc, 1, "%s", quick ? BENCH_QUICK_TITLE : BENCH_TITLE);
     if (quick)

@@ -89,9 +89,16 @@ static void frontier_cell(char *out, size_t cap, choice *c, int n, const char *u
         if (e >= best * 0.999)
             continue;
         best = e;
-        len += (size_t)snprintf(out + len, len < cap ? cap - len : 0, "%s<= %s %s: <b>%s %s</b>%s (error %s%s)",
-                                len ? "<br>" : "", cost_str(cb, sizeof cb, &c[i]), unit, c[i].kernel, c[i].format,
-                                rtl_clock(ck, sizeof ck, &c[i]), report_g3(eb, e), c[i].model > 0 ? ", mostly model" : "");
+        {
+            const kf_sim *sim = kf_sim_of(c[i].kernel); /* a diffuse kernel: say which material, and the noise */
+            char sb[96] = "";
+            if (sim)
+                snprintf(sb, sizeof sb, " (+- %.2g), vs the %s microsurface", sim->sig, sim->reference);
+            len += (size_t)snprintf(out + len, len < cap ? cap - len : 0, "%s<= %s %s: <b>%s %s</b>%s (error %s%s%s)",
+                                    len ? "<br>" : "", cost_str(cb, sizeof cb, &c[i]), unit, c[i].kernel, c[i].format,
+                                    rtl_clock(ck, sizeof ck, &c[i]), report_g3(eb, e), sb,
+                                    c[i].model > 0 ? ", mostly model" : "");
+        }
         if (len >= cap)
             break;
     }
@@ -345,8 +352,11 @@ void section_choose(report *r)
          "Verilog, bit-exact with the C, one sample per clock) in gate equivalents of a generic CMOS mapping (Yosys "
          "abc -g cmos, transistors / 4), with the clock nextpnr-ice40 reports where the module fits an iCE40; from "
          "%s (made by make rtl; section Hardware). NEON: %s. Helium: %s. Details: the Pareto figures below, then the long "
-         "tables. D and diffuse have no exact reference (each variant is a model of its own, a look rather "
-         "than an approximation): there each variant's cheapest format is listed with its cost.",
+         "tables. D has no exact reference (each variant is a model of its own, a look rather than an "
+         "approximation): there each variant's cheapest format is listed with its cost. Diffuse: the model error "
+         "is against the simulated Smith microsurface of the material each kernel approximates (the model-error "
+         "section; max relative over its grid, with the simulation's standard error), so the diffuse rows rank by "
+         "it as the shadowing rows do.",
          r->quick ? "a quick" : "a full", D->n_rtl ? D->rtl_path : "no cost file (ports/rtl/cost.tsv missing)",
          why_neon, why_helium);
     for (g = 0; g < kf_term_count(); g++) {

@@ -21,7 +21,7 @@ typedef struct point {
 /* errors are drawn between 10^-8 (or exact) and 2.5 (above 1, and inf, at the top) */
 #define ERR_FLOOR 1e-8
 #define ERR_CEIL 2.5
-static double err_clamp(double v) { return v > ERR_FLOOR ? (v < ERR_CEIL ? v : ERR_CEIL) : ERR_FLOOR; }
+static double err_clamp_to(double v, double ceil_) { return v > ERR_FLOOR ? (v < ceil_ ? v : ceil_) : ERR_FLOOR; }
 
 static const char *const kind_colour[2] = { "#1f6feb", "#d1242f" };
 #define FRONTIER_COLOUR "#2da44e"
@@ -34,7 +34,12 @@ static void pareto_panel(svg *s, double ox, double W, double H, const char *titl
 {
     svg_plot pl;
     int i, order[128], m = 0, nf = 0;
-    double best = 1e300, fx[260], fy[260];
+    double best = 1e300, fx[260], fy[260], top = pow(10, 0.5), top_clamp = ERR_CEIL;
+    /* model errors above 1 (the diffuse kernels against the simulation):
+     * the axis reaches the largest, up to 10^3 */
+    for (i = 0; i < n && model; i++)
+        while (p[i].ym > top_clamp && top < 1e3)
+            top *= 10, top_clamp = 0.8 * top;
     memset(&pl, 0, sizeof pl);
     pl.s = s;
     pl.x = ox + 62;
@@ -44,7 +49,7 @@ static void pareto_panel(svg *s, double ox, double W, double H, const char *titl
     pl.ax = *ax;
     pl.ay.label = model ? "model error (max rel.)" : "implementation error (max rel.)";
     pl.ay.lo = ERR_FLOOR;
-    pl.ay.hi = pow(10, 0.5);
+    pl.ay.hi = top;
     pl.ay.log = 1;
     pl.ay.lo_text = model ? "exact" : "<= 10^-8";
     pl.label_gap = 50;
@@ -62,7 +67,7 @@ static void pareto_panel(svg *s, double ox, double W, double H, const char *titl
         order[j2 + 1] = k;
     }
     for (i = 0; i < m; i++) {
-        double y = err_clamp(model ? p[order[i]].ym : p[order[i]].yi);
+        double y = err_clamp_to(model ? p[order[i]].ym : p[order[i]].yi, top_clamp);
         if (y < best) {
             if (best < 1e300)
                 fx[nf] = p[order[i]].x, fy[nf++] = best;
@@ -83,7 +88,7 @@ static void pareto_panel(svg *s, double ox, double W, double H, const char *titl
         snprintf(num, sizeof num, "%d", order[i] + 1);
         snprintf(hover, sizeof hover, "%d: %s, %.2f est. cycles/sample, %s error %s", order[i] + 1, q->label, q->x,
                  model ? "model" : "implementation", y == 0 ? "exact" : report_g3(eb, y));
-        svg_plot_dot(&pl, q->x, err_clamp(y), kind_colour[q->kind], num, hover);
+        svg_plot_dot(&pl, q->x, err_clamp_to(y, top_clamp), kind_colour[q->kind], num, hover);
     }
 }
 
@@ -123,7 +128,8 @@ static void pareto_figure(const report *r, const char *term, const point *p, int
                       "Left: each kernel's arithmetic error against the double "
                       "oracle of its own formula (max relative, over samples whose value is >= 2^-8; above 1, "
                       "or inf, drawn at the top). Right: the "
-                      "formula's model error against the exact term (0 drawn as 'exact'; kernels that are a different "
+                      "formula's model error against the exact term (0 drawn as 'exact'; diffuse: against the simulated "
+                      "Smith microsurface of each kernel's material, section Tradeoff; kernels that are a different "
                       "model rather than an approximation are left out). Blue: facet, red: peers; green: the frontier "
                       "(the least error within each cost). Numbers: the table below.");
     doc_table(r->doc, 5, "#", "candidate", "est. cycles/sample", "impl. error", "model error");

@@ -10,6 +10,11 @@
  *     and the README states the snapshot's date;
  *   - every "FACET_ERR_<NAME> (2^-k)" in include/facet.h's comments and
  *     every "#define FACET_ERR_<NAME> v /" "* 2^-k" agree with the value;
+ *   - every diffuse kernel's model-error lines in include/facet.h are the
+ *     contract lines bench/microsurface/model_error.md gives (which
+ *     tests/suites/65-microsurface.sh regenerates byte for byte from the
+ *     committed reference tables), inside that kernel's contract, and the
+ *     README's model error of a diffuse row is that contract's maximum;
  *   - contracts stated in prose that the code relies on.
  * Run from the source tree's top.  Each failure names the file, the row
  * and both values. */
@@ -280,6 +285,94 @@ static void kernel_tables(void)
               seen[k]);
 }
 
+/* ---- the diffuse kernels' model error: the microsurface simulation ------- */
+/* the kernels measured against it (bench/microsurface/msim_analyse.c) */
+static const char *const sim_kernels[] = { "diffuse_hammon", "diffuse_hammon_hybrid", "diffuse_hammon_cheap",
+                                           "diffuse_burley", "diffuse_oren_nayar", "lambert" };
+#define N_SIM ((int)(sizeof sim_kernels / sizeof sim_kernels[0]))
+static const char *sim_lines[N_SIM];  /* each kernel's contract lines, from model_error.md */
+static char sim_max[N_SIM][96];       /* "173.9% (+- 3.08%)": its whole-grid maximum */
+static char sim_ref[N_SIM][32];       /* its material */
+
+static int sim_index(const char *name)
+{
+    int i;
+    for (i = 0; i < N_SIM; i++)
+        if (!strcmp(sim_kernels[i], name))
+            return i;
+    return -1;
+}
+
+static void sim_contracts(void)
+{
+    char *md = slurp("bench/microsurface/model_error.md"), *p, *end;
+    int i;
+    CHECK(md != NULL, "bench/microsurface/model_error.md not found");
+    if (!md)
+        return;
+    p = strstr(md, "## Contract lines");
+    CHECK(p != NULL, "bench/microsurface/model_error.md has no \"## Contract lines\"");
+    if (!p || !(p = strstr(p, "```\n")))
+        return;
+    p += 4;
+    end = strstr(p, "```");
+    if (end)
+        *end = '\0';
+    /* "name:\n * ...\n * ...\n" per kernel */
+    while (*p) {
+        char *colon = strchr(p, ':'), *nl = strchr(p, '\n'), *q, *next, *m, *at, *of;
+        int k;
+        if (!colon || !nl || colon > nl)
+            break;
+        *colon = '\0';
+        k = sim_index(p);
+        CHECK(k >= 0, "bench/microsurface/model_error.md: contract lines for \"%s\", not a diffuse kernel this test knows", p);
+        q = nl + 1;
+        for (next = q; !strncmp(next, " * ", 3);) {
+            char *e = strchr(next, '\n');
+            next = e ? e + 1 : next + strlen(next);
+            if (!e)
+                break;
+        }
+        if (k >= 0) {
+            char save = *next;
+            *next = '\0';
+            sim_lines[k] = dup(q);
+            *next = save;
+            if ((m = strstr(sim_lines[k], ": max ")) && (at = strstr(m, " at alpha ")))
+                snprintf(sim_max[k], sizeof sim_max[k], "%.*s", (int)(at - m - 6), m + 6);
+            if ((of = strstr(sim_lines[k], "simulation of ")))
+                sscanf(of + 14, "%31[a-z]", sim_ref[k]);
+        }
+        p = next;
+    }
+    free(md);
+    for (i = 0; i < N_SIM; i++) {
+        char decl[96];
+        const char *d, *c;
+        CHECK(sim_lines[i] && sim_max[i][0] && sim_ref[i][0],
+              "bench/microsurface/model_error.md: no whole contract lines for %s", sim_kernels[i]);
+        if (!sim_lines[i])
+            continue;
+        snprintf(decl, sizeof decl, "\nfloat facet_%s_f32(", sim_kernels[i]);
+        d = strstr(facet_h, decl);
+        CHECK(d != NULL, "include/facet.h: no declaration of facet_%s_f32", sim_kernels[i]);
+        if (!d)
+            continue;
+        /* the kernel's contract: the comment that ends just above its declaration */
+        for (c = d; c > facet_h && strncmp(c, "\n/*", 3); c--)
+            ;
+        {
+            char *contract = dup(c);
+            if (contract)
+                contract[d - c] = '\0';
+            CHECK(contract && strstr(contract, sim_lines[i]) != NULL,
+                  "include/facet.h: the contract of %s does not have its model-error lines as "
+                  "bench/microsurface/model_error.md gives them:\n%s", sim_kernels[i], sim_lines[i]);
+        }
+    }
+}
+
 /* ---- README.md: the "which one" table ------------------------------------- */
 static void which_one(void)
 {
@@ -333,8 +426,16 @@ static void which_one(void)
         }
         CHECK(!strcmp(r->cell[cb], want), "README.md:%d: %s %s: bound \"%s\", the headers give \"%s\"", r->line, name,
               tier, r->cell[cb], want);
-        /* the model error: the snapshot's tradeoff row of the kernel */
-        {
+        /* the model error: a diffuse kernel's is its contract's maximum
+         * against the microsurface simulation; the others' the snapshot's
+         * tradeoff row of the kernel */
+        if (sim_index(name) >= 0) {
+            int k = sim_index(name);
+            char wantm[192];
+            snprintf(wantm, sizeof wantm, "%s vs the simulated microsurface (%s facets)", sim_max[k], sim_ref[k]);
+            CHECK(!strcmp(r->cell[cm], wantm), "README.md:%d: %s: model error \"%s\", its contract: \"%s\"", r->line,
+                  name, r->cell[cm], wantm);
+        } else {
             const char *m = r->cell[cm];
             int j, found = 0;
             for (j = 0; j < snap.n; j++) {
@@ -565,6 +666,7 @@ int main(void)
         return th_done();
     }
     kernel_tables();
+    sim_contracts();
     which_one();
     header_bounds();
     doc_contracts();
