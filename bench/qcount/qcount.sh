@@ -15,26 +15,59 @@
 #                           (clang 14), from LIBDIR/libfacet.a (default
 #                           build/rv64, made by tests/suites/54-rvv.sh);
 #                           linked static, so the trace's pcs are nm's
-# Prints "<core> <code> <tier> <instructions per sample>" lines.
+# Prints "<core> <code> <tier> <instructions per sample> <cycles per sample>
+# <left out per sample>" lines; the cycles (m55 only, "-" elsewhere or
+# without llvm-mca-16) are
+# llvm-mca-16's Cortex-M55 model (-mtriple=thumbv8.1m.main -mcpu=cortex-m55
+# -mattr=+mve.fp) on the executed instruction sequence of the call as
+# straight-line code (bench/qcount/m55_mca.awk): MODELLED, as the
+# Cortex-M4 figures of bench/cortexm/ are, beside the MEASURED count; the
+# last field counts the executed VMRS APSR_nzcv, FPSCR the model has no
+# data for and the cycles leave out.
 set -u
 what=${1:-m55}
 libdir=${2:-}
 dir=build/qcount
 mkdir -p "$dir"
-# count ELF TRACE LABEL: the per-sample counts of the six marked calls
+# count ELF TRACE LABEL [DIS MCADIR]: the per-sample counts of the six
+# marked calls; with DIS (objdump -d --no-show-raw-insn of ELF) and MCADIR,
+# the executed instruction texts of call i go to MCADIR/i.s
 count() {
     b=$($NM "$1" 2>/dev/null | awk '$3 == "qcount_begin" { print $1 }')
     e=$($NM "$1" 2>/dev/null | awk '$3 == "qcount_end" { print $1 }')
-    awk -v b="$b" -v e="$e" -v core="$3" '
+    awk -v b="$b" -v e="$e" -v core="$3" -v mca="${5:-}" '
+        BEGIN { k = 0 }
+        FILENAME == dis { if ($0 !~ /^ +[0-9a-f]+:\t/) next
+            ad = $0; sub(/^ +/, "", ad); sub(/:.*$/, "", ad); t = $0; sub(/^ +[0-9a-f]+:\t/, "", t)
+            while (length(ad) < 8) ad = "0" ad
+            text[ad] = t; next }
         { split($4, a, "/"); pc = a[2]
           while (length(pc) < length(b)) pc = "0" pc }
         pc == b { on = 1; n = 0; next }
-        pc == e && on { c[k++] = n; on = 0 }
-        on { n++ }
+        pc == e && on { if (mca) close(mca "/" k ".s"); c[k++] = n; on = 0 }
+        on { n++; if (mca) { p = pc; while (length(p) < 8) p = "0" p; print text[p] > (mca "/" k ".s") } }
         END {
             split("scalar f32|scalar f32_fast|scalar fx_fast|vector f32|vector f32_fast|vector fx_fast", nm, "|")
             for (i = 0; i < k; i++) printf "%s %s %.1f\n", core, nm[i + 1], c[i] / 64.0
-        }' "$2"
+        }' dis="${4:-}" ${4:+"$4"} "$2"
+}
+# mca LINES MCADIR: appends llvm-mca-16's Cortex-M55 cycles per sample of
+# call i (MCADIR/i.s) to line i of LINES ("-" without llvm-mca-16), and
+# the VMRS APSR_nzcv per sample m55_mca.awk leaves out
+mca() {
+    i=0
+    while read -r core code tier insns; do
+        c=- d=-
+        if command -v llvm-mca-16 > /dev/null 2>&1 && [ -s "$2/$i.s" ]; then
+            awk -f bench/qcount/m55_mca.awk "$2/$i.s" > "$2/$i.mca.s"
+            c=$(llvm-mca-16 -mtriple=thumbv8.1m.main -mcpu=cortex-m55 -mattr=+mve.fp -iterations=1 "$2/$i.mca.s" 2> "$2/$i.err" |
+                awk '/^Iterations:/ { it = $2 } /^Total Cycles:/ { c = $3 } END { if (it) printf "%.1f", c / it / 64 }')
+            [ -n "$c" ] || c=-
+            d=$(grep -c '^vmrs[[:space:]]*APSR_nzcv' "$2/$i.s" | awk '{ printf "%.1f", $1 / 64 }')
+        fi
+        echo "$core $code $tier $insns $c $d"
+        i=$((i + 1))
+    done < "$1"
 }
 NM=nm
 case $what in
@@ -49,8 +82,12 @@ m55)
         -o "$dir/m55.elf" || exit 1
     timeout 300 qemu-system-arm -M mps3-an547 -nographic -semihosting-config enable=on,target=native \
         -kernel "$dir/m55.elf" -singlestep -d exec,nochain -D "$dir/m55.trace" > /dev/null || exit 1
-    count "$dir/m55.elf" "$dir/m55.trace" cortex-m55 | sed 's/ vector / helium /'
+    arm-none-eabi-objdump -d --no-show-raw-insn -m armv8.1-m.main "$dir/m55.elf" > "$dir/m55.dis"
+    rm -rf "$dir/m55.d" && mkdir -p "$dir/m55.d"
+    count "$dir/m55.elf" "$dir/m55.trace" cortex-m55 "$dir/m55.dis" "$dir/m55.d" | sed 's/ vector / helium /' > "$dir/m55.calls"
     rm -f "$dir/m55.trace"
+    mca "$dir/m55.calls" "$dir/m55.d"
+    [ -n "${QCOUNT_KEEP:-}" ] || rm -rf "$dir/m55.d"
     ;;
 rv64)
     NM=riscv64-linux-gnu-nm
@@ -64,7 +101,7 @@ rv64)
     for v in ${*:-128 256 512}; do
         timeout 300 qemu-riscv64 -cpu rv64,v=true,vext_spec=v1.0,vlen=$v -singlestep -d exec,nochain \
             -D "$dir/rv64.trace" "$dir/rv64.elf" > /dev/null || exit 1
-        count "$dir/rv64.elf" "$dir/rv64.trace" rv64-vlen$v | sed 's/ vector / rvv /'
+        count "$dir/rv64.elf" "$dir/rv64.trace" rv64-vlen$v | sed -e 's/ vector / rvv /' -e 's/$/ - -/'
         rm -f "$dir/rv64.trace"
     done
     ;;

@@ -9,8 +9,12 @@
 #           changed brdf_hammon's figures by under 1.5 %)
 #   helium  Cortex-M55 (build/m55-clang, the helium objects from clang 14,
 #           as the README's Helium table): instructions executed per sample
-#           under qemu-system-arm -M mps3-an547: MEASURED instruction
-#           counts, not cycles
+#           under qemu-system-arm -M mps3-an547 (MEASURED instruction
+#           counts), and beside them llvm-mca-16's Cortex-M55 model
+#           (-mtriple=thumbv8.1m.main -mcpu=cortex-m55 -mattr=+mve.fp) on
+#           the executed trace of each call (bench/qcount/m55_mca.awk) /
+#           samples: MODELLED cycles per sample (without llvm-mca-16 the
+#           counts alone, and the status says so)
 # for every kernel and every tier the port runs (f32, f32_fast, fx,
 # fx_fast), from one image per target (bench/report/armcount_main.c).
 # Writes OUT_DIR/arm_vec.tsv ("format port kernel measure value") and
@@ -34,13 +38,14 @@ fresh() { # fresh CACHE FILES...: CACHE exists and is newer than every FILE
     [ -s "$c" ] || return 1
     for f in "$@"; do [ "$c" -nt "$f" ] || return 1; done
 }
-# counts ELF DIS TRACE LABELS [MCADIR]: per marked call "FORMAT KERNEL
+# counts ELF DIS TRACE LABELS [MCADIR [RAW]]: per marked call "FORMAT KERNEL
 # INSNS"; with MCADIR, the executed instruction texts of call i go to
-# MCADIR/i.s (branch, call and literal targets as one label)
+# MCADIR/i.s (branch, call and literal targets as one label; RAW=1: as
+# objdump prints them, for bench/qcount/m55_mca.awk)
 counts() {
     b=$($NM "$1" | awk '$3 == "armcount_begin" { print $1 }')
     e=$($NM "$1" | awk '$3 == "armcount_end" { print $1 }')
-    awk -v b="$b" -v e="$e" -v mca="${5:-}" '
+    awk -v b="$b" -v e="$e" -v mca="${5:-}" -v raw="${6:-0}" '
         BEGIN { k = 0; nl = 0 }
         function hex(s,   i, n, c) { n = 0; s = tolower(s); sub(/^0x/, "", s)
             for (i = 1; i <= length(s); i++) { c = index("0123456789abcdef", substr(s, i, 1)); if (!c) break; n = n * 16 + c - 1 }
@@ -48,6 +53,7 @@ counts() {
         FILENAME == ARGV[1] { if ($0 !~ /^ +[0-9a-f]+:\t/) next
             n = split($0, f, "\t"); a = f[1]; sub(/^ +/, "", a); sub(/:$/, "", a)
             t = f[2]; for (i = 3; i <= n; i++) t = t "\t" f[i]
+            if (raw) { text[hex(a)] = t; next }
             sub(/[ \t]*\/\/.*$/, "", t)
             if (t ~ / <[^>]*>$/) { sub(/ <[^>]*>$/, "", t); sub(/[0-9a-f]+$/, ".Lt", t) }
             m = t; sub(/[ \t].*$/, "", m)
@@ -110,25 +116,51 @@ if ! have arm-none-eabi-gcc || ! have qemu-system-arm || ! have clang; then
 elif ! $MAKE -s BUILD=build/m55-clang CC=arm-none-eabi-gcc AR=arm-none-eabi-ar PICFLAGS= HELIUM_CC=clang \
         CFLAGS="-mcpu=cortex-m55 -mfloat-abi=hard -mthumb -O2 -g" $lib > "$dir/m55.build.log" 2>&1; then
     status "helium skipped: the Cortex-M55 build of the library failed ($dir/m55.build.log)"
-elif fresh "$dir/helium.tsv" $lib bench/report/armcount_main.c bench/report/arm_targets.sh; then
+elif fresh "$dir/helium.tsv" $lib bench/report/armcount_main.c bench/report/arm_targets.sh bench/qcount/m55_mca.awk &&
+     { ! have llvm-mca-16 || grep -q ' mca-cortex-m55 ' "$dir/helium.tsv"; }; then
     cat "$dir/helium.tsv" >> "$out/arm_vec.tsv"
-    status "helium ok qemu-system-arm instruction counts (cached)"
+    status "helium ok $(cat "$dir/helium.how" 2>/dev/null) (cached)"
 else
     NM=arm-none-eabi-nm
+    m55mca="llvm-mca-16 -mtriple=thumbv8.1m.main -mcpu=cortex-m55 -mattr=+mve.fp"
     if arm-none-eabi-gcc -mcpu=cortex-m55 -mfloat-abi=hard -mthumb -O2 -std=c99 -Iinclude -DARMCOUNT_PORT=helium \
             -DN=$samples --specs=rdimon.specs -nostartfiles -T tests/cortexm/an547.ld tests/cortexm/startup_m55.c \
             bench/report/armcount_main.c $lib -lm -o "$dir/m55.elf" 2> "$dir/m55.log" &&
        timeout 300 qemu-system-arm -M mps3-an547 -nographic -semihosting-config enable=on,target=native \
             -kernel "$dir/m55.elf" -singlestep -d exec,nochain -D "$dir/m55.trace" > "$dir/m55.labels" 2>> "$dir/m55.log"; then
-        arm-none-eabi-objdump -d "$dir/m55.elf" > "$dir/m55.dis"
+        arm-none-eabi-objdump -d --no-show-raw-insn -m armv8.1-m.main "$dir/m55.elf" > "$dir/m55.dis"
         grep -v '^armcount:' "$dir/m55.labels" | tr -d '\r' > "$dir/m55.lab"
-        counts "$dir/m55.elf" "$dir/m55.dis" "$dir/m55.trace" "$dir/m55.lab" |
-            awk -v n=$samples '{ printf "%s helium %s qemu-insn %.1f\n", $1, $2, $3 / n }' > "$dir/helium.tsv.tmp"
+        rm -rf "$dir/m55.d" && mkdir -p "$dir/m55.d"
+        counts "$dir/m55.elf" "$dir/m55.dis" "$dir/m55.trace" "$dir/m55.lab" "$dir/m55.d" 1 > "$dir/m55.calls"
         rm -f "$dir/m55.trace"
+        i=0 nd=0 dmax=0 dk=
+        : > "$dir/helium.tsv.tmp"
+        while read -r fmt k insns; do
+            echo "$fmt helium $k qemu-insn $(awk -v i="$insns" -v n=$samples 'BEGIN { printf "%.1f", i / n }')" >> "$dir/helium.tsv.tmp"
+            if have llvm-mca-16; then
+                awk -f bench/qcount/m55_mca.awk "$dir/m55.d/$i.s" > "$dir/m55.d/$i.mca.s"
+                c=$($m55mca -iterations=1 "$dir/m55.d/$i.mca.s" 2>> "$dir/m55.log" |
+                    awk -v n=$samples '/^Iterations:/ {it = $2} /^Total Cycles:/ {c = $3} END { if (it) printf "%.2f", c / it / n }')
+                [ -n "$c" ] && echo "$fmt helium $k mca-cortex-m55 $c" >> "$dir/helium.tsv.tmp"
+                # VMRS APSR_nzcv, FPSCR: no data in the model, left out (m55_mca.awk)
+                d=$(grep -c '^vmrs[[:space:]]*APSR_nzcv' "$dir/m55.d/$i.s")
+                if [ "$d" -gt 0 ]; then
+                    nd=$((nd + 1))
+                    [ "$d" -gt "$dmax" ] && dmax=$d dk="$fmt $k"
+                fi
+            fi
+            i=$((i + 1))
+        done < "$dir/m55.calls"
+        rm -rf "$dir/m55.d"
+        if have llvm-mca-16; then
+            how="qemu-system-arm instruction counts; $m55mca cycles on the executed trace"
+            [ $nd -gt 0 ] && how="$how (VMRS APSR_nzcv, FPSCR left out, no model data: in $nd of $i calls, at most $(awk -v d=$dmax -v n=$samples 'BEGIN { printf "%.1f", d / n }') per sample, $dk)"
+        else how="qemu-system-arm instruction counts (no modelled cycles: llvm-mca-16 not installed)"; fi
+        echo "$how" > "$dir/helium.how"
         if [ -s "$dir/helium.tsv.tmp" ]; then
             mv "$dir/helium.tsv.tmp" "$dir/helium.tsv"
             cat "$dir/helium.tsv" >> "$out/arm_vec.tsv"
-            status "helium ok qemu-system-arm instruction counts"
+            status "helium ok $how"
         else
             status "helium skipped: no call was traced ($dir/m55.log)"
         fi

@@ -19,7 +19,8 @@ static const char *const chooser_js[] = {
 static const char *const fmts[] = { "f32", "f32_fast", "fx", "fx_fast" };
 
 /* targets: a port of this machine (measured est. cycles), an Arm vector
- * port (arm_vec.tsv: llvm-mca NEON cycles, Helium instruction counts), a
+ * port (arm_vec.tsv: llvm-mca NEON cycles, Helium instruction counts and
+ * llvm-mca-16 Cortex-M55 cycles), a
  * Cortex-M core (arm.tsv: TRM-modelled M0 cycles, llvm-mca M4 cycles), or
  * the RTL port (ports/rtl/cost.tsv: Yosys gate equivalents of the fully
  * pipelined module, and nextpnr-ice40's clock where it fits an iCE40) */
@@ -29,6 +30,8 @@ static const choose_target targets[] = {
     { "SSE2 (this machine)", "sse2", NULL, "cyc", 0, 0, NULL, NULL, 0 },
     { "NEON (aarch64, Cortex-A57 model)", NULL, NULL, "cyc (llvm-mca A57 model)", 0, 0, "neon", "mca-cortex-a57", 0 },
     { "Helium (Cortex-M55)", NULL, NULL, "instr (qemu count)", 0, 0, "helium", "qemu-insn", 0 },
+    { "Helium (Cortex-M55, llvm-mca-16 model)", NULL, NULL, "cyc (llvm-mca-16 M55 model)", 0, 0, "helium",
+      "mca-cortex-m55", 0 },
     { "Cortex-M0", NULL, "cortex-m0", "cyc (TRM model)", 1, 0, NULL, NULL, 0 },
     { "Cortex-M4", NULL, "cortex-m4", "cyc (llvm-mca)", 1, 0, NULL, NULL, 0 },
     { "Cortex-M4 with FPU", NULL, "cortex-m4", "cyc (llvm-mca)", 0, 1, NULL, NULL, 0 },
@@ -343,7 +346,9 @@ void section_choose(report *r)
          "A72, A76 and Neoverse N1) on the executed instruction trace of a 64-sample batch call under "
          "qemu-aarch64 (callees and tails included, branches free); Helium (Cortex-M55, helium objects from "
          "clang 14): instructions executed per sample of a 64-sample batch call, MEASURED under qemu-system-arm "
-         "(instructions, not cycles: a 128-bit MVE instruction takes two beats); both from "
+         "(instructions, not cycles: a 128-bit MVE instruction takes two beats), and beside them cycles per sample "
+         "MODELLED by llvm-mca-16's Cortex-M55 scheduling model (-mattr=+mve.fp) on that executed trace, "
+         "as the Cortex-M4 figures are (no fetch or branch penalty, no wait states); both from "
          "bench/report/arm_targets.sh, the ports' own tables in every tier they run; implementation error there: "
          "the scalar code's measured here (fixed point is bit-exact on every port; the ports' f32 is held to the "
          "same bounds by the 40-arm and 52-helium suites). Cortex-M in cycles per call, "

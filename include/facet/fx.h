@@ -252,7 +252,8 @@ static inline void facet_q15_from_f32_batch(int32_t *out, const float *x, size_t
 static inline float facet_f32_from_q15(int32_t q) { return FACET_CAST(float, q) * (1.0f / 32768.0f); }
 static inline float facet_f32_from_fx(uint64_t raw, int frac)
 {
-    return FACET_CAST(float, raw) / FACET_CAST(float, FACET_CAST(uint64_t, 1) << (frac & 63));
+    uint64_t one = FACET_CAST(uint64_t, 1) << (FACET_CAST(unsigned, frac) & 63u);
+    return FACET_CAST(float, raw) / FACET_CAST(float, one);
 }
 
 /* the port whose code runs the precise tier's batches (Batches, above) */

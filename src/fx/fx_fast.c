@@ -25,8 +25,9 @@ void facet_brdf_hammon_rgb_fx_fast(uint64_t out[3], int32_t nol, int32_t nov, in
     fxv_u32 FXQ_BRDF_GEOM_ARGS_(G_);
     int c;
     fxq_brdf_geometry(nol, nov, lov, alpha, FXQ_BRDF_GEOM_ARGS_(&G_));
-    for (c = 0; c < 3; c++)
+    for (c = 0; c < 3; c++) {
         out[c] = fxq_brdf_channel(FXQ_BRDF_GEOM_ARGS_(G_), f0[c], albedo[c]);
+    }
 }
 
 /* ---- the scalar port's batches: src/fx/fx_batch_scalar.h ----------------- */

@@ -21,15 +21,17 @@
     void facet_##name##_fx_batch(fx_type *out, FACET_EACH_INPUT(n, PARAM_), size_t count)  \
     {                                                                                      \
         size_t i;                                                                          \
-        for (i = 0; i < count; i++)                                                        \
+        for (i = 0; i < count; i++) {                                                      \
             out[i] = facet_##name##_fx(FACET_EACH_INPUT(n, AT_));                          \
+        }                                                                                  \
     })                                                                                     \
     FACET_IF_FX(fx_type,                                                                   \
     void facet_##name##_fx_fast_batch(fx_type *out, FACET_EACH_INPUT(n, PARAM_), size_t count) \
     {                                                                                      \
         size_t i;                                                                          \
-        for (i = 0; i < count; i++)                                                        \
+        for (i = 0; i < count; i++) {                                                      \
             out[i] = facet_##name##_fx_fast(FACET_EACH_INPUT(n, AT_));                     \
+        }                                                                                  \
     })
 #include "../core/kernels.def"
 #undef FACET_KERNEL

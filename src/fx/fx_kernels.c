@@ -27,8 +27,9 @@ void facet_brdf_hammon_rgb_fx(uint64_t out[3], int32_t nol, int32_t nov, int32_t
     fxv_u32 FXB_BRDF_GEOM_ARGS_(G_);
     int c;
     fxb_brdf_geometry(nol, nov, lov, alpha, FXB_BRDF_GEOM_ARGS_(&G_));
-    for (c = 0; c < 3; c++)
+    for (c = 0; c < 3; c++) {
         out[c] = fxb_brdf_channel(FXB_BRDF_GEOM_ARGS_(G_), f0[c], albedo[c]);
+    }
 }
 
 /* ---- the scalar port's batches: src/fx/fx_batch_scalar.h ----------------- */

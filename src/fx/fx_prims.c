@@ -18,17 +18,19 @@ static const uint16_t RSQRT_SEED[24] = { FXP_RSQRT_SEED_VALUES };
  * 2^-14 -> 2^-28 -> arithmetic limit (~2 ulp); the exact fix-up follows. */
 uint32_t facet_fx_rcp32(uint32_t d)
 {
-    uint64_t r = (uint64_t)RCP_SEED[(d >> 26) - 32] << 16, n, p;
+    uint64_t r = (uint64_t)RCP_SEED[(d >> 26) - 32u] << 16, n, p;
     uint32_t v;
     int i;
     for (i = 0; i < 3; i++) {
         uint32_t h = (uint32_t)(fxp_mul64(d, (uint32_t)r) >> 32); /* ~ 2^31 */
-        if (h <= 0x80000000u)
+        if (h <= 0x80000000u) {
             r += fxp_mul64((uint32_t)r, 0x80000000u - h) >> 31;
-        else
+        } else {
             r -= fxp_mul64((uint32_t)r, h - 0x80000000u) >> 31;
-        if (r > 0xFFFFFFFFu)
+        }
+        if (r > 0xFFFFFFFFu) {
             r = 0xFFFFFFFFu;
+        }
     }
     /* v ~ 2 r - 2^32; then make it exact: v = floor(N / d) with
      * N = 2^64 - 1 - 2^32 d = (~d) 2^32 + (2^32 - 1) */
@@ -51,7 +53,8 @@ uint32_t facet_fx_rcp32(uint32_t d)
  * multiply, one low multiply and at most two fix-ups. */
 uint32_t facet_fx_div2by1(uint32_t u1, uint32_t u0, uint32_t d, uint32_t v, uint32_t *r)
 {
-    uint64_t q = fxp_mul64(v, u1) + (((uint64_t)(u1 + 1u) << 32) | u0); /* mod 2^64 */
+    uint32_t u1p = u1 + 1u; /* mod 2^32 */
+    uint64_t q = fxp_mul64(v, u1) + (((uint64_t)u1p << 32) | u0); /* mod 2^64 */
     uint32_t q1 = (uint32_t)(q >> 32), q0 = (uint32_t)q;
     uint32_t rem = u0 - q1 * d;
     if (rem > q0) {
@@ -70,7 +73,7 @@ uint32_t facet_fx_div2by1(uint32_t u1, uint32_t u0, uint32_t d, uint32_t v, uint
  * y' = y (3 - X y^2) / 2.  Error 2^-6.5 -> 2^-12 -> 2^-23 -> ~2^-30. */
 uint32_t facet_fx_rsqrt32(uint32_t x)
 {
-    uint32_t y = (uint32_t)RSQRT_SEED[(x >> 27) - 8] << 16;
+    uint32_t y = (uint32_t)RSQRT_SEED[(x >> 27) - 8u] << 16;
     int i;
     for (i = 0; i < 3; i++) {
         uint32_t y2 = (uint32_t)(fxp_mul64(y, y) >> 32);   /* (1/X) 2^30 (y < 2^32) */
@@ -108,8 +111,9 @@ uint32_t facet_fx_isqrt64_rem(uint64_t x, uint64_t *rem)
      * one expression (tests/suites/26-compilers.sh) */
     g = fxp_sqrtrem64n_udiv((uint32_t)(xn >> 32), (uint32_t)xn, rem, RSQRT_SEED);
     g >>= s / 2;
-    if (s)
+    if (s != 0) {
         *rem = x - fxp_mul64(g, g);
+    }
     return g;
 #else
     t = (uint32_t)(xn >> 32);                                  /* [2^30, 2^32) */

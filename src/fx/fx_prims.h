@@ -37,7 +37,8 @@ static inline uint64_t fxp_mul64_portable(uint32_t a, uint32_t b)
 #if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_6SM__) || defined(FACET_FX_PORTABLE)
 #define fxp_mul64 fxp_mul64_portable
 #else
-static inline uint64_t fxp_mul64(uint32_t a, uint32_t b) { return (uint64_t)a * b; }
+static inline uint64_t fxp_mul64_native(uint32_t a, uint32_t b) { return (uint64_t)a * b; }
+#define fxp_mul64 fxp_mul64_native
 #endif
 
 /* ---- count leading zeros (x != 0) ------------------------------------------
@@ -57,7 +58,8 @@ static inline int fxp_clz32_portable(uint32_t x)
 
 #if !defined(FACET_FX_PORTABLE) && defined(__GNUC__) && \
     (defined(__x86_64__) || defined(__i386__) || defined(__aarch64__) || defined(__ARM_FEATURE_CLZ))
-static inline int fxp_clz32(uint32_t x) { return __builtin_clz(x); }
+static inline int fxp_clz32_builtin(uint32_t x) { return __builtin_clz(x); }
+#define fxp_clz32 fxp_clz32_builtin
 #else
 #define fxp_clz32 fxp_clz32_portable
 #endif
@@ -176,8 +178,9 @@ static inline uint32_t fxp_sqrtrem64n_udiv(uint32_t hi, uint32_t lo, uint64_t *r
 {
     uint32_t s1, r1, h, q, u;
     uint64_t S;
+    uint64_t top, qq;
     int64_t R;
-    s1 = ((hi >> 16) * seed[(hi >> 27) - 8]) >> 15; /* ~ sqrt(hi), 2^-6.5 relative */
+    s1 = ((hi >> 16) * seed[(hi >> 27) - 8u]) >> 15; /* ~ sqrt(hi), 2^-6.5 relative */
     s1 = (s1 + hi / s1) >> 1;                        /* >= floor(sqrt(hi)) */
     s1 = (s1 + hi / s1) >> 1;
     if (s1 > 0xFFFFu)
@@ -189,7 +192,9 @@ static inline uint32_t fxp_sqrtrem64n_udiv(uint32_t hi, uint32_t lo, uint64_t *r
     q = h / s1;
     u = ((h - q * s1) << 1) | ((lo >> 16) & 1u); /* (r1 2^16 + x1) mod 2 s1 */
     S = ((uint64_t)s1 << 16) + q;
-    R = (int64_t)(((uint64_t)u << 16) | (lo & 0xFFFFu)) - (int64_t)((uint64_t)q * q);
+    top = ((uint64_t)u << 16) | (lo & 0xFFFFu); /* named: a composite cast (MISRA 10.8) */
+    qq = (uint64_t)q * q;
+    R = (int64_t)top - (int64_t)qq;
     if (R < 0) {
         R += (int64_t)(S << 1) - 1;
         S--;
@@ -203,19 +208,21 @@ static inline uint32_t fxp_sqrtrem64n_udiv(uint32_t hi, uint32_t lo, uint64_t *r
 #endif
 
 #if !defined(FACET_FX_PORTABLE) && (defined(__x86_64__) || defined(__aarch64__))
-static inline uint32_t fxp_div64(uint32_t u1, uint32_t u0, uint32_t d, uint32_t *r)
+static inline uint32_t fxp_div64_native(uint32_t u1, uint32_t u0, uint32_t d, uint32_t *r)
 {
     uint64_t u = ((uint64_t)u1 << 32) | u0;
     *r = (uint32_t)(u % d);
     return (uint32_t)(u / d);
 }
+#define fxp_div64 fxp_div64_native
 #elif !defined(FACET_FX_PORTABLE) && defined(__ARM_FEATURE_IDIV)
 #define fxp_div64 fxp_div64_udiv
 #else
-static inline uint32_t fxp_div64(uint32_t u1, uint32_t u0, uint32_t d, uint32_t *r)
+static inline uint32_t fxp_div64_rcp(uint32_t u1, uint32_t u0, uint32_t d, uint32_t *r)
 {
     return facet_fx_div2by1(u1, u0, d, facet_fx_rcp32(d), r);
 }
+#define fxp_div64 fxp_div64_rcp
 #endif
 
 /* ---- seed tables (src/fx/fx_prims.c), the one list of their values: the

@@ -27,8 +27,9 @@
                 a[c] = albedo[c][i];                                                              \
             }                                                                                   \
             facet_brdf_hammon_rgb_##tier(o, nol[i], nov[i], lov[i], alpha[i], f, a);            \
-            for (c = 0; c < 3; c++)                                                             \
-                out[c][i] = o[c];                                                                 \
+            for (c = 0; c < 3; c++) {                                                           \
+                out[c][i] = o[c];                                                               \
+            }                                                                                   \
         }                                                                                       \
     }                                                                                           \
     void facet_brdf_hammon_rgb_##tier##_batch(uint64_t *const out[3], const int32_t *nol,       \
@@ -46,9 +47,10 @@
                                                           const int32_t *albedo, size_t n)      \
     {   /* in place: no copies (copy loops of 3 became memcpy calls at -Os on M0); */           \
         size_t i; /* out overlaps no input (facet/fx.h) */                                      \
-        for (i = 0; i < n; i++)                                                                 \
-            facet_brdf_hammon_rgb_##tier(out + 3 * i, nol[i], nov[i], lov[i], alpha[i], f0 + 3 * i, \
-                                         albedo + 3 * i);                                       \
+        for (i = 0; i < n; i++) {                                                               \
+            facet_brdf_hammon_rgb_##tier(&out[3u * i], nol[i], nov[i], lov[i], alpha[i], &f0[3u * i], \
+                                         &albedo[3u * i]);                                      \
+        }                                                                                       \
     }
 RGB_FX_(fx)
 RGB_FX_(fx_fast)

@@ -35,11 +35,19 @@
 #include "../core/kernels.def"
 #undef FACET_KERNEL
 
+/* each input array filled to FACET_FX_MAX_INPUTS (6) entries: the unused
+ * ones NULL / 0 written out (MISRA C:2012 9.3: no partly initialised array) */
+#define PAD_1(z) , z, z, z, z, z
+#define PAD_2(z) , z, z, z, z
+#define PAD_3(z) , z, z, z
+#define PAD_4(z) , z, z
+#define PAD_5(z) , z
+#define PAD_6(z)
 static const facet_fx_kernel table[] = {
 #define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...) FACET_IF_FX(fx_type, \
-    { #name, n, { FACET_MAP_INPUTS(n, FACET_IN_NAME, __VA_ARGS__) },                              \
-      { FACET_MAP_INPUTS(n, FACET_IN_LO, __VA_ARGS__) },                                          \
-      { FACET_MAP_INPUTS(n, FACET_IN_HI, __VA_ARGS__) }, fx_frac, (int)(8 * sizeof(fx_type)),      \
+    { #name, n, { FACET_MAP_INPUTS(n, FACET_IN_NAME, __VA_ARGS__) PAD_##n(NULL) },                \
+      { FACET_MAP_INPUTS(n, FACET_IN_LO, __VA_ARGS__) PAD_##n(0) },                               \
+      { FACET_MAP_INPUTS(n, FACET_IN_HI, __VA_ARGS__) PAD_##n(0) }, fx_frac, (int)sizeof(fx_type) * 8, \
       fx_format, fx_max, FACET_PRECISE_OR(fx_code, fx_##name, NULL),                               \
       FACET_PRECISE_OR(fx_code, batch_##name, NULL), FACET_PRECISE_OR(fx_code, FACET_FX_ERR_##NAME, 0), \
       fx_fast_##name, batch_fast_##name, FACET_FX_FAST_ERR_##NAME },)
@@ -57,16 +65,19 @@ const facet_fx_kernel *facet_fx_kernel_at(size_t i)
 /* strcmp() == 0 without <string.h>: the firmware sources need no libc */
 static int same_name(const char *a, const char *b)
 {
-    while (*a && *a == *b)
+    while (*a && *a == *b) {
         a++, b++;
+    }
     return *a == *b;
 }
 
 const facet_fx_kernel *facet_fx_kernel_find(const char *name)
 {
     size_t i;
-    for (i = 0; name && i < facet_fx_kernel_count(); i++)
-        if (same_name(table[i].name, name))
+    for (i = 0; name && i < facet_fx_kernel_count(); i++) {
+        if (same_name(table[i].name, name) != 0) {
             return &table[i];
+        }
+    }
     return NULL;
 }

@@ -11,6 +11,12 @@
 #   test_fx_hash       the pinned hashes of the scalar kernels on the M55
 #   test_sample_ports, test_f32_bad_input  the samplers' and the bad-input contracts
 #   test_f32_rgb, test_fx_rgb  the RGB batches (every layout, tail, alias) and RGB fixed point
+# helium-cycles: brdf_hammon's executed instructions and llvm-mca-16's
+# Cortex-M55 cycles per sample (bench/qcount/qcount.sh m55, both builds)
+# must be ports/README.md's Helium table (qemu's counts and the model are
+# deterministic; compared with the gcc 12 / clang 14 the table names, shown
+# otherwise), every call modelled (no instruction llvm-mca-16 rejects), and
+# a copy of the table with one figure changed must fail the comparison.
 # Skipped, with the reason, where the toolchain or qemu is missing.
 # lane: emulators
 . tests/lib/suite_lib.sh
@@ -52,4 +58,52 @@ if have clang; then
 else
     echo "SKIP helium-clang: clang missing (apt-get install clang)"
     echo "helium-clang: 0 passed, 0 failed, 1 skipped"
+fi
+
+# helium-cycles (above): the README's figures, "instr / cyc" per cell
+if ! have clang; then
+    echo "SKIP helium-cycles: clang missing (apt-get install clang)"
+    echo "helium-cycles: 0 passed, 0 failed, 1 skipped"
+elif ! have llvm-mca-16; then
+    echo "SKIP helium-cycles: llvm-mca-16 not installed (apt-get install llvm-16: LLVM 14 has no Cortex-M55 model)"
+    echo "helium-cycles: 0 passed, 0 failed, 1 skipped"
+else
+    cp=0 cf=0
+    cbad() { cf=$((cf + 1)); echo "FAIL helium-cycles: $*"; }
+    # row TIER GCC CLANG: the table's row of the figures in the two qcount outputs
+    row() {
+        awk -v t="$1" 'FILENAME == ARGV[1] && $3 == t { if ($2 == "scalar") s = $4 " / " $5; else g = $4 " / " $5 }
+            FILENAME == ARGV[2] && $3 == t && $2 == "helium" { c = $4 " / " $5; ci = $4; cc = $5 }
+            FILENAME == ARGV[2] && $3 == t && $2 == "scalar" { si = $4; sc = $5 }
+            END { printf "| %s | %s | %s | %s | %.2fx / %.2fx |\n", t, s, g, c, si / ci, sc / cc }' "$2" "$3"
+    }
+    # compare README: every tier's row present in README (prints the first miss)
+    compare() {
+        for t in f32 f32_fast fx_fast; do
+            r=$(row $t build/qcount/m55-gcc.txt build/qcount/m55-clang.txt)
+            grep -qF -- "$r" "$1" || { echo "$r"; return 1; }
+        done
+    }
+    if ! $MAKE -s BUILD=build/m55-clang CC=arm-none-eabi-gcc AR=arm-none-eabi-ar PICFLAGS= HELIUM_CC=clang \
+            CFLAGS="-mcpu=cortex-m55 -mfloat-abi=hard -mthumb -O2 -g" build/m55-clang/libfacet.a > build/m55-clang/lib.log 2>&1 ||
+       ! sh bench/qcount/qcount.sh m55 build/m55 > build/qcount/m55-gcc.txt 2> build/qcount/m55.log ||
+       ! sh bench/qcount/qcount.sh m55 build/m55-clang > build/qcount/m55-clang.txt 2>> build/qcount/m55.log; then
+        cbad "the count did not run (build/qcount/m55.log, build/m55-clang/lib.log)"
+    else
+        cat build/qcount/m55-gcc.txt build/qcount/m55-clang.txt | sed 's/^/helium-cycles: /'
+        if awk '$5 == "-" { exit 1 }' build/qcount/m55-gcc.txt build/qcount/m55-clang.txt; then cp=$((cp + 1))
+        else cbad "a call without modelled cycles (llvm-mca-16 rejected its trace: build/qcount/m55.d with QCOUNT_KEEP=1)"; fi
+        gv=$(arm-none-eabi-gcc -dumpversion) clv=$(clang -dumpversion)
+        if [ "${gv%%.*}" = 12 ] && [ "${clv%%.*}" = 14 ]; then
+            if miss=$(compare ports/README.md); then cp=$((cp + 1))
+            else cbad "ports/README.md's Helium table lacks the measured row: $miss"; fi
+            sed 's/^| fx_fast | \([0-9.]*\) \/ \([0-9]\)/| fx_fast | \1 \/ 9\2/' ports/README.md > build/qcount/README.broken.md
+            if cmp -s ports/README.md build/qcount/README.broken.md; then cbad "self-test: no fx_fast row to break"
+            elif compare build/qcount/README.broken.md > /dev/null; then cbad "self-test: a changed figure passes the comparison"
+            else cp=$((cp + 1)); fi
+        else
+            echo "helium-cycles: arm-none-eabi-gcc $gv, clang $clv: the figures are shown, not compared (ports/README.md: gcc 12, clang 14)"
+        fi
+    fi
+    echo "helium-cycles: $cp passed, $cf failed, 0 skipped"
 fi

@@ -193,13 +193,16 @@ for row in '| f32 scalar | oracle |' '| fx (Q15 dots) | oracle |' '| fx_fast (Q1
     grep -qF "$row" $r/bench.md && ok || bad "image-space table lacks the row '$row'"
 done
 # the chooser's Arm vector targets: NEON costed in its one unit (modelled
-# cycles; the qemu-insn line must not leak in), Helium with the reason it
-# was not costed; and without arm_vec.status the report says why
+# cycles; the qemu-insn line must not leak in), Helium (its counts and its
+# modelled cycles) with the reason it was not costed; and without
+# arm_vec.status the report says why
 awk '/^### whole BRDF/ { f = 1 } f && /^\| NEON \(aarch64, Cortex-A57 model\) \| 3 \|/ { print; exit }' $r/bench.md |
     grep -q '<= 43.2 cyc (llvm-mca A57 model): <b>brdf_hammon f32_fast</b>' && ok ||
     bad "chooser: no NEON row for brdf_hammon with its llvm-mca cost (whole BRDF table)"
 awk '/^### whole BRDF/ { f = 1 } f && /^\| Helium \(Cortex-M55\) \| 0 \| not costed: skipped: a 60-bench fixture reason \|/ { g = 1 } END { exit !g }' $r/bench.md &&
     ok || bad "chooser: no Helium row stating why it was not costed"
+awk '/^### whole BRDF/ { f = 1 } f && /^\| Helium \(Cortex-M55, llvm-mca-16 model\) \| 0 \| not costed: skipped: a 60-bench fixture reason \|/ { g = 1 } END { exit !g }' $r/bench.md &&
+    ok || bad "chooser: no row for Helium's modelled cycles stating why it was not costed"
 grep -q 'Helium: skipped: a 60-bench fixture reason' $r/bench.md && ok || bad "chooser: the Helium status is not stated"
 # the chooser's hardware target: gate equivalents and the clock (or that it
 # fits no iCE40), from the RTL cost file; and the hardware section's table
