@@ -70,7 +70,7 @@ static const char *ratio_cell(char *b, size_t n, const data_speed *num, const da
         return "-";
     r = num->min / den->min;
     if (target > 0)
-        return report_fmt(b, n, "%.2fx (>= %.2gx: %s)", r, target, r >= target ? "met" : "**missed**");
+        return report_fmt(b, n, "%.2fx (>= %.2fx: %s)", r, target, r >= target ? "met" : "**missed**");
     return report_fmt(b, n, "%.2fx", r);
 }
 
