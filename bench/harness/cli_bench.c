@@ -38,6 +38,9 @@ static void usage(FILE *f)
             "  --epochs E       timed epochs (default and minimum 11, at most 1001)\n"
             "  --quick          tiny run (for tests): few samples, short passes\n"
             "  --no-peers       facet only\n"
+            "  --peer-check     only the peers' check (bench/harness/peers.h): each term's\n"
+            "                   error against its kernel's oracle on the well-conditioned\n"
+            "                   set, which must be arithmetic error; exit 1 if one is not\n"
             "Exit status: 0 success; 1 stdout could not be written; 2 usage error (an\n"
             "unknown kernel, port or format, a port this CPU cannot run, a value out of\n"
             "range).\n");
@@ -136,6 +139,18 @@ int facet_cmd_bench(int argc, char **argv)
             o.n_time = 256;
             o.n_err = 2048;
             o.target = 5000;
+        } else if (!strcmp(a, "--peer-check")) {
+            size_t q;
+            for (q = 0; peer_sets[q]; q++) {
+                const peer_term_entry *t;
+                if (!peer_available(peer_sets[q]))
+                    continue;
+                for (t = peer_sets[q]->terms; t && t->kernel; t++)
+                    printf("%-18s %-26s %10.3g\n", peer_sets[q]->name, t->kernel, peer_arith_err(t->fn, t->kernel));
+            }
+            n = peer_check(stderr);
+            printf("peer check: %s\n", n ? "FAILED" : "every term within 2^-10 (arithmetic error), the control fails");
+            return fflush(stdout) != 0 || n != 0;
         } else if (!strcmp(a, "--no-peers")) {
             o.peers = 0;
         } else if (!strcmp(a, "--port") && i + 1 < argc) {

@@ -39,10 +39,25 @@
  * ggx_d; smith_vis_hammon and smith_g2_hammon: Hammon's lerp;
  * fresnel_schlick; diffuse_hammon: N.H from the dots, (0.5 + N.H) / N.H)
  * and the exact Smith terms smith_g1, smith_g2, smith_vis (sqrtf; textbook
- * through Lambda), smith_g1_hammon.  All peers clamp N.L, N.V
- * to [FACET_COS_MIN, 1] and alpha to [FACET_ALPHA_MIN, 1] like facet, so all
- * are measured on the same domain; none has a NaN rule or exact peak
- * arithmetic (their error near the specular peak at small alpha is theirs).
+ * through Lambda), smith_g1_hammon.  The shader sets (not the textbook
+ * one) also have every other kernel of the list, each its own formula from
+ * its own inputs, as a shader writes it (peers_shader.c says which form):
+ * fresnel_cook_torrance (the Fresnel equations as printed, eta from sqrt
+ * f0), fresnel_schlick_f90, fresnel_schlick_sg (exp2f), blinn_phong_d
+ * (powf), beckmann_d (expf), ggx_aniso_d (UE4's form), gtr_d (powf, c by
+ * expm1f), smith_g2_uncorrelated, smith_g1_gtr (the five closed forms with
+ * logf / log1pf and the pchip interpolation), g_implicit, g_neumann
+ * (N.L N.V / max), g_cook_torrance, g_kelemen, smith_g1_beckmann
+ * (Walter's rational), smith_g1_schlick_beckmann, smith_vis_joint_approx
+ * (UE4's form), smith_vis_fit (facet/detail/vis_fit.h's constants),
+ * diffuse_burley, diffuse_oren_nayar, diffuse_hammon_hybrid,
+ * diffuse_hammon_cheap, lambert.  All peers clamp their inputs to the
+ * kernel's domain (N.L, N.V to [FACET_COS_MIN, 1], alpha to
+ * [FACET_ALPHA_MIN, 1], L.V, T.H, B.H to [-1, 1], gamma to [0, 4], the rest
+ * to [0, 1]) like facet, so all are measured on the same domain; none has a
+ * NaN rule or exact peak arithmetic (their error near the specular peak at
+ * small alpha, and at f0 -> 0 for Cook-Torrance's Fresnel, is theirs).
+ * peer_check (below) proves each term is its kernel's formula.
  */
 #ifndef FACET_BENCH_PEERS_H
 #define FACET_BENCH_PEERS_H
@@ -89,9 +104,16 @@ int peer_available(const peer_set *p);
 /* Returns the peer's function for facet kernel `name`, or NULL. */
 peer_term_fn peer_term(const peer_set *p, const char *name);
 /* Every peer's terms name a kernel of the list (a misspelt or removed one
- * would drop its rows silently): prints each that does not to err and
- * returns their count. */
+ * would drop its rows silently), and every term of a peer this CPU runs
+ * computes its kernel's formula: on a well-conditioned set (peers.c) its
+ * error against the kernel's oracle is arithmetic error, <= 2^-10 (every
+ * peer measures <= 1.4e-5 there; another model is off by 3% or more); a
+ * control (the smith_vis_fit peer judged as exact smith_vis, 3.1% apart)
+ * proves in every run that the check fails another model.
+ * Prints each failure to err and returns their count. */
 int peer_check(FILE *err);
+/* the max relative error of fn against kernel's oracle on that set */
+double peer_arith_err(peer_term_fn fn, const char *kernel);
 
 /* The samplers' textbook peer (peers_sample.c, built like the textbook
  * peer: tests/lib/sample_peer.h's direct libm formulas, -O2): out[o][i] =

@@ -21,9 +21,10 @@
 #include "cycles.h"
 #include "peers.h"
 #include "facet_bench.h"
+#include "speed.h"
 
 
-#define MAX_ROUNDS 1001
+#define MAX_ROUNDS SPEED_MAX_ROUNDS
 #define MAX_ENTRIES 24
 
 /* one kernel's batch function in a port table, called on SoA columns */
@@ -78,16 +79,6 @@ static double max_err(entry *e, size_t ki, float *out, const float *const *in, c
     return m;
 }
 
-/* the peer of width w (its facet port's name), fast-math or not */
-static const entry *find(const entry *e, int ne, const char *port, const char *tier)
-{
-    int i;
-    for (i = 0; i < ne; i++)
-        if (!strcmp(e[i].port, port) && !strcmp(e[i].tier, tier))
-            return &e[i];
-    return NULL;
-}
-
 static void usage(FILE *f)
 {
     fprintf(f, "usage: facet-bench speed [KERNEL] [--rounds R] [--samples N] [--tsv FILE] [--quick]\n"
@@ -102,7 +93,13 @@ static void usage(FILE *f)
                "  --quick       5 rounds of 256 samples (tests)\n", MAX_ROUNDS);
 }
 
-int facet_bench_speed(int argc, char **argv)
+size_t speed_pass_bytes(const char *kernel, size_t n)
+{
+    const facet_kernel *k = facet_kernel_find(kernel);
+    return k ? n * (size_t)(k->n_inputs + 1) * sizeof(float) : 0;
+}
+
+int speed_run(const char *only, int rounds, size_t n, speed_sink sink, void *ctx)
 {
     static const struct { const char *name; const facet_f32_port *f32, *fast; } ports[] = {
         { "avx512", &facet_port_avx512_f32, &facet_port_avx512_f32_fast },
@@ -112,45 +109,14 @@ int facet_bench_speed(int argc, char **argv)
         { "scalar", &facet_port_scalar_f32, &facet_port_scalar_f32_fast },
     };
     static entry e[MAX_ENTRIES];
-    int rounds = 41, a, quick = 0;
-    size_t n = 4096, ki, nk = facet_kernel_count();
-    const char *only = NULL, *tsv = NULL;
-    FILE *tf = NULL;
+    size_t ki, nk = facet_kernel_count();
     float *in[FACET_MAX_INPUTS], *pin[FACET_MAX_INPUTS], *out;
     double *want, *pwant;
-    for (a = 1; a < argc; a++) {
-        if (!strcmp(argv[a], "--rounds") && a + 1 < argc)
-            rounds = atoi(argv[++a]);
-        else if (!strcmp(argv[a], "--samples") && a + 1 < argc)
-            n = (size_t)atol(argv[++a]);
-        else if (!strcmp(argv[a], "--tsv") && a + 1 < argc)
-            tsv = argv[++a];
-        else if (!strcmp(argv[a], "--quick"))
-            quick = 1;
-        else if (!strcmp(argv[a], "--help")) {
-            usage(stdout);
-            return 0;
-        } else if (argv[a][0] != '-' && !only && facet_kernel_find(argv[a]))
-            only = argv[a];
-        else {
-            usage(stderr);
-            return 2;
-        }
-    }
-    if (quick) {
-        rounds = 5;
-        n = 256;
-    }
-    if (rounds < 5 || rounds > MAX_ROUNDS || n < 16 || n > 65536) {
-        usage(stderr);
-        return 2;
-    }
-    n = n / 16 * 16;
-    if (tsv && !(tf = fopen(tsv, "w"))) {
-        fprintf(stderr, "facet-bench speed: cannot write %s\n", tsv);
-        return 1;
-    }
-    cyc_init();
+    int a;
+    if (rounds < 5 || rounds > MAX_ROUNDS || n < 16 || n > 65536 || n % 16 || (only && !facet_kernel_find(only)))
+        return -1;
+    if (peer_check(stderr) != 0)
+        return -2;
     for (a = 0; a < FACET_MAX_INPUTS; a++) {
         in[a] = malloc(n * sizeof(float));
         pin[a] = malloc(n * sizeof(float));
@@ -158,16 +124,6 @@ int facet_bench_speed(int argc, char **argv)
     out = malloc(n * sizeof(float));
     want = malloc(n * sizeof(double));
     pwant = malloc(n * sizeof(double));
-    printf("# facet-bench speed: %s per sample (clock %s%s), %zu samples per pass (%zu KiB of inputs and\n"
-           "# output: %s), %d interleaved rounds, min and median; pinned to cpu %d; ticks per core cycle %.3f\n",
-           cyc_unit(), cyc_source(), cyc_is_cycles() ? "" : ", not core cycles", n, n * 7 * 4 / 1024,
-           n * 7 * 4 <= 32768 ? "L1-resident" : "L2-resident, beyond a 32-48 KiB L1", rounds, cyc_cpu(),
-           cyc_ticks_per_cycle());
-    printf("%-22s %-16s %-8s %9s %9s %10s %10s\n", "kernel", "port", "tier", "min", "median", "max_err",
-           "peak_err");
-    if (tf)
-        fprintf(tf, "# kernel\tport\ttier\twidth\tmin\tmedian\tmax_err\tpeak_err\t(%s per sample, %zu samples, "
-                    "%d interleaved rounds)\n", cyc_unit(), n, rounds);
     for (ki = 0; ki < nk; ki++) {
         const facet_kernel *k = facet_kernel_at(ki);
         smp_rng r = { 0x5eed0021ull + ki };
@@ -240,32 +196,19 @@ int facet_bench_speed(int argc, char **argv)
                 e[i].t[j] = (double)(cyc_now() - t0) / (double)n;
             }
         for (i = 0; i < ne; i++) {
+            speed_row row;
             qsort(e[i].t, (size_t)rounds, sizeof(double), cmp_d);
             e[i].min = e[i].t[0];
             e[i].median = e[i].t[rounds / 2];
-            printf("%-22s %-16s %-8s %9.3f %9.3f %10.3g %10.3g\n", k->name, e[i].port, e[i].tier, e[i].min,
-                   e[i].median, e[i].err, e[i].err_peak);
-            if (tf)
-                fprintf(tf, "%s\t%s\t%s\t%s\t%.4f\t%.4f\t%.4g\t%.4g\n", k->name, e[i].port, e[i].tier, e[i].width,
-                        e[i].min, e[i].median, e[i].err, e[i].err_peak);
-        }
-        /* the ratios the targets are stated in, from the minima */
-        for (p = 0; p < sizeof ports / sizeof ports[0]; p++) {
-            const entry *f = find(e, ne, ports[p].name, "f32"), *ff = find(e, ne, ports[p].name, "f32_fast");
-            char pn[40];
-            const entry *pk, *pf;
-            if (!f || !ff)
-                continue;
-            snprintf(pn, sizeof pn, "shader_%s", ports[p].name);
-            pk = find(e, ne, pn, "peer");
-            snprintf(pn, sizeof pn, "shader_%s_fm", ports[p].name);
-            pf = find(e, ne, pn, "peer");
-            printf("%-22s %-16s ratios (min): f32_fast/f32 %.2fx", k->name, ports[p].name, f->min / ff->min);
-            if (pf)
-                printf("; vs %s: f32 %.2fx, f32_fast %.2fx", pn, pf->min / f->min, pf->min / ff->min);
-            if (pk)
-                printf("; vs shader_%s: f32 %.2fx, f32_fast %.2fx", ports[p].name, pk->min / f->min, pk->min / ff->min);
-            printf("\n");
+            row.kernel = k->name;
+            row.port = e[i].port;
+            row.tier = e[i].tier;
+            row.width = e[i].width;
+            row.min = e[i].min;
+            row.median = e[i].median;
+            row.err = e[i].err;
+            row.err_peak = e[i].err_peak;
+            sink(&row, ctx);
         }
     }
     for (a = 0; a < FACET_MAX_INPUTS; a++) {
@@ -275,7 +218,131 @@ int facet_bench_speed(int argc, char **argv)
     free(out);
     free(want);
     free(pwant);
-    if (tf && fclose(tf) != 0)
+    return 0;
+}
+
+/* ---- the verb: the rows as a table, each kernel's ratios after its rows ---- */
+
+typedef struct verb_ctx {
+    FILE *tsv;
+    speed_row rows[MAX_ENTRIES];
+    char names[MAX_ENTRIES][3][40];
+    int n;
+} verb_ctx;
+
+static const speed_row *vfind(const verb_ctx *c, const char *port, const char *tier)
+{
+    int i;
+    for (i = 0; i < c->n; i++)
+        if (!strcmp(c->rows[i].port, port) && !strcmp(c->rows[i].tier, tier))
+            return &c->rows[i];
+    return NULL;
+}
+
+/* the ratios the targets are stated in, from the minima */
+static void ratios(verb_ctx *c)
+{
+    static const char *const widths[] = { "avx512", "avx2", "sse2", "neon", "scalar" };
+    size_t p;
+    for (p = 0; c->n && p < sizeof widths / sizeof widths[0]; p++) {
+        const speed_row *f = vfind(c, widths[p], "f32"), *ff = vfind(c, widths[p], "f32_fast"), *pk, *pf;
+        char pn[40];
+        if (!f || !ff)
+            continue;
+        snprintf(pn, sizeof pn, "shader_%s", widths[p]);
+        pk = vfind(c, pn, "peer");
+        snprintf(pn, sizeof pn, "shader_%s_fm", widths[p]);
+        pf = vfind(c, pn, "peer");
+        printf("%-22s %-16s ratios (min): f32_fast/f32 %.2fx", f->kernel, widths[p], f->min / ff->min);
+        if (pf)
+            printf("; vs %s: f32 %.2fx, f32_fast %.2fx", pn, pf->min / f->min, pf->min / ff->min);
+        if (pk)
+            printf("; vs shader_%s: f32 %.2fx, f32_fast %.2fx", widths[p], pk->min / f->min, pk->min / ff->min);
+        printf("\n");
+    }
+    c->n = 0;
+}
+
+static void verb_sink(const speed_row *r, void *ctx)
+{
+    verb_ctx *c = ctx;
+    if (c->n && strcmp(c->names[0][0], r->kernel))
+        ratios(c);
+    printf("%-22s %-16s %-8s %9.3f %9.3f %10.3g %10.3g\n", r->kernel, r->port, r->tier, r->min, r->median, r->err,
+           r->err_peak);
+    if (c->tsv)
+        fprintf(c->tsv, "%s\t%s\t%s\t%s\t%.4f\t%.4f\t%.4g\t%.4g\n", r->kernel, r->port, r->tier, r->width, r->min,
+                r->median, r->err, r->err_peak);
+    if (c->n < MAX_ENTRIES) {
+        c->rows[c->n] = *r;
+        snprintf(c->names[c->n][0], 40, "%s", r->kernel);
+        snprintf(c->names[c->n][1], 40, "%s", r->port);
+        snprintf(c->names[c->n][2], 40, "%s", r->tier);
+        c->rows[c->n].kernel = c->names[c->n][0];
+        c->rows[c->n].port = c->names[c->n][1];
+        c->rows[c->n].tier = c->names[c->n][2];
+        c->n++;
+    }
+}
+
+int facet_bench_speed(int argc, char **argv)
+{
+    static verb_ctx c;
+    int rounds = 41, a, quick = 0, rc;
+    size_t n = 4096, bytes;
+    const char *only = NULL, *tsv = NULL;
+    for (a = 1; a < argc; a++) {
+        if (!strcmp(argv[a], "--rounds") && a + 1 < argc)
+            rounds = atoi(argv[++a]);
+        else if (!strcmp(argv[a], "--samples") && a + 1 < argc)
+            n = (size_t)atol(argv[++a]);
+        else if (!strcmp(argv[a], "--tsv") && a + 1 < argc)
+            tsv = argv[++a];
+        else if (!strcmp(argv[a], "--quick"))
+            quick = 1;
+        else if (!strcmp(argv[a], "--help")) {
+            usage(stdout);
+            return 0;
+        } else if (argv[a][0] != '-' && !only && facet_kernel_find(argv[a]))
+            only = argv[a];
+        else {
+            usage(stderr);
+            return 2;
+        }
+    }
+    if (quick) {
+        rounds = 5;
+        n = 256;
+    }
+    if (rounds < 5 || rounds > MAX_ROUNDS || n < 16 || n > 65536) {
+        usage(stderr);
+        return 2;
+    }
+    n = n / 16 * 16;
+    memset(&c, 0, sizeof c);
+    if (tsv && !(c.tsv = fopen(tsv, "w"))) {
+        fprintf(stderr, "facet-bench speed: cannot write %s\n", tsv);
         return 1;
-    return fflush(stdout) != 0;
+    }
+    cyc_init();
+    bytes = speed_pass_bytes(only ? only : "brdf_hammon", n);
+    printf("# facet-bench speed: %s per sample (clock %s%s), %zu samples per pass (%zu KiB of inputs and\n"
+           "# output for %s: %s), %d interleaved rounds, min and median; pinned to cpu %d; ticks per core cycle %.3f\n",
+           cyc_unit(), cyc_source(), cyc_is_cycles() ? "" : ", not core cycles", n, bytes / 1024,
+           only ? only : "brdf_hammon", bytes <= 32768 ? "L1-resident" : "L2-resident, beyond a 32-48 KiB L1", rounds,
+           cyc_cpu(), cyc_ticks_per_cycle());
+    printf("%-22s %-16s %-8s %9s %9s %10s %10s\n", "kernel", "port", "tier", "min", "median", "max_err",
+           "peak_err");
+    if (c.tsv)
+        fprintf(c.tsv, "# kernel\tport\ttier\twidth\tmin\tmedian\tmax_err\tpeak_err\t(%s per sample, %zu samples, "
+                       "%d interleaved rounds)\n", cyc_unit(), n, rounds);
+    rc = speed_run(only, rounds, n, verb_sink, &c);
+    ratios(&c);
+    if (rc == -2) {
+        fprintf(stderr, "facet-bench speed: the peer check failed (above)\n");
+        return 1;
+    }
+    if (c.tsv && fclose(c.tsv) != 0)
+        return 1;
+    return rc != 0 || fflush(stdout) != 0;
 }

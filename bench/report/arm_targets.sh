@@ -15,6 +15,10 @@
 #           the executed trace of each call (bench/qcount/m55_mca.awk) /
 #           samples: MODELLED cycles per sample (without llvm-mca-16 the
 #           counts alone, and the status says so)
+#   rvv     RV64GCV (build/rv64, the rvv objects from clang 14, as
+#           bench/qcount's RVV table): instructions executed per sample
+#           under qemu-riscv64 -cpu rv64,v=true,vlen=128: MEASURED
+#           instruction counts, not cycles (the speed table's RVV column)
 # for every kernel and every tier the port runs (f32, f32_fast, fx,
 # fx_fast), from one image per target (bench/report/armcount_main.c).
 # Writes OUT_DIR/arm_vec.tsv ("format port kernel measure value") and
@@ -166,6 +170,37 @@ else
         fi
     else
         status "helium skipped: the counting image failed to build or run ($dir/m55.log)"
+    fi
+fi
+# ---- RVV (RV64GCV, VLEN 128): executed instructions under qemu-riscv64 ------------
+lib=build/rv64/libfacet.a
+if ! have riscv64-linux-gnu-gcc || ! have qemu-riscv64 || ! have clang; then
+    status "rvv skipped: not installed: $(missing riscv64-linux-gnu-gcc qemu-riscv64 clang)"
+elif ! $MAKE -s BUILD=build/rv64 CC=riscv64-linux-gnu-gcc CFLAGS="-O2 -g" $lib > "$dir/rv64.build.log" 2>&1; then
+    status "rvv skipped: the riscv64 cross build of the library failed ($dir/rv64.build.log)"
+elif fresh "$dir/rvv.tsv" $lib bench/report/armcount_main.c bench/report/arm_targets.sh; then
+    cat "$dir/rvv.tsv" >> "$out/arm_vec.tsv"
+    status "rvv ok qemu-riscv64 instruction counts at VLEN 128 (cached)"
+else
+    NM=riscv64-linux-gnu-nm
+    if riscv64-linux-gnu-gcc -O2 -std=c99 -static -Iinclude -DARMCOUNT_PORT=rvv -DN=$samples \
+            bench/report/armcount_main.c $lib -lm -o "$dir/rvv.elf" 2> "$dir/rvv.log" &&
+       timeout 600 qemu-riscv64 -cpu rv64,v=true,vext_spec=v1.0,vlen=128 -singlestep -d exec,nochain \
+            -D "$dir/rvv.trace" "$dir/rvv.elf" > "$dir/rvv.labels" 2>> "$dir/rvv.log"; then
+        riscv64-linux-gnu-objdump -d "$dir/rvv.elf" > "$dir/rvv.dis"
+        grep -v '^armcount:' "$dir/rvv.labels" > "$dir/rvv.lab"
+        counts "$dir/rvv.elf" "$dir/rvv.dis" "$dir/rvv.trace" "$dir/rvv.lab" |
+            awk -v n=$samples '{ printf "%s rvv %s qemu-insn %.1f\n", $1, $2, $3 / n }' > "$dir/rvv.tsv.tmp"
+        rm -f "$dir/rvv.trace"
+        if [ -s "$dir/rvv.tsv.tmp" ]; then
+            mv "$dir/rvv.tsv.tmp" "$dir/rvv.tsv"
+            cat "$dir/rvv.tsv" >> "$out/arm_vec.tsv"
+            status "rvv ok qemu-riscv64 instruction counts at VLEN 128"
+        else
+            status "rvv skipped: no call was traced ($dir/rvv.log)"
+        fi
+    else
+        status "rvv skipped: the counting image failed to build or run ($dir/rvv.log)"
     fi
 fi
 exit 0

@@ -8,7 +8,9 @@
  *           mean_rel max_rel_vis arg[0..5] got want n has_lsb max_lsb
  *           mean_lsb big_rel n_lsb  bound within  thr: min median max
  *           spread epochs noisy  has_lat  lat: (the same six)
- *   timing  key  min median max spread epochs noisy */
+ *   timing  key  min median max spread epochs noisy
+ *   speedrun  rounds samples_per_pass
+ *   speed   kernel port tier width min median err err_peak */
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE
 #endif
@@ -152,6 +154,28 @@ void data_add_row(const bench_row *r, void *ctx)
     fix_rows(d);
 }
 
+void data_add_speed(const speed_row *r, void *ctx)
+{
+    report_data *d = ctx;
+    data_speed *x;
+    d->speed = grow(d->speed, &d->cap_speed, d->n_speed, sizeof *d->speed);
+    x = &d->speed[d->n_speed++];
+    snprintf(x->kernel, sizeof x->kernel, "%s", r->kernel);
+    snprintf(x->port, sizeof x->port, "%s", r->port);
+    snprintf(x->tier, sizeof x->tier, "%s", r->tier);
+    snprintf(x->width, sizeof x->width, "%s", r->width);
+    x->min = r->min, x->median = r->median, x->err = r->err, x->err_peak = r->err_peak;
+}
+
+const data_speed *data_speed_of(const report_data *d, const char *kernel, const char *port, const char *tier)
+{
+    int i;
+    for (i = 0; i < d->n_speed; i++)
+        if (!strcmp(d->speed[i].kernel, kernel) && !strcmp(d->speed[i].port, port) && !strcmp(d->speed[i].tier, tier))
+            return &d->speed[i];
+    return NULL;
+}
+
 void data_set_clock(report_data *d)
 {
     snprintf(d->clock.source, sizeof d->clock.source, "%s", cyc_source());
@@ -216,6 +240,13 @@ int data_save(const report_data *d, const char *path)
         fprintf(f, "timing\t%s", d->timings[i].key);
         put_stat(f, &d->timings[i].s);
         fputc('\n', f);
+    }
+    if (d->n_speed)
+        fprintf(f, "speedrun\t%d\t%ld\n", d->speed_rounds, d->speed_n);
+    for (i = 0; i < d->n_speed; i++) {
+        const data_speed *x = &d->speed[i];
+        fprintf(f, "speed\t%s\t%s\t%s\t%s\t%.17g\t%.17g\t%.17g\t%.17g\n", x->kernel, x->port, x->tier, x->width,
+                x->min, x->median, x->err, x->err_peak);
     }
     return fclose(f) ? -1 : 0;
 }
@@ -295,6 +326,17 @@ static int read_measured(report_data *d, const char *path)
             r.has_lat = atoi(*p++);
             get_stat(p, &r.lat);
             data_add_row(&r, d);
+        } else if (!strcmp(fld[0], "speedrun") && n == 3) {
+            d->speed_rounds = atoi(fld[1]);
+            d->speed_n = strtol(fld[2], NULL, 10);
+        } else if (!strcmp(fld[0], "speed") && n == 9) {
+            speed_row r;
+            r.kernel = fld[1], r.port = fld[2], r.tier = fld[3], r.width = fld[4];
+            r.min = strtod(fld[5], NULL);
+            r.median = strtod(fld[6], NULL);
+            r.err = strtod(fld[7], NULL);
+            r.err_peak = strtod(fld[8], NULL);
+            data_add_speed(&r, d);
         } else if (!strcmp(fld[0], "timing") && n == 8) {
             d->timings = grow(d->timings, &d->cap_timings, d->n_timings, sizeof *d->timings);
             snprintf(d->timings[d->n_timings].key, sizeof d->timings[0].key, "%s", fld[1]);
@@ -381,6 +423,7 @@ int data_open(report_data *d, const char *outdir, const char *replay)
 
 void data_close(report_data *d)
 {
+    free(d->speed), d->speed = NULL;
     free(d->rows), free(d->timings), free(d->mca), free(d->sizes), free(d->arm), free(d->armvec), free(d->rtl);
     d->rows = NULL, d->timings = NULL, d->mca = d->sizes = d->arm = d->armvec = NULL, d->rtl = NULL;
 }

@@ -20,6 +20,7 @@
 #include <stddef.h>
 #include "harness/bench.h"
 #include "harness/cycles.h"
+#include "harness/speed.h"
 
 /* a bench row that owns its strings */
 typedef struct data_row {
@@ -55,6 +56,12 @@ typedef struct data_rtl {
     double latency, cells, gate_eq, depth, luts, dsps, fmax_mhz, lcs, ebr, ffs, luts_no_dsp;
 } data_rtl;
 
+/* a row of the interleaved speed run (harness/speed.h) that owns its strings */
+typedef struct data_speed {
+    char kernel[32], port[32], tier[16], width[16];
+    double min, median, err, err_peak;
+} data_speed;
+
 typedef struct report_data {
     const char *outdir;
     int quick, replayed;
@@ -63,6 +70,11 @@ typedef struct report_data {
     int n_rows, cap_rows;
     data_timing *timings;
     int n_timings, cap_timings;
+    /* the interleaved speed run (speed_run): its rows, rounds and samples
+     * per pass (0: none in this set) */
+    data_speed *speed;
+    int n_speed, cap_speed, speed_rounds;
+    long speed_n;
     data_tsv *mca, *sizes, *arm, *armvec;
     int n_mca, n_sizes, n_arm, n_armvec;
     data_rtl *rtl;
@@ -78,6 +90,11 @@ int data_open(report_data *d, const char *outdir, const char *replay);
 void data_set_clock(report_data *d);
 /* a bench_run sink: keeps a copy of the row */
 void data_add_row(const bench_row *r, void *report_data_ptr);
+/* a speed_run sink: keeps a copy of the row (set speed_rounds and speed_n
+ * beside it) */
+void data_add_speed(const speed_row *r, void *report_data_ptr);
+/* the speed row of (kernel, port or peer, tier), or NULL */
+const data_speed *data_speed_of(const report_data *d, const char *kernel, const char *port, const char *tier);
 /* Writes the measured set to path; 0 on success. */
 int data_save(const report_data *d, const char *path);
 void data_close(report_data *d);

@@ -49,6 +49,7 @@ static const struct {
     { "hardware", section_rtl },
     { "rasterizer", section_raster },
     { "targets", section_targets },
+    { "speed", section_speed },
     { "kernels", section_kernels },
 };
 
@@ -325,6 +326,14 @@ int facet_bench_report(int argc, char **argv)
         data_set_clock(&data);
         report_say("benchmarks: every kernel x format x port x path, and the peers ...");
         if (bench_run(&o, data_add_row, &data) < 0)
+            return 1;
+        /* the speed table's run: both f32 tiers and the same-formula peers,
+         * interleaved (harness/speed.h; sec_speed.c) */
+        data.speed_rounds = quick ? 5 : 101;
+        data.speed_n = quick ? 256 : 4096;
+        report_say("speed: both f32 tiers against the same-formula peers, %d interleaved rounds ...",
+                   data.speed_rounds);
+        if (speed_run(NULL, data.speed_rounds, (size_t)data.speed_n, data_add_speed, &data) != 0)
             return 1;
     }
     report_say("model-error sweep of the approximations ...");

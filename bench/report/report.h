@@ -48,6 +48,7 @@ void section_arm(report *r);        /* Cortex-M figures */
 void section_rtl(report *r);        /* the RTL port: cells, depth, iCE40 LUTs and clock */
 void section_raster(report *r);     /* the software rasterizer */
 void section_targets(report *r);    /* the targets, met or not */
+void section_speed(report *r);      /* both f32 tiers vs the same-formula peers, interleaved; the vector ports' tiers */
 void section_kernels(report *r);    /* every kernel x format x port: error and cost */
 
 #endif

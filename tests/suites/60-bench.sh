@@ -76,6 +76,14 @@ printf '%s' "$sj" | grep -q '"kernel": "ggx_sample_vndf", "format": "f32", "port
     bad "bench ggx_sample_vndf: no scalar inline row"
 n_bad=$(printf '%s' "$sout" | grep -c '"within_bound": false')
 [ "$n_bad" -eq 0 ] && ok || bad "$n_bad ggx_sample_vndf rows outside the bound"
+# the peers' check (bench/harness/peers.c): every peer term of this CPU is
+# its kernel's formula (arithmetic error only on the well-conditioned set),
+# and its control, a peer of another model, fails
+pc=$(build/facet-bench bench --peer-check 2>&1); rc=$?
+[ $rc -eq 0 ] && printf '%s\n' "$pc" | grep -q '^peer check: every term within 2^-10' && ok ||
+    { printf '%s\n' "$pc" | grep -v '^[a-z_0-9]* *[a-z_0-9]* *[0-9.e-]*$' | head -5; bad "facet-bench bench --peer-check (exit $rc)"; }
+npc=$(printf '%s\n' "$pc" | awk '$1 ~ /^shader/ { n++ } END { print n + 0 }')
+[ "$npc" -ge $(( $(build/facet list | grep -vc -- '->') )) ] && ok || bad "--peer-check: $npc shader peer terms, want at least one per kernel"
 # text form and bad input
 build/facet-bench bench lambert --quick --no-peers | grep -qE '^lambert +f32 +scalar +batch' && ok || bad "text table"
 build/facet-bench bench nosuch >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "unknown kernel: want exit 2"
@@ -262,6 +270,19 @@ build/facet-bench report --facts $kernels no_such_kernel > /dev/null 2> $r.facts
 build/facet-bench report --facts $(printf '%s\n' $kernels | sed 1d) > /dev/null 2> $r.facts.err; rc=$?
 [ $rc -eq 1 ] && grep -q 'which the kernel list lacks' $r.facts.err && ok ||
     bad "an entry for a kernel the list lacks passes the check (exit $rc)"
+# the speed table (bench/report/sec_speed.c, from the report run's own
+# interleaved speed run): a brdf_hammon row per x86 width this CPU runs with
+# its targets beside the ratios, and the vector ports' table from the
+# fixture's NEON costs (Helium skipped, no RVV: "-")
+grep -q '^## Speed: both f32 tiers against the same-formula peers (interleaved rounds)$' $r/bench.md && ok ||
+    bad "no speed section in bench.md"
+for w in avx2 avx512; do
+    build/facet eval --help | sed -n 's/^ports compiled in://p' | sed 's/[a-z0-9]* (not on this CPU)//g' | grep -qw $w || continue
+    grep -qE "^\| brdf_hammon \| [0-9]+ / [0-9]+ \| $w \| [0-9.]+ \([0-9.]+\) \| [0-9.]+ \([0-9.]+\) \| [0-9.]+ \([0-9.]+\) \| [0-9.]+ \([0-9.]+\) \| [0-9.]+x \(>= 1\.30x: (met|\*\*missed\*\*)\) \|" $r/bench.md &&
+        ok || bad "speed table: no brdf_hammon $w row with the 1.3x target"
+done
+grep -qE '^\| brdf_hammon \| [0-9]+ / [0-9]+ \| 44\.5 / 43\.2 = 1\.03x \| - \| - \| met \|$' $r/bench.md && ok ||
+    bad "speed table: no vector-port row for brdf_hammon from the NEON fixture"
 # the measured set: a report rendered from the set the quick run recorded
 # (--replay OUTDIR/measured.tsv) is the quick run's report, byte for byte
 # (a measurement the set does not record would differ: timings vary)
