@@ -25,11 +25,15 @@
 #include "facet/common.h"
 #include "facet/f16.h"
 
+/* a binary16 constant (__extension__: _Float16 is not ISO C, and the
+ * header compiles under -pedantic) */
+#define FACET_AVX512FP16_C_(x) _mm512_set1_ph(__extension__ FACET_CAST(_Float16, (x)))
+
 typedef struct facet_avx512fp16_w {
     __m512 lo, hi;
 } facet_avx512fp16_w;
 
-FACET_INLINE __m512h facet_avx512fp16_h_set(float x) { return _mm512_set1_ph(FACET_CAST(_Float16, x)); }
+FACET_INLINE __m512h facet_avx512fp16_h_set(float x) { return FACET_AVX512FP16_C_(x); }
 FACET_INLINE __m512h facet_avx512fp16_h_add(__m512h a, __m512h b) { return _mm512_add_ph(a, b); }
 FACET_INLINE __m512h facet_avx512fp16_h_sub(__m512h a, __m512h b) { return _mm512_sub_ph(a, b); }
 FACET_INLINE __m512h facet_avx512fp16_h_mul(__m512h a, __m512h b) { return _mm512_mul_ph(a, b); }
@@ -54,13 +58,13 @@ FACET_INLINE __m512h facet_avx512fp16_h_keep_ord4(__m512h r, __m512h a, __m512h 
 FACET_INLINE __m512h facet_avx512fp16_h_rcp(__m512h x)
 {
     __m512h r = _mm512_rcp_ph(x);
-    return _mm512_fmadd_ph(r, _mm512_fnmadd_ph(x, r, _mm512_set1_ph(FACET_CAST(_Float16, 1.0f))), r);
+    return _mm512_fmadd_ph(r, _mm512_fnmadd_ph(x, r, FACET_AVX512FP16_C_(1.0f)), r);
 }
 FACET_INLINE __m512h facet_avx512fp16_h_rsqrt(__m512h x)
 {
     __m512h y = _mm512_rsqrt_ph(x);
-    __m512h e = _mm512_fnmadd_ph(_mm512_mul_ph(x, y), y, _mm512_set1_ph(FACET_CAST(_Float16, 1.0f)));
-    return _mm512_fmadd_ph(_mm512_mul_ph(_mm512_set1_ph(FACET_CAST(_Float16, 0.5f)), y), e, y);
+    __m512h e = _mm512_fnmadd_ph(_mm512_mul_ph(x, y), y, FACET_AVX512FP16_C_(1.0f));
+    return _mm512_fmadd_ph(_mm512_mul_ph(FACET_AVX512FP16_C_(0.5f), y), e, y);
 }
 FACET_INLINE __m512h facet_avx512fp16_h_div(__m512h a, __m512h b) { return _mm512_mul_ph(a, facet_avx512fp16_h_rcp(b)); }
 FACET_INLINE __m512h facet_avx512fp16_h_sqrt(__m512h x) { return _mm512_mul_ph(x, facet_avx512fp16_h_rsqrt(x)); }
