@@ -57,11 +57,18 @@
  * issue's speed targets (2.5x f32, 0.6x the transcription) are not met by
  * brdf_hammon yet.
  *
+ * The bounds are the largest measured on any port: scalar and avx512fp16
+ * over 2,000,000 samples per kernel (test_f16_accuracy 2000000), neonfp16
+ * over 1,000,000 under qemu-aarch64 (Arm's frecpe/frsqrte are defined bit
+ * for bit by the architecture, so the emulator computes what the hardware
+ * does); neonfp16's 8-bit estimates plus one step make noh, loh and the
+ * Smith terms its largest.
+ *
  * Ways in: facet_<kernel>_f16 (one sample, the scalar port),
  * facet_<kernel>_f16_batch (any count, any alignment, out may be an input:
  * the best f16 port for this CPU), inline facet_<kernel>_f16_<port>
  * (facet/f16_scalar.h on float-held binary16 values, facet/avx512fp16.h on
- * __m512h).  Which kernels have an f16 form, and why the others do not:
+ * __m512h, facet/neonfp16.h on float16x8_t).  Which kernels have an f16 form, and why the others do not:
  * src/core/f16_kernels.def (`facet list --formats`). */
 #ifndef FACET_F16_H
 #define FACET_F16_H
@@ -90,7 +97,8 @@ void facet_f32_from_f16_batch(float *out, const facet_f16 *in, size_t n);
 /* The f16 port running the batches: "avx512fp16" where the CPU has
  * AVX-512 FP16 (CPUID.(EAX=7,ECX=0):EDX[23], with AVX-512 BW and VL, and
  * the OS saving ZMM state) and the active port (facet_set_port) is
- * avx512, else "scalar".  facet_f16_port_supported(name): 1 where this CPU
+ * avx512; "neonfp16" on aarch64 where HWCAP has FPHP and ASIMDHP; else
+ * "scalar".  facet_f16_port_supported(name): 1 where this CPU
  * runs it; facet_f16_port_refusal(name): why not (NULL where it does, or
  * for an unknown name). */
 const char *facet_f16_port_name(void);
@@ -103,10 +111,10 @@ const char *facet_f16_port_refusal(const char *name);
 
 /* N.H from the dots, s rsqrt(max(2 + 2 L.V, s^2)), s = N.L + N.V; in
  * [0, 1].  Binary16 throughout: 4 clamps, 6 ops and an rsqrt. */
-#define FACET_ERR_NOH_FROM_DOTS_F16 1.6e-3
+#define FACET_ERR_NOH_FROM_DOTS_F16 1.75e-3
 facet_f16 facet_noh_from_dots_f16(facet_f16 nol, facet_f16 nov, facet_f16 lov);
 /* L.H = sqrt((1 + L.V) / 2); binary16 throughout. */
-#define FACET_ERR_LOH_FROM_DOTS_F16 1.05e-3
+#define FACET_ERR_LOH_FROM_DOTS_F16 1.4e-3
 facet_f16 facet_loh_from_dots_f16(facet_f16 lov);
 /* Schlick: f0 + (1 - f0) (1 - cos)^5, 1 - cos carried as two binary16
  * values (Fast2Sum); binary16 throughout. */
@@ -118,11 +126,11 @@ facet_f16 facet_fresnel_schlick_f16(facet_f16 f0, facet_f16 cos);
 facet_f16 facet_ggx_d_f16(facet_f16 noh, facet_f16 alpha);
 /* Smith visibility, height-correlated exact form, <= 2^12; binary16
  * throughout (radicands as sums of non-negative terms). */
-#define FACET_ERR_SMITH_VIS_F16 1.95e-3
+#define FACET_ERR_SMITH_VIS_F16 2.25e-3
 facet_f16 facet_smith_vis_f16(facet_f16 nol, facet_f16 nov, facet_f16 alpha);
 /* Hammon's visibility 0.5 / lerp(2 N.L N.V, N.L + N.V, alpha) <= 2^12;
  * binary16 throughout. */
-#define FACET_ERR_SMITH_VIS_HAMMON_F16 1.55e-3
+#define FACET_ERR_SMITH_VIS_HAMMON_F16 1.8e-3
 facet_f16 facet_smith_vis_hammon_f16(facet_f16 nol, facet_f16 nov, facet_f16 alpha);
 /* Hammon's diffuse (facet.h); binary16 throughout. */
 #define FACET_ERR_DIFFUSE_HAMMON_F16 3.85e-3
@@ -132,7 +140,7 @@ facet_f16 facet_diffuse_hammon_f16(facet_f16 nol, facet_f16 nov, facet_f16 lov, 
  * 65504: D Vis and (1 - L.H)^5 in f32 lanes (the peak without
  * cancellation, as the f32 kernel), each narrowed once; F, the diffuse and
  * the sum in binary16. */
-#define FACET_ERR_BRDF_HAMMON_F16 3.6e-3
+#define FACET_ERR_BRDF_HAMMON_F16 3.7e-3
 facet_f16 facet_brdf_hammon_f16(facet_f16 nol, facet_f16 nov, facet_f16 lov, facet_f16 alpha,
                                 facet_f16 f0, facet_f16 albedo);
 /* albedo / pi */

@@ -15,7 +15,7 @@
 #if FACET_ON_X86
 #include <cpuid.h>
 #endif
-#if FACET_ON_ARMV7_LINUX || FACET_ON_RISCV64_LINUX
+#if FACET_ON_ARMV7_LINUX || FACET_ON_RISCV64_LINUX || (FACET_ON_AARCH64 && defined(__linux__))
 #include <sys/auxv.h>
 #endif
 
@@ -95,6 +95,21 @@ int facet_cpu_neon(void)
 #else
     unsigned long hw = getauxval(AT_HWCAP);
     return (hw & (1ul << 12)) && (hw & (1ul << 16)); /* HWCAP_NEON, HWCAP_VFPv4 */
+#endif
+}
+#endif
+
+#if FACET_ON_AARCH64
+/* the f16 table of the aarch64 neon line (src/core/ports.def): FP16
+ * scalar and vector arithmetic, HWCAP_FPHP (bit 9) and HWCAP_ASIMDHP
+ * (bit 10) on Linux; elsewhere not asked (the scalar f16 table runs) */
+int facet_cpu_neonfp16(void)
+{
+#if defined(__linux__)
+    unsigned long hw = getauxval(AT_HWCAP);
+    return (hw >> 9 & 1ul) && (hw >> 10 & 1ul);
+#else
+    return 0;
 #endif
 }
 #endif
