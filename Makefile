@@ -33,7 +33,7 @@ TARGET  := $(shell $(CC) -dumpmachine)
 # folder per format (src/f32, src/fx) and the reference (src/oracle); the
 # firmware's batch loops (src/fx/fx_firmware_batch.c) replace the dispatched
 # batches there, never here
-LIB_SRC  := $(filter-out src/fx/fx_firmware_batch.c,$(wildcard src/core/*.c src/f32/*.c src/fx/*.c src/oracle/*.c))
+LIB_SRC  := $(filter-out src/fx/fx_firmware_batch.c,$(wildcard src/core/*.c src/f32/*.c src/f16/*.c src/fx/*.c src/oracle/*.c))
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 CLI_SRC  := $(wildcard src/cli/*.c)
 CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)

@@ -7,7 +7,7 @@
 #include "src/core/port.h"
 
 #define FACET_BENCH_PRAGMA_(x) _Pragma(#x)
-#define FACET_PORT(name, guard, cpu, fx, fx_fast)         \
+#define FACET_PORT(name, guard, cpu, fx, fx_fast, ...)         \
     FACET_BENCH_PRAGMA_(weak facet_port_##name##_f32)     \
     FACET_BENCH_PRAGMA_(weak facet_port_##name##_f32_fast)
 #include "src/core/ports.def"

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "facet.h"
+#include "facet/f16.h"
 #include "cli.h"
 
 static const char *prog = "facet";
@@ -14,11 +15,15 @@ static const char *prog = "facet";
 static void usage_eval(FILE *f)
 {
     fprintf(f,
-            "usage: %s eval KERNEL [--format f32|f32_fast|fx|fx_fast] [--oracle] [--port P]\n"
+            "usage: %s eval KERNEL [--format f32|f32_fast|f16|fx|fx_fast] [--oracle] [--port P]\n"
             "Evaluates KERNEL on the samples read from stdin, one output line per sample.\n"
             "  --format f32     the float kernels (default): each input rounded once to\n"
             "                   the nearest float; output printed with %%.9g (round-trips)\n"
             "  --format f32_fast  the fast f32 tier (facet_<kernel>_f32_fast_batch)\n"
+            "  --format f16     binary16 (facet/f16.h): each input rounded once to the\n"
+            "                   nearest binary16, the f16 batch on the port's f16 table\n"
+            "                   (avx512fp16 where the CPU has it, else scalar); output\n"
+            "                   the binary16 result printed with %%.9g (exact)\n"
             "  --format fx      the fixed-point kernels ('%s eval --format fx --help');\n"
             "                   fx_fast their fast tier\n"
             "  --oracle         the double-precision oracle instead (facet/oracle.h):\n"
@@ -57,6 +62,24 @@ static void kernel_f32(const facet_cli_evaluator *e, const facet_cli_rows *rows,
     (e->fast ? k->f32_fast_batch : k->f32_batch)(out, in, n);
     for (s = 0; s < n; s++)
         printf("%.9g\n", out[s]);
+}
+
+static void kernel_f16(const facet_cli_evaluator *e, const facet_cli_rows *rows, size_t n)
+{
+    static facet_f16 out[FACET_CLI_CHUNK], ins[FACET_CLI_MAX_INPUTS][FACET_CLI_CHUNK];
+    const facet_f16_kernel *h = e->what;
+    const float *in[FACET_CLI_MAX_INPUTS];
+    const facet_f16 *hin[FACET_CLI_MAX_INPUTS];
+    size_t s;
+    int i;
+    facet_cli_f32_columns(rows, n, in);
+    for (i = 0; i < h->n_inputs; i++) {
+        facet_f16_from_f32_batch(ins[i], in[i], n);
+        hin[i] = ins[i];
+    }
+    h->f16_batch(out, hin, n);
+    for (s = 0; s < n; s++)
+        printf("%.9g\n", facet_f32_from_f16(out[s]));
 }
 
 static void kernel_oracle(const facet_cli_evaluator *e, const facet_cli_rows *rows, size_t n)
@@ -142,9 +165,17 @@ int facet_cli_eval(int argc, char **argv)
         usage_eval(stderr);
         return FACET_EXIT_USAGE;
     }
-    if (strcmp(format, "f32") && strcmp(format, "f32_fast")) {
-        fprintf(stderr, "%s eval: unknown format '%s' (known: f32, f32_fast, fx, fx_fast)\n", prog, format);
+    if (strcmp(format, "f32") && strcmp(format, "f32_fast") && strcmp(format, "f16")) {
+        fprintf(stderr, "%s eval: unknown format '%s' (known: f32, f32_fast, f16, fx, fx_fast)\n", prog, format);
         return FACET_EXIT_USAGE;
+    }
+    if (!strcmp(format, "f16") && !oracle) {
+        const facet_f16_kernel *h = k ? facet_f16_kernel_find(k->name) : NULL;
+        if (!h || !h->f16) {
+            fprintf(stderr, "%s eval: '%s' has no f16 form: %s\n", prog, k ? k->name : smp->name,
+                    h ? h->why : "the samplers are f32 only");
+            return FACET_EXIT_USAGE;
+        }
     }
     e.fast = strcmp(format, "f32") != 0;
     e.number = oracle ? FACET_CLI_F64 : FACET_CLI_F32;
@@ -154,6 +185,10 @@ int facet_cli_eval(int argc, char **argv)
         e.n_inputs = k->n_inputs;
         e.inputs = k->inputs;
         e.flush = oracle ? kernel_oracle : kernel_f32;
+        if (!oracle && !strcmp(format, "f16")) {
+            e.what = facet_f16_kernel_find(k->name);
+            e.flush = kernel_f16;
+        }
     } else {
         e.what = smp;
         e.n_inputs = smp->n_inputs;

@@ -5,17 +5,20 @@
 #include <string.h>
 #include "facet.h"
 #include "facet/fx.h"
+#include "facet/f16.h"
 #include "cli.h"
 
 static const char *prog = "facet";
 
 static void usage_list(FILE *f)
 {
-    fprintf(f, "usage: %s list [--formats]\n"
+    fprintf(f, "usage: %s list [--formats | --f16]\n"
                "Prints one line per kernel: its name, then the names of its inputs in the\n"
                "order 'eval' reads them.  With --formats: its name, then the formats it\n"
-               "comes in (f32 f32_fast, and fx fx_fast where it has a fixed-point form;\n"
-               "fx_fast alone where it has only the fast fixed-point tier).\n%s",
+               "comes in (f32 f32_fast; fx fx_fast where it has a fixed-point form, fx_fast\n"
+               "alone where it has only the fast fixed-point tier; then f16 where it has a\n"
+               "binary16 form).  With --f16: its name, then 'f16' or 'none:' and why it\n"
+               "has no binary16 form (src/core/f16_kernels.def).\n%s",
             prog, facet_cli_exit_help);
 }
 
@@ -40,22 +43,28 @@ static int wants_help(int argc, char **argv)
 int facet_cli_list(int argc, char **argv)
 {
     size_t i;
-    int j;
+    int j, f16;
     if (wants_help(argc, argv)) {
         usage_list(stdout);
         return facet_cli_finish("list");
     }
-    if (argc > 2 || (argc == 2 && strcmp(argv[1], "--formats"))) {
+    if (argc > 2 || (argc == 2 && strcmp(argv[1], "--formats") && strcmp(argv[1], "--f16"))) {
         fprintf(stderr, "%s list: unexpected argument '%s'\n", prog, argv[1]);
         usage_list(stderr);
         return FACET_EXIT_USAGE;
     }
+    f16 = argc == 2 && !strcmp(argv[1], "--f16");
     for (i = 0; i < facet_kernel_count(); i++) {
         const facet_kernel *k = facet_kernel_at(i);
         printf("%s", k->name);
         if (argc == 2) {
             const facet_fx_kernel *fk = facet_fx_kernel_find(k->name);
-            printf(" f32 f32_fast%s%s", fk && fk->fx ? " fx" : "", fk ? " fx_fast" : "");
+            const facet_f16_kernel *hk = facet_f16_kernel_find(k->name);
+            if (f16)
+                printf(hk && hk->f16 ? " f16" : " none: %s", hk ? hk->why : "not in the f16 list");
+            else
+                printf(" f32 f32_fast%s%s%s", fk && fk->fx ? " fx" : "", fk ? " fx_fast" : "",
+                       hk && hk->f16 ? " f16" : "");
         }
         else
             for (j = 0; j < k->n_inputs; j++)
@@ -67,7 +76,7 @@ int facet_cli_list(int argc, char **argv)
         const facet_sampler *smp = facet_sampler_at(i);
         printf("%s", smp->name);
         if (argc == 2)
-            printf(" f32 f32_fast\n");
+            printf(f16 ? " none: the samplers are f32 only\n" : " f32 f32_fast\n");
         else {
             for (j = 0; j < smp->n_inputs; j++)
                 printf(" %s", smp->inputs[j]);

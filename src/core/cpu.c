@@ -15,7 +15,7 @@
 #if FACET_ON_X86
 #include <cpuid.h>
 #endif
-#if FACET_ON_ARMV7_LINUX || FACET_ON_RISCV64_LINUX
+#if FACET_ON_ARMV7_LINUX || FACET_ON_RISCV64_LINUX || (FACET_ON_AARCH64 && defined(__linux__))
 #include <sys/auxv.h>
 #endif
 
@@ -52,6 +52,28 @@ static int avx512f(void)
 }
 /* the avx512 port also runs the AVX2 fx code (src/core/ports.def): both */
 int facet_cpu_avx512(void) { return avx512f() && facet_cpu_avx2_fma(); }
+/* the f16 table of the avx512 line (src/core/ports.def): AVX-512 FP16
+ * (CPUID.(EAX=7,ECX=0):EDX[23]) with AVX-512 BW and VL (EBX[30], EBX[31]),
+ * on top of AVX-512F and the OS's ZMM state.  Read once: the f16 batches
+ * ask on every call (a relaxed load of an int; racing first calls compute
+ * the same value) */
+static int avx512fp16_(void)
+{
+    unsigned a, b, c, d;
+    if (!avx512f() || !__get_cpuid_count(7, 0, &a, &b, &c, &d))
+        return 0;
+    return ((d >> 23) & 1u) && ((b >> 30) & 1u) && ((b >> 31) & 1u);
+}
+int facet_cpu_avx512fp16(void)
+{
+    static int known; /* 0: not yet read, 1: no, 2: yes */
+    int k = __atomic_load_n(&known, __ATOMIC_RELAXED);
+    if (!k) {
+        k = avx512fp16_() ? 2 : 1;
+        __atomic_store_n(&known, k, __ATOMIC_RELAXED);
+    }
+    return k == 2;
+}
 #endif
 int facet_cpu_sse2(void)
 {
@@ -73,6 +95,21 @@ int facet_cpu_neon(void)
 #else
     unsigned long hw = getauxval(AT_HWCAP);
     return (hw & (1ul << 12)) && (hw & (1ul << 16)); /* HWCAP_NEON, HWCAP_VFPv4 */
+#endif
+}
+#endif
+
+#if FACET_ON_AARCH64
+/* the f16 table of the aarch64 neon line (src/core/ports.def): FP16
+ * scalar and vector arithmetic, HWCAP_FPHP (bit 9) and HWCAP_ASIMDHP
+ * (bit 10) on Linux; elsewhere not asked (the scalar f16 table runs) */
+int facet_cpu_neonfp16(void)
+{
+#if defined(__linux__)
+    unsigned long hw = getauxval(AT_HWCAP);
+    return (hw >> 9 & 1ul) && (hw >> 10 & 1ul);
+#else
+    return 0;
 #endif
 }
 #endif

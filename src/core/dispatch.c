@@ -26,20 +26,25 @@
 #include "cpu.h"
 #include "port.h"
 #include "sample_port.h"
+#include "f16_port.h"
+#include "facet/f16.h"
 
 typedef struct port_entry {
     const facet_f32_port *f32, *f32_fast;
     const facet_sample_port *sample, *sample_fast;
     const facet_fx_port *fx, *fx_fast;
     int (*supported)(void);
+    const facet_f16_port *f16; /* run where f16_supported() says so, else the scalar one */
+    int (*f16_supported)(void);
 } port_entry;
 
 /* best first, scalar last */
 static const port_entry ports[] = {
-#define FACET_PORT(name, guard, cpu, fx, fx_fast)                                         \
+#define FACET_PORT(name, guard, cpu, fx, fx_fast, f16, f16_cpu)                           \
     FACET_PORT_IF(guard, { &facet_port_##name##_f32, &facet_port_##name##_f32_fast,       \
                            &facet_sample_port_##name##_f32, &facet_sample_port_##name##_f32_fast, \
-                           &facet_fx_port_##fx, &facet_fx_fast_port_##fx_fast, facet_cpu_##cpu },)
+                           &facet_fx_port_##fx, &facet_fx_fast_port_##fx_fast, facet_cpu_##cpu, \
+                           &facet_f16_port_##f16, facet_cpu_##f16_cpu },)
 #include "ports.def"
 #undef FACET_PORT
 };
@@ -248,3 +253,46 @@ RGB_ENTRIES_(f32_fast, 1)
     }
 #include "sample_kernels.def"
 #undef FACET_SAMPLER
+
+/* ---- the f16 batches (facet/f16.h): the active port's f16 table where its
+ * own CPU test holds (AVX-512 FP16 is not implied by the avx512 port's
+ * AVX-512F), else the scalar one ----------------------------------------- */
+static const facet_f16_port *f16_port(void)
+{
+    const port_entry *p = port();
+    return p->f16_supported() ? p->f16 : SCALAR_PORT->f16;
+}
+
+const char *facet_f16_port_name(void) { return f16_port()->name; }
+
+/* the line of the f16 table called name, and whether this CPU runs it */
+static const port_entry *f16_find(const char *name)
+{
+    size_t i;
+    for (i = 0; name && i < N_PORTS; i++)
+        if (!strcmp(name, ports[i].f16->name))
+            return &ports[i];
+    return NULL;
+}
+
+int facet_f16_port_supported(const char *name)
+{
+    const port_entry *p = f16_find(name);
+    return p && p->f16_supported();
+}
+
+const char *facet_f16_port_refusal(const char *name)
+{
+    const port_entry *p = f16_find(name);
+    return !p || p->f16_supported() ? NULL : p->f16->needs;
+}
+
+#define F16_PARAM_(q) const uint16_t *x##q
+#define FACET_F16(name, NAME, n, form, why)                                                        \
+    FACET_IF_F16(form, void facet_##name##_f16_batch(uint16_t *out, FACET_EACH_INPUT(n, F16_PARAM_), \
+                                                     size_t count)                                 \
+    {                                                                                              \
+        f16_port()->name(out, FACET_EACH_INPUT(n, ARG_), count);                                   \
+    })
+#include "f16_kernels.def"
+#undef FACET_F16

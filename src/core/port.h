@@ -63,7 +63,7 @@ typedef struct facet_fx_port {
  *   fx:  facet_fx_port_<fx>, facet_fx_fast_port_<fx_fast> (ports/<isa>/fx_<isa>.c;
  *        scalar: src/fx/fx_kernels.c and src/fx/fx_fast.c, every kernel, the
  *        scalar loops) */
-#define FACET_PORT(name, guard, cpu, fx, fx_fast)                                \
+#define FACET_PORT(name, guard, cpu, fx, fx_fast, ...)                           \
     extern const facet_f32_port facet_port_##name##_f32, facet_port_##name##_f32_fast; \
     extern const facet_fx_port facet_fx_port_##fx, facet_fx_fast_port_##fx_fast;
 #include "ports.def"

@@ -21,7 +21,7 @@ expect "out of range clamps" "$(echo '1 1' | $facet eval smith_g1 --format fx --
 
 $facet list > "$tmp/list"
 $facet list --formats > "$tmp/formats"
-expect "lambert has no fixed-point version" "lambert f32 f32_fast" "$(grep '^lambert ' "$tmp/formats")"
+expect "lambert has no fixed-point version" "lambert f32 f32_fast f16" "$(grep '^lambert ' "$tmp/formats")"
 while read -r name rest; do
     n=$(echo $rest | wc -w)
     if ! grep -qE "^$name .* fx( |$)" "$tmp/formats"; then
@@ -30,7 +30,7 @@ while read -r name rest; do
         case "$rest" in *'->'*) continue ;; esac
         echo "$(yes 0.5 | head -n "$n" | tr '\n' ' ')" | $facet eval "$name" --format fx > /dev/null 2>&1
         expect "eval $name --format fx refused (no precise fixed-point version)" 2 $?
-        grep -qE "^$name .* fx_fast$" "$tmp/formats" || continue
+        grep -qE "^$name .* fx_fast( f16)?$" "$tmp/formats" || continue
         # the fast tier only: vectors --format fx refused too, fx_fast works
         $facet vectors "$name" --format fx --count 1 > /dev/null 2> "$tmp/err"
         expect "vectors $name --format fx refused (fast tier only)" 2 $?
@@ -83,8 +83,8 @@ $facet vectors ggx_d > /dev/null 2>&1; expect "vectors without --format (fx is t
 $facet vectors ggx_d --format f32 > /dev/null 2>&1; expect "vectors --format f32" 2 $?
 $facet vectors ggx_d --format fx_fast --count 0 | head -1 > "$tmp/hdr"
 grep -q 'fx_fast output' "$tmp/hdr" && ok || bad "vectors --format fx_fast header does not name the tier: $(cat "$tmp/hdr")"
-expect "list --formats: fixed-point kernels" "brdf_hammon f32 f32_fast fx fx_fast" "$($facet list --formats | grep '^brdf_hammon ')"
-expect "list --formats: lambert" "lambert f32 f32_fast" "$($facet list --formats | grep '^lambert ')"
+expect "list --formats: fixed-point kernels" "brdf_hammon f32 f32_fast fx fx_fast f16" "$($facet list --formats | grep '^brdf_hammon ')"
+expect "list --formats: lambert" "lambert f32 f32_fast f16" "$($facet list --formats | grep '^lambert ')"
 expect "eval --format f32_fast" 1 "$(echo '0.5 0.25' | $facet eval ggx_d --format f32_fast | grep -cE '^0\.0339[0-9]+$')"
 echo '0.5 0.25' | $facet eval ggx_d --format fx_slow > /dev/null 2>&1; expect "eval unknown format" 2 $?
 $facet vectors nope --format fx > /dev/null 2>&1; expect "vectors unknown kernel" 2 $?

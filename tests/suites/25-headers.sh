@@ -22,7 +22,8 @@ isa() {
     facet/sse2.h) [ -n "$x86" ] && echo "-msse2" || echo skip ;;
     facet/avx2.h) [ -n "$x86" ] && echo "-mavx2 -mfma" || echo skip ;;
     facet/avx512.h) [ -n "$x86" ] && echo "-mavx512f -mavx2 -mfma" || echo skip ;;
-    facet/neon.h | facet/helium.h | facet/rvv.h) echo skip ;;
+    facet/avx512fp16.h) [ -n "$x86" ] && echo "-mavx512fp16 -mavx512bw -mavx512vl -mavx512f" || echo skip ;;
+    facet/neon.h | facet/neonfp16.h | facet/helium.h | facet/rvv.h) echo skip ;;
     *) echo "" ;;
     esac
 }

@@ -1,6 +1,6 @@
 # The x86 build on an older CPU model under qemu-x86_64 (Nehalem: SSE4.2,
-# no AVX): the dispatcher must pick sse2, refuse avx2/avx512 with a clear
-# error, and nothing outside the AVX objects may execute an AVX instruction
+# no AVX): the dispatcher must pick sse2, refuse avx2/avx512 (and the f16
+# table avx512fp16) with a clear error, and nothing outside the AVX objects may execute an AVX instruction
 # (qemu would stop the test with SIGILL); the same for the bench's SIMD
 # loops and rasterizer paths.  Skipped off x86 or without qemu.
 . tests/lib/suite_lib.sh
@@ -33,7 +33,8 @@ out=$(echo "0.6 0.7 0.5 0.1 0.04 0.5" | $q build/facet eval brdf_hammon) && [ -n
 # The accuracy sweep runs its emulator level (strided edge grids, 30000
 # random samples): what it adds here is that no AVX instruction executes;
 # its full sweep of the sse2 and scalar ports runs natively in 10-gcc.
-for t in test_f32_ports test_f32_accuracy test_fx_ports test_f32_bad_input test_bench test_sample_ports; do
+for t in test_f32_ports test_f32_accuracy test_fx_ports test_f32_bad_input test_bench test_sample_ports \
+    test_f16_ports test_f16_accuracy; do
     level=1
     [ $t = test_f32_accuracy ] && level=2
     res=$(FACET_TEST_QUICK=$level $q build/tests/$t 2>&1)
@@ -44,6 +45,13 @@ for t in test_f32_ports test_f32_accuracy test_fx_ports test_f32_bad_input test_
 done
 res=$(FACET_TEST_QUICK=1 $q build/tests/test_f32_ports 2>&1)
 printf '%s' "$res" | grep -q "port avx2: compiled in, but this CPU cannot run it" && ok || bad "avx2 not reported unsupported"
+# f16: the AVX-512 FP16 table refused with what it needs, the scalar one runs
+# (nothing outside ports/avx512fp16/ executes an FP16 instruction: qemu
+# would stop these with SIGILL)
+res=$(FACET_TEST_QUICK=1 $q build/tests/test_f16_ports 2>&1)
+printf '%s' "$res" | grep -q "port avx512fp16: not run here: AVX-512 FP16 (CPUID" && ok || bad "avx512fp16 not refused with its reason"
+printf '%s' "$res" | grep -q "f16 batches on scalar (port sse2)" && ok || bad "f16 batches not on scalar: $(printf '%s' "$res" | tail -n 2)"
+[ "$(echo 1 | $q build/facet eval lambert --format f16)" = 0.318359375 ] && ok || bad "eval --format f16 under Nehalem"
 # the bench's SIMD loops and peers ask facet_port_supported(): no avx2 row,
 # no SIGILL (the shader peers are built for AVX2 / AVX-512 widths and skipped)
 out=$($q build/facet-bench bench ggx_d --quick --format f32 2>&1); rc=$?

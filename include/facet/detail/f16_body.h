@@ -1,0 +1,289 @@
+/* facet/detail/f16_body.h - the one body of every binary16 (f16) kernel.
+ *
+ * Deliberately without an include guard: each f16 port header includes it
+ * once, after defining
+ *   FACET_V        the binary16 vector (the scalar specification: a float
+ *                  that always holds a binary16 value),
+ *   FACET_W        the f32 vector of the same lanes (avx512fp16: a pair of
+ *                  __m512), for the few operations binary16 cannot hold,
+ *   FACET_OP(op)   the name of the port's op `op`: on V set add sub mul fma
+ *                  fnma min max clamp keep_ord keep_ord4 rcp rsqrt div sqrt;
+ *                  on W w_set w_add w_sub w_mul w_fma w_fnma w_min w_max
+ *                  w_sqr_err w_rcp w_rsqrt; widen (V to W, exact) and
+ *                  narrow (W to V for values >= 0: saturated at 65504, then
+ *                  rounded to nearest even),
+ *   FACET_K(k)     the name to give kernel `k` (facet_<k>_f16_<port>).
+ * There is one tier: binary16's rounding (2^-11) is already the cost the
+ * format buys; the estimates are refined to it (see the port headers).
+ * Contracts (formula, domain, measured error, cost): facet/f16.h; the
+ * comments here explain the numerics.  u below is binary16's unit
+ * roundoff 2^-11.
+ */
+#ifndef FACET_V
+#error "include an f16 port header (facet/f16_scalar.h, facet/avx512fp16.h), not this file"
+#endif
+
+#define V_ FACET_V
+#define W_ FACET_W
+#define C_(x) FACET_OP(set)(x)
+#define ADD_ FACET_OP(add)
+#define SUB_ FACET_OP(sub)
+#define MUL_ FACET_OP(mul)
+#define FMA_ FACET_OP(fma)
+#define FNMA_ FACET_OP(fnma)
+#define MIN_ FACET_OP(min)
+#define MAX_ FACET_OP(max)
+#define CLAMP_ FACET_OP(clamp)
+#define KEEP_ORD_ FACET_OP(keep_ord)
+#define KEEP_ORD4_ FACET_OP(keep_ord4)
+#define RCP_ FACET_OP(rcp)
+#define RSQRT_ FACET_OP(rsqrt)
+#define DIV_ FACET_OP(div)
+#define SQRT_ FACET_OP(sqrt)
+#define WC_(x) FACET_OP(w_set)(x)
+#define WADD_ FACET_OP(w_add)
+#define WSUB_ FACET_OP(w_sub)
+#define WMUL_ FACET_OP(w_mul)
+#define WFMA_ FACET_OP(w_fma)
+#define WFNMA_ FACET_OP(w_fnma)
+#define WMIN_ FACET_OP(w_min)
+#define WMAX_ FACET_OP(w_max)
+#define WRCP_ FACET_OP(w_rcp)
+#define WRSQRT_ FACET_OP(w_rsqrt)
+#define WIDEN_ FACET_OP(widen)
+#define NARROW_ FACET_OP(narrow)
+
+#define X16_UNIT_ FACET_K(x_unit)
+#define X16_COS_ FACET_K(x_cos)
+#define X16_ALPHA_ FACET_K(x_alpha)
+#define X16_LOV_ FACET_K(x_lov)
+#define X16_POW5_Q_ FACET_K(x_pow5_q)
+#define X16_DIFFUSE_ FACET_K(x_diffuse)
+
+/* The NaN rule (as f32_body.h): a NaN in any input gives +0 for that
+ * lane; the arithmetic runs on the clamped inputs (NaN clamps to the low
+ * end), so no NaN or Inf arises, and the mask replaces the result. */
+#define NAN0_(...) NAN0_SEL_(__VA_ARGS__, NAN0_6_, NAN0_5_, NAN0_4_, NAN0_3_, NAN0_2_, NAN0_1_, -)(__VA_ARGS__)
+#define NAN0_SEL_(r, a, b, c, d, e, f, N, ...) N
+#define NAN0_1_(r, a) KEEP_ORD_(r, a, a)
+#define NAN0_2_(r, a, b) KEEP_ORD_(r, a, b)
+#define NAN0_3_(r, a, b, c) KEEP_ORD4_(r, a, b, c, c)
+#define NAN0_4_(r, a, b, c, d) KEEP_ORD4_(r, a, b, c, d)
+#define NAN0_5_(r, a, b, c, d, e) KEEP_ORD_(NAN0_4_(r, a, b, c, d), e, e)
+#define NAN0_6_(r, a, b, c, d, e, f) KEEP_ORD_(NAN0_4_(r, a, b, c, d), e, f)
+
+/* Domain: N.L, N.V in [FACET_F16_COS_MIN, 1], alpha in [FACET_F16_ALPHA_MIN,
+ * 1] (both 2^-7: alpha^2 and N.L N.V stay binary16 normals, >= 2^-14),
+ * L.V in [-1, 1], the rest in [0, 1]; -Inf and NaN to the low end, +Inf to
+ * the high end. */
+FACET_INLINE V_ X16_UNIT_(V_ x) { return CLAMP_(x, C_(0.0f), C_(1.0f)); }
+FACET_INLINE V_ X16_COS_(V_ x) { return CLAMP_(x, C_(FACET_F16_COS_MIN), C_(1.0f)); }
+FACET_INLINE V_ X16_ALPHA_(V_ x) { return CLAMP_(x, C_(FACET_F16_ALPHA_MIN), C_(1.0f)); }
+FACET_INLINE V_ X16_LOV_(V_ x) { return CLAMP_(x, C_(-1.0f), C_(1.0f)); }
+
+/* ---- identities ---------------------------------------------------------
+ * N.H = s rsqrt(max(2t, s^2)), s = N.L + N.V, t = 1 + L.V (t exact for
+ * L.V <= -1/2, Sterbenz; else one rounding): about 4 u. */
+FACET_INLINE V_ FACET_K(noh_from_dots)(V_ nol, V_ nov, V_ lov)
+{
+    V_ s = ADD_(X16_COS_(nol), X16_COS_(nov));
+    V_ t = ADD_(C_(1.0f), X16_LOV_(lov));
+    V_ t2 = MAX_(ADD_(t, t), MUL_(s, s));
+    return NAN0_(MIN_(MUL_(s, RSQRT_(t2)), C_(1.0f)), nol, nov, lov);
+}
+
+/* L.H = t rsqrt(2t); 2t >= 2^-10 but at L.V = -1 (t = 0), floored at 2^-14
+ * so that 0 * finite = 0. */
+FACET_INLINE V_ FACET_K(loh_from_dots)(V_ lov)
+{
+    V_ t = ADD_(C_(1.0f), X16_LOV_(lov));
+    V_ t2 = MAX_(ADD_(t, t), C_(6.103515625e-05f));
+    return NAN0_(MIN_(MUL_(t, RSQRT_(t2)), C_(1.0f)), lov);
+}
+
+/* ---- Fresnel --------------------------------------------------------------
+ * f0 + (1 - f0) y^5, y = 1 - c as yh + yl (Fast2Sum, exact in binary16 as
+ * in f32), y^5 ~ yh^4 (yh + 5 yl): the rounding of 1 - c is not raised to
+ * the fifth power; 4 roundings in y^5, one in 1 - f0, one in the fma. */
+FACET_INLINE V_ FACET_K(fresnel_schlick)(V_ f0, V_ cos)
+{
+    V_ f = X16_UNIT_(f0), c = X16_UNIT_(cos);
+    V_ yh = SUB_(C_(1.0f), c);
+    V_ yl = SUB_(SUB_(C_(1.0f), yh), c);
+    V_ y2 = MUL_(yh, yh);
+    V_ y5 = MUL_(MUL_(y2, y2), FMA_(C_(5.0f), yl, yh));
+    return NAN0_(FMA_(SUB_(C_(1.0f), f), y5, f), f0, cos);
+}
+
+/* ---- GGX D -----------------------------------------------------------------
+ * D = (alpha / (sqrt(pi) d))^2, d = (1 - n)(1 + n) + (n alpha)^2.  D goes as
+ * d^-2, and d's binary16 roundings (about 4 u) would double to 8 u, so d and
+ * k = alpha / (sqrt(pi) d) (<= 73) are formed in f32 lanes (the port's
+ * 2^-14 reciprocal estimate is enough there) and k is narrowed once:
+ * D = k^2 has 3 u (2 from k's rounding, 1 from the square). */
+FACET_INLINE V_ FACET_K(ggx_d)(V_ noh, V_ alpha)
+{
+    W_ n = WIDEN_(X16_UNIT_(noh)), a = WIDEN_(X16_ALPHA_(alpha));
+    W_ na = WMUL_(n, a);
+    W_ d = WFMA_(WSUB_(WC_(1.0f), n), WADD_(WC_(1.0f), n), WMUL_(na, na));
+    V_ k = NARROW_(WMUL_(WMUL_(a, WC_(0.564189584f)), WRCP_(d)));
+    return NAN0_(MUL_(k, k), noh, alpha);
+}
+
+/* ---- Smith visibility -------------------------------------------------------
+ * Hammon's: Vis = 0.5 / lerp(2 nl nv, nl + nv, alpha) = 0.25 / mh,
+ * mh = nl nv + alpha (s/2 - nl nv) (both terms >= 0; nl nv >= 2^-14, a
+ * normal, by the cosine floor): about 4 u, Vis <= 2^12. */
+FACET_INLINE V_ FACET_K(smith_vis_hammon)(V_ nol, V_ nov, V_ alpha)
+{
+    V_ nl = X16_COS_(nol), nv = X16_COS_(nov), a = X16_ALPHA_(alpha);
+    V_ p = MUL_(nl, nv);
+    V_ mh = FMA_(a, SUB_(MUL_(C_(0.5f), ADD_(nl, nv)), p), p);
+    return NAN0_(DIV_(C_(0.25f), mh), nol, nov, alpha);
+}
+
+/* The exact height-correlated one: 0.5 / (nv sqrt(w(nl)) + nl sqrt(w(nv))),
+ * w(n) = alpha^2 (1 - n)(1 + n) + n^2 (all terms >= 0; alpha^2 >= 2^-14 and
+ * n^2 >= 2^-14 normal): sums of positive terms throughout. */
+FACET_INLINE V_ FACET_K(smith_vis)(V_ nol, V_ nov, V_ alpha)
+{
+    V_ nl = X16_COS_(nol), nv = X16_COS_(nov), a = X16_ALPHA_(alpha);
+    V_ a2 = MUL_(a, a);
+    V_ wl = FMA_(a2, MUL_(SUB_(C_(1.0f), nl), ADD_(C_(1.0f), nl)), MUL_(nl, nl));
+    V_ wv = FMA_(a2, MUL_(SUB_(C_(1.0f), nv), ADD_(C_(1.0f), nv)), MUL_(nv, nv));
+    V_ den = ADD_(MUL_(nv, SQRT_(wl)), MUL_(nl, SQRT_(wv)));
+    return NAN0_(DIV_(C_(0.5f), den), nol, nov, alpha);
+}
+
+/* ---- Hammon's diffuse --------------------------------------------------------
+ * As f32_body.h: Q(x) = 1 + y + y^2 + y^3 + y^4 (y = 1 - x) by Horner (positive
+ * terms), smooth / pi = (1.05 / pi) nl nv Q(nl) Q(nv), rough from
+ * t = max(1 + L.V, s^2 / 2) and h = 0.5 / N.H = sqrt(t) / (sqrt(2) s) >= 1/2,
+ * single = ((1 - alpha) smooth + alpha rough) / pi, multi = 0.1159 alpha,
+ * diffuse = albedo (single + albedo multi): every sum of positive terms. */
+/* k Q(x), the constant folded into the Horner coefficients (one rounding
+ * fewer than a product after it) */
+FACET_INLINE V_ X16_POW5_Q_(V_ x, V_ k)
+{
+    V_ y = SUB_(C_(1.0f), x);
+    V_ p = FMA_(y, k, k);
+    p = FMA_(p, y, k);
+    p = FMA_(p, y, k);
+    return FMA_(p, y, k);
+}
+
+FACET_INLINE V_ X16_DIFFUSE_(V_ nl, V_ nv, V_ t, V_ s, V_ a, V_ alb)
+{
+    V_ h = MAX_(DIV_(SQRT_(t), MUL_(C_(1.41421354f), s)), C_(0.5f));
+    V_ smooth = MUL_(MUL_(nl, nv), MUL_(X16_POW5_Q_(nl, C_(1.0f)), X16_POW5_Q_(nv, C_(0.334225380f))));
+    V_ ar = MUL_(MUL_(a, t), FNMA_(C_(0.0318309886f), t, C_(0.143239449f)));
+    V_ single = FMA_(ar, h, FMA_(SUB_(C_(1.0f), a), smooth, ar));
+    return MUL_(alb, FMA_(alb, MUL_(C_(0.1159f), a), single));
+}
+
+FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
+{
+    V_ nl = X16_COS_(nol), nv = X16_COS_(nov);
+    V_ s = ADD_(nl, nv);
+    V_ t = MAX_(ADD_(C_(1.0f), X16_LOV_(lov)), MUL_(C_(0.5f), MUL_(s, s)));
+    V_ d = X16_DIFFUSE_(nl, nv, t, s, X16_ALPHA_(alpha), X16_UNIT_(albedo));
+    return NAN0_(d, nol, nov, lov, alpha, albedo);
+}
+
+/* ---- the whole model ----------------------------------------------------------
+ * D(N.H) Vis_hammon F(f0, L.H) + diffuse_hammon, from the three dots (the
+ * algebra of f32_body.h's brdf_hammon).  The specular factor is where
+ * binary16 cannot hold the bound: the peak e = (2t - s^2) + alpha^2 s^2
+ * cancels (its 2t - s^2 needs s^2 exactly: 36 bits for binary16 inputs), and
+ * F's (1 - L.H)^5 raises one rounding of 1 - L.H five times.  So these run
+ * in f32 lanes, from the exact binary16 inputs: s = N.L + N.V is exact in
+ * f32 (at most 18 significant bits above the cosine floor 2^-7), s^2 as
+ * p + pe (sqr_err), t = 1 + L.V as th + tl (Fast2Sum), e without
+ * cancellation as in f32; then
+ *   D Vis = (1/pi) g^2 / mh,  g = alpha t / e,  mh = nl nv + alpha (s/2 - nl nv)
+ *   y = 1 - L.H = (2 - t) / (2 + sqrt(2t)),  y^5
+ * with the port's f32 estimates (2^-14: their error stays below 2^-12 after
+ * the fifth power), and so is F = f0 + (1 - f0) y^5 and the specular term
+ * D Vis F, narrowed once (saturated at 65504: narrowing D Vis alone would
+ * saturate terms that F brings back below 65504, and would lose y^5 into
+ * binary16's subnormals where f0 = 0).  The rest is binary16: the diffuse
+ * (the roughness term takes t narrowed) and the sum, saturated at 65504
+ * (never Inf). */
+FACET_INLINE V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_ albedo)
+{
+    V_ nl = X16_COS_(nol), nv = X16_COS_(nov), lv = X16_LOV_(lov), a = X16_ALPHA_(alpha);
+    W_ nlw = WIDEN_(nl), nvw = WIDEN_(nv), lvw = WIDEN_(lv), aw = WIDEN_(a);
+    W_ sh = WADD_(nlw, nvw);                                 /* exact */
+    W_ th = WADD_(WC_(1.0f), lvw);
+    W_ tl = WSUB_(lvw, WSUB_(th, WC_(1.0f)));                /* t = th + tl exactly */
+    W_ p = WMUL_(sh, sh);
+    W_ pe = FACET_OP(w_sqr_err)(sh, p);                      /* s^2 = p + pe exactly */
+    W_ a2 = WMUL_(aw, aw);                                   /* exact */
+    W_ k = WFMA_(a2, p, WMUL_(a2, pe));
+    W_ e = WMAX_(WSUB_(WSUB_(k, WFNMA_(WC_(2.0f), th, p)), WFNMA_(WC_(2.0f), tl, pe)), k);
+    W_ t = WMAX_(th, WMUL_(WC_(0.5f), p));
+    W_ w = WMIN_(WSUB_(WC_(1.0f), lvw), WFNMA_(WC_(0.5f), pe, WFNMA_(WC_(0.5f), p, WC_(2.0f))));
+    W_ p2 = WMUL_(nlw, nvw);
+    W_ mh = WFMA_(aw, WSUB_(WMUL_(WC_(0.5f), sh), p2), p2);
+    W_ g = WMUL_(WMUL_(aw, t), WRCP_(e));
+    W_ dvw = WMUL_(WMUL_(g, g), WMUL_(WC_(0.318309886f), WRCP_(mh)));
+    W_ rt = WMUL_(t, WRSQRT_(t));                            /* sqrt(t) = sqrt(2) L.H */
+    W_ y = WMUL_(w, WRCP_(WFMA_(WC_(1.41421354f), rt, WC_(2.0f))));
+    W_ y2 = WMUL_(y, y);
+    W_ fw = WIDEN_(X16_UNIT_(f0));
+    W_ spec = WMUL_(dvw, WFMA_(WSUB_(WC_(1.0f), fw), WMUL_(WMUL_(y2, y2), y), fw));
+    V_ s = ADD_(nl, nv);
+    V_ dif = X16_DIFFUSE_(nl, nv, NARROW_(t), s, a, X16_UNIT_(albedo));
+    V_ r = MIN_(ADD_(NARROW_(spec), dif), C_(65504.0f));
+    return NAN0_(r, nol, nov, lov, alpha, f0, albedo);
+}
+
+/* Lambert: albedo / pi (one rounding and 1/pi's). */
+FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
+{
+    return NAN0_(MUL_(X16_UNIT_(albedo), C_(0.318309886f)), albedo);
+}
+
+#undef V_
+#undef W_
+#undef C_
+#undef ADD_
+#undef SUB_
+#undef MUL_
+#undef FMA_
+#undef FNMA_
+#undef MIN_
+#undef MAX_
+#undef CLAMP_
+#undef KEEP_ORD_
+#undef KEEP_ORD4_
+#undef RCP_
+#undef RSQRT_
+#undef DIV_
+#undef SQRT_
+#undef WC_
+#undef WADD_
+#undef WSUB_
+#undef WMUL_
+#undef WFMA_
+#undef WFNMA_
+#undef WMIN_
+#undef WMAX_
+#undef WRCP_
+#undef WRSQRT_
+#undef WIDEN_
+#undef NARROW_
+#undef X16_UNIT_
+#undef X16_COS_
+#undef X16_ALPHA_
+#undef X16_LOV_
+#undef X16_POW5_Q_
+#undef X16_DIFFUSE_
+#undef NAN0_
+#undef NAN0_SEL_
+#undef NAN0_1_
+#undef NAN0_2_
+#undef NAN0_3_
+#undef NAN0_4_
+#undef NAN0_5_
+#undef NAN0_6_

@@ -1,0 +1,186 @@
+/* facet/f16.h - the binary16 (f16) format: API, domain and contracts.
+ *
+ * Storage: IEEE 754 binary16 bit patterns in uint16_t (facet_f16), in and
+ * out.  Not _Float16: C99 and C++ before C++23 have no such type, tcc, pcc
+ * and MSVC have none, and where gcc has one its ABI differs by target (an
+ * SSE register on x86-64, a general one elsewhere); uint16_t is what image
+ * formats, GPU buffers and half-float files store, is the same on every
+ * compiler, and carries the bits through untouched.  facet_f32_from_f16 and
+ * facet_f16_from_f32 convert (exactly, and rounded to nearest even).
+ *
+ * Computation: in binary16 lanes (AVX-512 FP16: 32 per zmm register; the
+ * scalar port, the specification, emulates binary16 in portable C:
+ * facet/f16_scalar.h), except the few operations binary16 cannot hold,
+ * which run in f32 lanes from the exact binary16 inputs: ggx_d's
+ * d = 1 - N.H^2 + alpha^2 N.H^2 and its quotient, and brdf_hammon's
+ * specular factor D Vis and Fresnel power (the peak 2 + 2 L.V - (N.L + N.V)^2
+ * cancels; y^5 raises a rounding five times); the kernel's contract says
+ * which.  One tier: the estimates are refined to binary16's rounding.
+ *
+ * Domain, for every f16 kernel:
+ *   alpha   [FACET_F16_ALPHA_MIN, 1] = [2^-7, 1] (perceptual roughness
+ *           0.0884, Filament's mobile floor 0.089): alpha^2 >= 2^-14, the
+ *           smallest binary16 normal, so D's alpha^2 / d^2 keeps binary16's
+ *           precision (below it alpha^2 is subnormal: 2^-15 has 10 bits,
+ *           2^-20 5); D <= 1 / (pi alpha^2) = 5215 stays below 65504.
+ *   N.L, N.V [FACET_F16_COS_MIN, 1] = [2^-7, 1] (89.55 degrees): N.L N.V >=
+ *           2^-14 stays normal, Vis <= 2^12, and N.L + N.V is exact in f32
+ *           (18 bits) for the f32 peak.  A rasterizer multiplies by N.L:
+ *           the clamp only changes light at N.L < 0.0078.
+ *   L.V     [-1, 1]; f0, albedo, cosines of Fresnel, N.H: [0, 1].
+ * Outside it: clamped (below the low end, -Inf and NaN to the low end, +Inf
+ * to the high end).  NaN rule: a NaN in any input (every NaN class: quiet,
+ * signalling, either sign, any payload) gives +0 (bits 0x0000).  Results
+ * are never Inf or NaN: values that would exceed 65504 (brdf_hammon at
+ * grazing, small alpha) saturate to 65504 (0x7bff).
+ *
+ * Error: against the double oracle (facet/oracle.h) at the same binary16
+ * inputs, after the domain clamp above: |got - want| <= bound * max(|want|,
+ * 2^-14) (values below the smallest normal 2^-14 are compared absolutely,
+ * bound * 2^-14: binary16's subnormals have 10 bits and fewer), and where
+ * want > 65504 the result is 65504.  The bounds FACET_ERR_<NAME>_F16 below
+ * are measured (tests/f16/test_f16_accuracy.c enforces them on every port
+ * this CPU runs; the table it prints is where they come from); "about
+ * 2^-8" (half an 8-bit sRGB code).
+ *
+ * Speed (build/facet-f16-bench: one run, interleaved, TSC ticks per
+ * sample, 1024-sample batches, this 2-core Xeon with AVX-512 FP16; f32 and
+ * f32_fast on the avx512 port, 16 lanes, f16 on avx512fp16, 32 lanes):
+ * f16 against f32 1.6x to 2.5x for the binary16-only kernels (noh 1.80,
+ * loh 1.74, fresnel_schlick 1.82, smith_vis 2.49, smith_vis_hammon 1.87,
+ * diffuse_hammon 1.85, lambert 1.57), but 0.83x for ggx_d and 1.07x for
+ * brdf_hammon, whose f32-lane parts (two conversions per input and the
+ * f32 work on two registers per 32 samples) cost what they save; against
+ * the binary16 shader-style transcription (-ffast-math, which the same run
+ * measures at 9.4% Inf and 18% beyond 2^-8 for brdf_hammon, 34% Inf for
+ * ggx_d) 0.35x for brdf_hammon.  The binary16 error bounds hold; the
+ * issue's speed targets (2.5x f32, 0.6x the transcription) are not met by
+ * brdf_hammon yet.
+ *
+ * The bounds are the largest measured on any port: scalar and avx512fp16
+ * over 2,000,000 samples per kernel (test_f16_accuracy 2000000), neonfp16
+ * over 1,000,000 under qemu-aarch64 (Arm's frecpe/frsqrte are defined bit
+ * for bit by the architecture, so the emulator computes what the hardware
+ * does); neonfp16's 8-bit estimates plus one step make noh, loh and the
+ * Smith terms its largest.
+ *
+ * Ways in: facet_<kernel>_f16 (one sample, the scalar port),
+ * facet_<kernel>_f16_batch (any count, any alignment, out may be an input:
+ * the best f16 port for this CPU), inline facet_<kernel>_f16_<port>
+ * (facet/f16_scalar.h on float-held binary16 values, facet/avx512fp16.h on
+ * __m512h, facet/neonfp16.h on float16x8_t).  Which kernels have an f16 form, and why the others do not:
+ * src/core/f16_kernels.def (`facet list --formats`). */
+#ifndef FACET_F16_H
+#define FACET_F16_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef uint16_t facet_f16; /* an IEEE binary16 bit pattern */
+
+#define FACET_F16_ALPHA_MIN 0.0078125f /* 2^-7 */
+#define FACET_F16_COS_MIN 0.0078125f   /* 2^-7 */
+#define FACET_F16_MAX 65504.0f         /* the largest binary16, bits 0x7bff */
+
+/* binary16 to float: exact (NaN stays NaN, Inf stays Inf) */
+float facet_f32_from_f16(facet_f16 h);
+/* float to binary16: rounded to nearest even, as IEEE converts (overflow
+ * to Inf, NaN to a quiet NaN): the kernels' inputs may be anything */
+facet_f16 facet_f16_from_f32(float x);
+void facet_f16_from_f32_batch(facet_f16 *out, const float *in, size_t n);
+void facet_f32_from_f16_batch(float *out, const facet_f16 *in, size_t n);
+
+/* The f16 port running the batches: "avx512fp16" where the CPU has
+ * AVX-512 FP16 (CPUID.(EAX=7,ECX=0):EDX[23], with AVX-512 BW and VL, and
+ * the OS saving ZMM state) and the active port (facet_set_port) is
+ * avx512; "neonfp16" on aarch64 where HWCAP has FPHP and ASIMDHP; else
+ * "scalar".  facet_f16_port_supported(name): 1 where this CPU
+ * runs it; facet_f16_port_refusal(name): why not (NULL where it does, or
+ * for an unknown name). */
+const char *facet_f16_port_name(void);
+int facet_f16_port_supported(const char *name);
+const char *facet_f16_port_refusal(const char *name);
+
+/* ---- the kernels ----------------------------------------------------------
+ * Formulas as the f32 kernels of facet.h; each bound is the measured
+ * maximum, rounded up (test_f16_accuracy prints it). */
+
+/* N.H from the dots, s rsqrt(max(2 + 2 L.V, s^2)), s = N.L + N.V; in
+ * [0, 1].  Binary16 throughout: 4 clamps, 6 ops and an rsqrt. */
+#define FACET_ERR_NOH_FROM_DOTS_F16 1.75e-3
+facet_f16 facet_noh_from_dots_f16(facet_f16 nol, facet_f16 nov, facet_f16 lov);
+/* L.H = sqrt((1 + L.V) / 2); binary16 throughout. */
+#define FACET_ERR_LOH_FROM_DOTS_F16 1.4e-3
+facet_f16 facet_loh_from_dots_f16(facet_f16 lov);
+/* Schlick: f0 + (1 - f0) (1 - cos)^5, 1 - cos carried as two binary16
+ * values (Fast2Sum); binary16 throughout. */
+#define FACET_ERR_FRESNEL_SCHLICK_F16 2.15e-3
+facet_f16 facet_fresnel_schlick_f16(facet_f16 f0, facet_f16 cos);
+/* GGX D = alpha^2 / (pi (1 - N.H^2 + alpha^2 N.H^2)^2) <= 5215; d and
+ * alpha / (sqrt(pi) d) in f32 lanes, the square in binary16. */
+#define FACET_ERR_GGX_D_F16 1.46e-3
+facet_f16 facet_ggx_d_f16(facet_f16 noh, facet_f16 alpha);
+/* Smith visibility, height-correlated exact form, <= 2^12; binary16
+ * throughout (radicands as sums of non-negative terms). */
+#define FACET_ERR_SMITH_VIS_F16 2.25e-3
+facet_f16 facet_smith_vis_f16(facet_f16 nol, facet_f16 nov, facet_f16 alpha);
+/* Hammon's visibility 0.5 / lerp(2 N.L N.V, N.L + N.V, alpha) <= 2^12;
+ * binary16 throughout. */
+#define FACET_ERR_SMITH_VIS_HAMMON_F16 1.8e-3
+facet_f16 facet_smith_vis_hammon_f16(facet_f16 nol, facet_f16 nov, facet_f16 alpha);
+/* Hammon's diffuse (facet.h); binary16 throughout. */
+#define FACET_ERR_DIFFUSE_HAMMON_F16 3.85e-3
+facet_f16 facet_diffuse_hammon_f16(facet_f16 nol, facet_f16 nov, facet_f16 lov, facet_f16 alpha,
+                                   facet_f16 albedo);
+/* The whole Hammon BRDF D Vis_hammon F + diffuse_hammon, saturated at
+ * 65504: D Vis and (1 - L.H)^5 in f32 lanes (the peak without
+ * cancellation, as the f32 kernel), each narrowed once; F, the diffuse and
+ * the sum in binary16. */
+#define FACET_ERR_BRDF_HAMMON_F16 3.7e-3
+facet_f16 facet_brdf_hammon_f16(facet_f16 nol, facet_f16 nov, facet_f16 lov, facet_f16 alpha,
+                                facet_f16 f0, facet_f16 albedo);
+/* albedo / pi */
+#define FACET_ERR_LAMBERT_F16 6.3e-4
+facet_f16 facet_lambert_f16(facet_f16 albedo);
+
+/* the batches: out[i] = facet_<kernel>_f16(x0[i], ...) */
+void facet_noh_from_dots_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov,
+                                   const facet_f16 *lov, size_t n);
+void facet_loh_from_dots_f16_batch(facet_f16 *out, const facet_f16 *lov, size_t n);
+void facet_fresnel_schlick_f16_batch(facet_f16 *out, const facet_f16 *f0, const facet_f16 *cos, size_t n);
+void facet_ggx_d_f16_batch(facet_f16 *out, const facet_f16 *noh, const facet_f16 *alpha, size_t n);
+void facet_smith_vis_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov,
+                               const facet_f16 *alpha, size_t n);
+void facet_smith_vis_hammon_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov,
+                                      const facet_f16 *alpha, size_t n);
+void facet_diffuse_hammon_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov,
+                                    const facet_f16 *lov, const facet_f16 *alpha,
+                                    const facet_f16 *albedo, size_t n);
+void facet_brdf_hammon_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov,
+                                 const facet_f16 *lov, const facet_f16 *alpha, const facet_f16 *f0,
+                                 const facet_f16 *albedo, size_t n);
+void facet_lambert_f16_batch(facet_f16 *out, const facet_f16 *albedo, size_t n);
+
+/* The f16 kernel table, in src/core/f16_kernels.def order (every kernel of
+ * facet_kernel_at's list; f16 NULL and why set where it has no f16 form). */
+typedef struct facet_f16_kernel {
+    const char *name;
+    int n_inputs;
+    facet_f16 (*f16)(const facet_f16 *in);                         /* NULL: no f16 form */
+    void (*f16_batch)(facet_f16 *out, const facet_f16 *const *in, size_t n);
+    double err_f16;                                                /* FACET_ERR_<NAME>_F16 */
+    const char *why;                                               /* why not, or "" */
+} facet_f16_kernel;
+size_t facet_f16_kernel_count(void);
+const facet_f16_kernel *facet_f16_kernel_at(size_t i);
+const facet_f16_kernel *facet_f16_kernel_find(const char *name);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
