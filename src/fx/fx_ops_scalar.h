@@ -32,7 +32,57 @@ typedef uint64_t fxv_u64;
 #define FXV_BODY static inline
 #endif
 
+/* FXV_T2: M-profile Thumb-2 (Cortex-M3/M4/M7/M33, ARMv7-M / ARMv8-M
+ * mainline): min, max, the clamps and clz as inline asm (IT blocks, USAT /
+ * SSAT, CLZ), so the compiler cannot turn a select into a data-dependent
+ * branch (its jump threading did, e.g. on min(clz(x), 31) at x = 0) and
+ * the fast kernels' machine code is branch-free, constant time
+ * (tests/suites/51-fx-wcet.sh checks the disassembly).  Each is the same
+ * function of its operands as the plain C below (exact; the pinned
+ * hashes).  Not taken (measured, Cortex-M4, arm-none-eabi-gcc 12.2):
+ * SMMUL for a high word whose factors the compiler proves below 2^31
+ * (__builtin_constant_p on the range): 3 products in the whole fast tier,
+ * none in brdf_hammon, and the guard let jump threading add branches. */
+#if !defined(FACET_FX_PORTABLE) && defined(__GNUC__) && defined(__OPTIMIZE__) && defined(__thumb2__) && \
+    defined(__ARM_ARCH_PROFILE) && __ARM_ARCH_PROFILE == 'M'
+#define FXV_T2 1
+#endif
+
 FXV_INLINE fxv_u32 fxv_k32(uint32_t c) { return c; }
+#if defined(FXV_T2)
+FXV_INLINE fxv_u32 fxv_min(fxv_u32 a, fxv_u32 b) { return a < b ? a : b; }
+FXV_INLINE fxv_u32 fxv_max(fxv_u32 a, fxv_u32 b) { return a > b ? a : b; }
+/* signed max(x, lo): x >= lo after it */
+FXV_INLINE int32_t fxv_t2_smax_(int32_t x, int32_t lo)
+{
+    __asm__("cmp\t%0, %1\n\tit\tlt\n\tmovlt\t%0, %1" : "+r"(x) : "rI"(lo) : "cc");
+    return x;
+}
+/* USAT #31: max(x, 0) of a signed x */
+FXV_INLINE uint32_t fxv_t2_pos_(int32_t x)
+{
+    uint32_t r;
+    __asm__("usat\t%0, #31, %1" : "=r"(r) : "r"(x));
+    return r;
+}
+FXV_INLINE fxv_u32 fxv_clamp(fxv_i32 x, int32_t lo, int32_t hi)
+{
+    return (uint32_t)(x < lo ? lo : x > hi ? hi : x);
+}
+FXV_INLINE fxv_u32 fxv_clamp_off(fxv_i32 x, int32_t lo, int32_t hi)
+{
+    if (__builtin_constant_p(lo) && __builtin_constant_p(hi) && lo > -(1 << 29) && hi < (1 << 29) &&
+        hi - lo == 65535) {
+        /* SSAT #31 (no overflow below), - lo, USAT #16: [0, 65535] */
+        uint32_t r;
+        int32_t t;
+        __asm__("ssat\t%0, #31, %1" : "=r"(t) : "r"(x));
+        __asm__("usat\t%0, #16, %1" : "=r"(r) : "r"(t - lo));
+        return r;
+    }
+    return fxv_min((uint32_t)fxv_t2_smax_(x, lo) - (uint32_t)lo, (uint32_t)(hi - lo));
+}
+#else
 FXV_INLINE fxv_u32 fxv_clamp(fxv_i32 x, int32_t lo, int32_t hi)
 {
     return (uint32_t)(x < lo ? lo : x > hi ? hi : x);
@@ -41,6 +91,7 @@ FXV_INLINE fxv_u32 fxv_clamp_off(fxv_i32 x, int32_t lo, int32_t hi)
 {
     return (uint32_t)(x < lo ? lo : x > hi ? hi : x) - (uint32_t)lo;
 }
+#endif
 FXV_INLINE fxv_u32 fxv_add32(fxv_u32 a, fxv_u32 b) { return a + b; }
 FXV_INLINE fxv_u32 fxv_sub32(fxv_u32 a, fxv_u32 b) { return a - b; }
 FXV_INLINE fxv_u32 fxv_mul32(fxv_u32 a, fxv_u32 b) { return a * b; }
@@ -48,7 +99,17 @@ FXV_INLINE fxv_u32 fxv_shr(fxv_u32 a, int k) { return a >> k; }
 FXV_INLINE fxv_u32 fxv_shl(fxv_u32 a, int k) { return a << k; }
 FXV_INLINE fxv_u32 fxv_shrv(fxv_u32 a, fxv_u32 n) { return a >> n; }
 FXV_INLINE fxv_u32 fxv_shlv(fxv_u32 a, fxv_u32 n) { return a << n; }
-#if !defined(FACET_FX_PORTABLE) && defined(__GNUC__) && \
+#if defined(FXV_T2)
+/* CLZ gives 32 for 0 */
+FXV_INLINE fxv_u32 fxv_clz(fxv_u32 a)
+{
+    uint32_t r;
+    if (__builtin_constant_p(a))
+        return a ? (uint32_t)__builtin_clz(a) : 32u;
+    __asm__("clz\t%0, %1" : "=r"(r) : "r"(a));
+    return r;
+}
+#elif !defined(FACET_FX_PORTABLE) && defined(__GNUC__) && \
     (defined(__x86_64__) || defined(__i386__) || defined(__aarch64__) || defined(__ARM_FEATURE_CLZ))
 FXV_INLINE fxv_u32 fxv_clz(fxv_u32 a) { return a ? (uint32_t)fxp_clz32(a) : 32u; }
 #else
@@ -78,9 +139,23 @@ FXV_INLINE fxv_u32 fxv_clz(fxv_u32 a)
     return n + fxv_clz8_[a >> 24];
 }
 #endif
+#if !defined(FXV_T2)
 FXV_INLINE fxv_u32 fxv_min(fxv_u32 a, fxv_u32 b) { return a < b ? a : b; }
 FXV_INLINE fxv_u32 fxv_max(fxv_u32 a, fxv_u32 b) { return a > b ? a : b; }
+#endif
+#if defined(FXV_T2)
+/* CMP then SBC: all ones on a borrow (a < b), else 0 */
+FXV_INLINE fxv_u32 fxv_lt(fxv_u32 a, fxv_u32 b)
+{
+    uint32_t m;
+    if (__builtin_constant_p(a) && __builtin_constant_p(b))
+        return a < b ? 0xFFFFFFFFu : 0u;
+    __asm__("cmp\t%1, %2\n\tsbc\t%0, %0, %0" : "=r"(m) : "r"(a), "rI"(b) : "cc");
+    return m;
+}
+#else
 FXV_INLINE fxv_u32 fxv_lt(fxv_u32 a, fxv_u32 b) { return a < b ? 0xFFFFFFFFu : 0u; }
+#endif
 FXV_INLINE fxv_u32 fxv_sel(fxv_u32 m, fxv_u32 a, fxv_u32 b) { return (a & m) | (b & ~m); }
 FXV_INLINE fxv_u32 fxv_and(fxv_u32 a, fxv_u32 b) { return a & b; }
 FXV_INLINE fxv_u32 fxv_or(fxv_u32 a, fxv_u32 b) { return a | b; }
@@ -99,7 +174,19 @@ FXV_INLINE fxv_u64 fxv_shl64(fxv_u64 a, int k) { return a << k; }
 FXV_INLINE fxv_u64 fxv_shrv64(fxv_u64 a, fxv_u32 n) { return fxp_shr64(a, (int)n); }
 FXV_INLINE fxv_u64 fxv_shlv64(fxv_u64 a, fxv_u32 n) { return fxp_shl64(a, (int)n); }
 FXV_INLINE fxv_u64 fxv_and64(fxv_u64 a, uint64_t c) { return a & c; }
+#if defined(FXV_T2)
+/* CMP, SBCS on the high words, SBC: all ones on a borrow */
+FXV_INLINE fxv_u32 fxv_lt64(fxv_u64 a, fxv_u64 b)
+{
+    uint32_t m;
+    if (__builtin_constant_p(a) && __builtin_constant_p(b))
+        return a < b ? 0xFFFFFFFFu : 0u;
+    __asm__("cmp\t%Q1, %Q2\n\tsbcs\t%0, %R1, %R2\n\tsbc\t%0, %0, %0" : "=&r"(m) : "r"(a), "r"(b) : "cc");
+    return m;
+}
+#else
 FXV_INLINE fxv_u32 fxv_lt64(fxv_u64 a, fxv_u64 b) { return a < b ? 0xFFFFFFFFu : 0u; }
+#endif
 /* by words (a 64-bit mask m 0x100000001 is a multiply on Thumb-1) */
 FXV_INLINE fxv_u64 fxv_sel64(fxv_u32 m, fxv_u64 a, fxv_u64 b)
 {
