@@ -32,66 +32,48 @@ typedef uint64_t fxv_u64;
 #define FXV_BODY static inline
 #endif
 
-/* FXV_T2: M-profile Thumb-2 (Cortex-M3/M4/M7/M33, ARMv7-M / ARMv8-M
- * mainline): min, max, the clamps and clz as inline asm (IT blocks, USAT /
- * SSAT, CLZ), so the compiler cannot turn a select into a data-dependent
- * branch (its jump threading did, e.g. on min(clz(x), 31) at x = 0) and
- * the fast kernels' machine code is branch-free, constant time
- * (tests/suites/51-fx-wcet.sh checks the disassembly).  Each is the same
- * function of its operands as the plain C below (exact; the pinned
- * hashes).  Not taken (measured, Cortex-M4, arm-none-eabi-gcc 12.2):
- * SMMUL for a high word whose factors the compiler proves below 2^31
- * (__builtin_constant_p on the range): 3 products in the whole fast tier,
- * none in brdf_hammon, and the guard let jump threading add branches. */
+/* FXV_T2: M-profile Thumb-2 (Cortex-M3/M4/M7/M33: ARMv7-M, ARMv7E-M,
+ * ARMv8-M mainline).  clz and the compare masks (fxv_lt, fxv_lt64) are
+ * inline asm (CLZ; CMP [SBCS] SBC), opaque to the optimiser: otherwise
+ * gcc 12 turns selects into data-dependent branches (jump threading, e.g.
+ * min(clz(x), 31) split at x = 0; sel(lt(a, b), ..) split on a < b: 90
+ * conditional branches in the fast kernels at -O2, Cortex-M4).  With them
+ * the compiler keeps min, max and the clamps as IT blocks and the fast
+ * kernels' machine code has no conditional branch (constant time,
+ * checked on the disassembly by tests/suites/51-fx-wcet.sh).  clamp_off
+ * of a 2^16-wide domain is SSAT, SUB, USAT (no IT).  Each is the same
+ * function of its operands as the plain C (exact; the pinned hashes).
+ * Measured and not taken (Cortex-M4, arm-none-eabi-gcc 12.2, -O2): min /
+ * max / clamp as asm (+3 to +11 instructions in brdf_hammon: the "+r"
+ * operands add moves); SMMUL for a high word whose factors the compiler
+ * proves below 2^31 (__builtin_constant_p on the range): 3 products in the
+ * whole fast tier, none in brdf_hammon, and the guard let jump threading
+ * add branches back. */
 #if !defined(FACET_FX_PORTABLE) && defined(__GNUC__) && defined(__OPTIMIZE__) && defined(__thumb2__) && \
     defined(__ARM_ARCH_PROFILE) && __ARM_ARCH_PROFILE == 'M'
 #define FXV_T2 1
 #endif
 
 FXV_INLINE fxv_u32 fxv_k32(uint32_t c) { return c; }
-#if defined(FXV_T2)
-FXV_INLINE fxv_u32 fxv_min(fxv_u32 a, fxv_u32 b) { return a < b ? a : b; }
-FXV_INLINE fxv_u32 fxv_max(fxv_u32 a, fxv_u32 b) { return a > b ? a : b; }
-/* signed max(x, lo): x >= lo after it */
-FXV_INLINE int32_t fxv_t2_smax_(int32_t x, int32_t lo)
-{
-    __asm__("cmp\t%0, %1\n\tit\tlt\n\tmovlt\t%0, %1" : "+r"(x) : "rI"(lo) : "cc");
-    return x;
-}
-/* USAT #31: max(x, 0) of a signed x */
-FXV_INLINE uint32_t fxv_t2_pos_(int32_t x)
-{
-    uint32_t r;
-    __asm__("usat\t%0, #31, %1" : "=r"(r) : "r"(x));
-    return r;
-}
 FXV_INLINE fxv_u32 fxv_clamp(fxv_i32 x, int32_t lo, int32_t hi)
 {
     return (uint32_t)(x < lo ? lo : x > hi ? hi : x);
 }
 FXV_INLINE fxv_u32 fxv_clamp_off(fxv_i32 x, int32_t lo, int32_t hi)
 {
+#if defined(FXV_T2)
     if (__builtin_constant_p(lo) && __builtin_constant_p(hi) && lo > -(1 << 29) && hi < (1 << 29) &&
         hi - lo == 65535) {
-        /* SSAT #31 (no overflow below), - lo, USAT #16: [0, 65535] */
+        /* SSAT #31 (so - lo cannot overflow), - lo, USAT #16: [0, 65535] */
         uint32_t r;
         int32_t t;
         __asm__("ssat\t%0, #31, %1" : "=r"(t) : "r"(x));
         __asm__("usat\t%0, #16, %1" : "=r"(r) : "r"(t - lo));
         return r;
     }
-    return fxv_min((uint32_t)fxv_t2_smax_(x, lo) - (uint32_t)lo, (uint32_t)(hi - lo));
-}
-#else
-FXV_INLINE fxv_u32 fxv_clamp(fxv_i32 x, int32_t lo, int32_t hi)
-{
-    return (uint32_t)(x < lo ? lo : x > hi ? hi : x);
-}
-FXV_INLINE fxv_u32 fxv_clamp_off(fxv_i32 x, int32_t lo, int32_t hi)
-{
+#endif
     return (uint32_t)(x < lo ? lo : x > hi ? hi : x) - (uint32_t)lo;
 }
-#endif
 FXV_INLINE fxv_u32 fxv_add32(fxv_u32 a, fxv_u32 b) { return a + b; }
 FXV_INLINE fxv_u32 fxv_sub32(fxv_u32 a, fxv_u32 b) { return a - b; }
 FXV_INLINE fxv_u32 fxv_mul32(fxv_u32 a, fxv_u32 b) { return a * b; }
@@ -139,10 +121,8 @@ FXV_INLINE fxv_u32 fxv_clz(fxv_u32 a)
     return n + fxv_clz8_[a >> 24];
 }
 #endif
-#if !defined(FXV_T2)
 FXV_INLINE fxv_u32 fxv_min(fxv_u32 a, fxv_u32 b) { return a < b ? a : b; }
 FXV_INLINE fxv_u32 fxv_max(fxv_u32 a, fxv_u32 b) { return a > b ? a : b; }
-#endif
 #if defined(FXV_T2)
 /* CMP then SBC: all ones on a borrow (a < b), else 0 */
 FXV_INLINE fxv_u32 fxv_lt(fxv_u32 a, fxv_u32 b)
