@@ -40,8 +40,8 @@ typedef uint64_t fxv_u64;
  * conditional branches in the fast kernels at -O2, Cortex-M4).  With them
  * the compiler keeps min, max and the clamps as IT blocks and the fast
  * kernels' machine code has no conditional branch (constant time,
- * checked on the disassembly by tests/suites/51-fx-wcet.sh).  clamp_off
- * of a 2^16-wide domain is SSAT, SUB, USAT (no IT).  Each is the same
+ * checked on the disassembly by tests/suites/51-fx-wcet.sh).  The clamps
+ * start with USAT / SSAT (no signed compare).  Each is the same
  * function of its operands as the plain C (exact; the pinned hashes).
  * Measured and not taken (Cortex-M4, arm-none-eabi-gcc 12.2, -O2): min /
  * max / clamp as asm (+3 to +11 instructions in brdf_hammon: the "+r"
@@ -55,25 +55,53 @@ typedef uint64_t fxv_u64;
 #endif
 
 FXV_INLINE fxv_u32 fxv_k32(uint32_t c) { return c; }
+#if defined(FXV_T2)
+/* USAT #31: max(x, 0) of a signed x; SSAT #31: x held in [-2^30, 2^30) */
+FXV_INLINE uint32_t fxv_t2_usat31_(int32_t x)
+{
+    uint32_t r;
+    __asm__("usat\t%0, #31, %1" : "=r"(r) : "r"(x));
+    return r;
+}
+FXV_INLINE int32_t fxv_t2_ssat31_(int32_t x)
+{
+    int32_t r;
+    __asm__("ssat\t%0, #31, %1" : "=r"(r) : "r"(x));
+    return r;
+}
+/* a clamp: USAT #31 (lo = 0) or a signed max, then an unsigned min (gcc
+ * branched on the nested signed compare of lov's [-1, 1]) */
+FXV_INLINE fxv_u32 fxv_clamp(fxv_i32 x, int32_t lo, int32_t hi)
+{
+    uint32_t r = __builtin_constant_p(lo) && lo == 0 ? fxv_t2_usat31_(x) : (uint32_t)(x < lo ? lo : x);
+    return r > (uint32_t)hi ? (uint32_t)hi : r;
+}
+/* SSAT #31 (so - lo cannot overflow: |lo|, |hi| < 2^29), - lo, USAT #31,
+ * min; USAT #16 alone for a 2^16-wide domain */
+FXV_INLINE fxv_u32 fxv_clamp_off(fxv_i32 x, int32_t lo, int32_t hi)
+{
+    if (__builtin_constant_p(lo) && __builtin_constant_p(hi) && lo > -(1 << 29) && hi < (1 << 29)) {
+        int32_t t = fxv_t2_ssat31_(x) - lo;
+        uint32_t r, w = (uint32_t)(hi - lo);
+        if (w == 65535u) {
+            __asm__("usat\t%0, #16, %1" : "=r"(r) : "r"(t));
+            return r;
+        }
+        r = fxv_t2_usat31_(t);
+        return r > w ? w : r;
+    }
+    return (uint32_t)(x < lo ? lo : x > hi ? hi : x) - (uint32_t)lo;
+}
+#else
 FXV_INLINE fxv_u32 fxv_clamp(fxv_i32 x, int32_t lo, int32_t hi)
 {
     return (uint32_t)(x < lo ? lo : x > hi ? hi : x);
 }
 FXV_INLINE fxv_u32 fxv_clamp_off(fxv_i32 x, int32_t lo, int32_t hi)
 {
-#if defined(FXV_T2)
-    if (__builtin_constant_p(lo) && __builtin_constant_p(hi) && lo > -(1 << 29) && hi < (1 << 29) &&
-        hi - lo == 65535) {
-        /* SSAT #31 (so - lo cannot overflow), - lo, USAT #16: [0, 65535] */
-        uint32_t r;
-        int32_t t;
-        __asm__("ssat\t%0, #31, %1" : "=r"(t) : "r"(x));
-        __asm__("usat\t%0, #16, %1" : "=r"(r) : "r"(t - lo));
-        return r;
-    }
-#endif
     return (uint32_t)(x < lo ? lo : x > hi ? hi : x) - (uint32_t)lo;
 }
+#endif
 FXV_INLINE fxv_u32 fxv_add32(fxv_u32 a, fxv_u32 b) { return a + b; }
 FXV_INLINE fxv_u32 fxv_sub32(fxv_u32 a, fxv_u32 b) { return a - b; }
 FXV_INLINE fxv_u32 fxv_mul32(fxv_u32 a, fxv_u32 b) { return a * b; }
