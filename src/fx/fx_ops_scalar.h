@@ -48,9 +48,12 @@ typedef uint64_t fxv_u64;
  * operands add moves); SMMUL for a high word whose factors the compiler
  * proves below 2^31 (__builtin_constant_p on the range): 3 products in the
  * whole fast tier, none in brdf_hammon, and the guard let jump threading
- * add branches back. */
-#if !defined(FACET_FX_PORTABLE) && defined(__GNUC__) && defined(__OPTIMIZE__) && defined(__thumb2__) && \
-    defined(__ARM_ARCH_PROFILE) && __ARM_ARCH_PROFILE == 'M'
+ * add branches back.  Only where the includer asks for constant time
+ * (FXV_CONSTANT_TIME: src/fx/fx_fast.c, the fast tier): the precise tier
+ * keeps its data-dependent fix-ups anyway, and the opaque forms cost it
+ * 16-64% of its Cortex-M4 instructions (mean of bench/cortexm's inputs). */
+#if defined(FXV_CONSTANT_TIME) && !defined(FACET_FX_PORTABLE) && defined(__GNUC__) && defined(__OPTIMIZE__) && \
+    defined(__thumb2__) && defined(__ARM_ARCH_PROFILE) && __ARM_ARCH_PROFILE == 'M'
 #define FXV_T2 1
 #endif
 
