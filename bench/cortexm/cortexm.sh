@@ -30,6 +30,8 @@
 # mainline code run on the mps2-an386 Cortex-M4 model; our startup does
 # not fit the AN505 secure memory map).  Needs arm-none-eabi-gcc with
 # newlib, qemu-system-arm, and llvm-mca for the -mca lines.
+# CORTEXM_FMTS / CORTEXM_CPUS (space-separated) restrict the builds, e.g.
+# CORTEXM_FMTS=fxfast CORTEXM_CPUS=cortex-m4 for one figure.
 # `bench/cortexm/cortexm.sh --profile [BUILD_DIR] [KERNEL...]`: the per-function
 # profile of the fixed-point kernels instead (bench/cortexm/cortexm_prof.sh).
 set -u
@@ -49,8 +51,8 @@ fi
 echo "# what kernel cpu value source" > "$tsv"
 link="--specs=rdimon.specs -nostartfiles -T tests/cortexm/mps2.ld tests/cortexm/startup.c"
 cflags="-mthumb -O2 -std=c99 -Wall -Wextra -Werror -Iinclude"
-for fmt in fx fxfast f32soft f32fpu; do
-    for cpu in cortex-m0 cortex-m4 cortex-m7 cortex-m33; do
+for fmt in ${CORTEXM_FMTS:-fx fxfast f32soft f32fpu}; do
+    for cpu in ${CORTEXM_CPUS:-cortex-m0 cortex-m4 cortex-m7 cortex-m33}; do
         # f32fpu: not on M0 (no FPU) nor M33 (its code runs on the M4 model,
         # which has no FPv5)
         [ $fmt = f32fpu ] && { [ $cpu = cortex-m0 ] || [ $cpu = cortex-m33 ]; } && continue

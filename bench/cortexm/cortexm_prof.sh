@@ -6,14 +6,20 @@
 # every executed address of a kernel call is mapped through the DWARF
 # inline chain (addr2line -i) and counted twice, per call (mean of the 4):
 #   op    the outermost fx primitive the instruction belongs to: an fxe_*
-#         pseudo-float operation, a facet_fx_* out-of-line primitive (rcp32,
+#         pseudo-float operation, an fxq_* fast-tier helper (not the kernel's
+#         own fxq_<kernel>), a facet_fx_* out-of-line primitive (rcp32,
 #         div2by1, isqrt64, rsqrt32), or an fxv_* lane op or fxp_* exact
 #         primitive used directly by the kernel's body;
 #         "(kernel)" for the kernel's own code (clamps, exact products)
 #   self  the innermost (inlined) function: fxp_mul64, fxv_sel, ...
 # MEASURED executed instructions (qemu), not cycles.  Default kernels:
-# brdf_hammon ggx_d smith_vis diffuse_hammon.
+# brdf_hammon ggx_d smith_vis diffuse_hammon.  CORTEXM_TIER=fast profiles the
+# fast tier (facet_<kernel>_fx_fast) instead; CORTEXM_CPUS restricts the cores.
 set -u
+case ${CORTEXM_TIER:-} in
+fast) tsrc="-DBENCH_FX_FAST src/fx/fx_fast.c" tpat='_fx_fast$' ;;
+*) tsrc="" tpat='_fx$' ;;
+esac
 build=${1:-build}
 [ $# -gt 0 ] && shift
 kernels=${*:-brdf_hammon ggx_d smith_vis diffuse_hammon}
@@ -26,17 +32,17 @@ if ! have arm-none-eabi-gcc || ! have qemu-system-arm; then
 fi
 link="--specs=rdimon.specs -nostartfiles -T tests/cortexm/mps2.ld tests/cortexm/startup.c"
 cflags="-mthumb -O2 -g -std=c99 -Wall -Wextra -Werror -Iinclude"
-for cpu in cortex-m0 cortex-m4; do
+for cpu in ${CORTEXM_CPUS:-cortex-m0 cortex-m4}; do
     case $cpu in cortex-m0) mach=mps2-an385 ;; *) mach=mps2-an386 ;; esac
     b=$dir/$cpu
     rm -rf "$b.d"
     mkdir -p "$b.d"
     # shellcheck disable=SC2086
-    arm-none-eabi-gcc -mcpu=$cpu $cflags $link -DBENCH_FX src/fx/fx_prims.c src/fx/fx_kernels.c \
+    arm-none-eabi-gcc -mcpu=$cpu $cflags $link -DBENCH_FX $tsrc src/fx/fx_prims.c src/fx/fx_kernels.c \
         bench/cortexm/cortexm_main.c -o "$b.elf" || exit 1
     arm-none-eabi-objdump -d "$b.elf" > "$b.dis"
-    arm-none-eabi-nm "$b.elf" | awk '$2 ~ /^[Tt]$/ && $3 ~ /^facet_.*_fx$/ { print $1, $3 }' |
-        sed -e 's/ facet_\(.*\)_fx$/ \1/' > "$b.sym"
+    arm-none-eabi-nm "$b.elf" | awk -v p="^facet_.*$tpat" '$2 ~ /^[Tt]$/ && $3 ~ p { print $1, $3 }' |
+        sed -e 's/ facet_\(.*\)_fx_fast$/ \1/' -e 's/ facet_\(.*\)_fx$/ \1/' > "$b.sym"
     timeout 120 qemu-system-arm -M $mach -nographic -semihosting-config enable=on,target=native \
         -kernel "$b.elf" -singlestep -d exec,nochain -D "$b.trace" >/dev/null 2>&1 || exit 1
     awk -v dir="$b.d" -v pcs=1 -f bench/cortexm/cortexm_trace.awk "$b.dis" "$b.sym" "$b.trace" > "$b.calls"
@@ -47,11 +53,11 @@ for cpu in cortex-m0 cortex-m4; do
         sort "$b.d/$k.pc" | uniq -c > "$b.d/$k.cnt"
         awk '{ print "0x" $2 }' "$b.d/$k.cnt" | arm-none-eabi-addr2line -a -f -i -e "$b.elf" > "$b.d/$k.a2l"
         echo "== $k on $cpu: executed instructions per call (mean of $ncalls), by fx op and by innermost function"
-        awk -v n="$ncalls" '
+        awk -v n="$ncalls" -v k="$k" '
             function flush() { if (addr == "") return
                 self = chain[1]; op = "(kernel)"
-                for (i = nch; i >= 1; i--) if (chain[i] ~ /^(fxe_|fxv_|fxp_|facet_fx_)/) { op = chain[i]; break }
-                if (op == "(kernel)") for (i = 1; i <= nch; i++) if (chain[i] !~ /^facet_.*_fx$/) { op = chain[i] "()"; break }
+                for (i = nch; i >= 1; i--) if (chain[i] ~ /^(fxe_|fxv_|fxp_|fxq_|facet_fx_)/ && chain[i] != "fxq_" k) { op = chain[i]; break }
+                if (op == "(kernel)") for (i = 1; i <= nch; i++) if (chain[i] !~ /^facet_.*_fx(_fast)?$/) { op = chain[i] "()"; break }
                 byop[op] += cnt[addr]; byself[self] += cnt[addr]; tot += cnt[addr]; addr = "" }
             function norm(a) { a = tolower(a); sub(/^0x/, "", a); sub(/^0+/, "", a); return a }
             FILENAME == ARGV[1] { cnt[norm($2)] = $1; next }

@@ -10,6 +10,9 @@
 # Prints per call "NAME INSNS M0CYCLES TAKEN" (TAKEN: branches, calls and
 # returns that changed the flow) and appends the executed
 # instruction texts of every call to DIR/NAME.s (for llvm-mca).
+# With -v paths=1 (tests/cortexm/wcet.sh) the texts go, once per distinct
+# executed path of a function, to DIR/NAME.pK.s instead (K from 1), and each
+# call line ends with its path number K.
 # With -v pcs=1 the executed addresses (hex, one a line) also go to
 # DIR/NAME.pc (bench/cortexm/cortexm_prof.sh's per-function profile).
 # M0CYCLES: the Cortex-M0 TRM timings (zero wait states, single-cycle
@@ -46,20 +49,29 @@ FILENAME == ARGV[2] { entry[hex($1)] = $2; next }
         if (pc == ret) {
             cyc += m0cyc(text[last], 1)
             taken++
-            printf "%s %d %d %d\n", name, cnt, cyc, taken
+            if (paths) {
+                if (!((name, key) in pid)) {
+                    pid[name, key] = ++npath[name]
+                    printf "%s", body > (dir "/" name ".p" npath[name] ".s")
+                    close(dir "/" name ".p" npath[name] ".s")
+                }
+                printf "%s %d %d %d %d\n", name, cnt, cyc, taken, pid[name, key]
+            } else
+                printf "%s %d %d %d\n", name, cnt, cyc, taken
             inside = 0
         } else {
             # the previous instruction's timing needs to know if it branched
             cyc += m0cyc(text[last], pc != last + size[last])
             taken += pc != last + size[last]
-            cnt++; print text[pc] >> (dir "/" name ".s"); last = pc
+            cnt++; last = pc
+            if (paths) { key = key " " pc; body = body text[pc] "\n" } else print text[pc] >> (dir "/" name ".s")
             if (pcs) printf "%x\n", pc >> (dir "/" name ".pc")
             next
         }
     }
     if (!inside && (pc in entry) && prev != "") {
         inside = 1; name = entry[pc]; ret = prev + size[prev]; cnt = 1; cyc = 0; taken = 0; last = pc
-        print text[pc] >> (dir "/" name ".s")
+        if (paths) { key = pc; body = text[pc] "\n" } else print text[pc] >> (dir "/" name ".s")
         if (pcs) printf "%x\n", pc >> (dir "/" name ".pc")
     }
     prev = pc

@@ -65,14 +65,103 @@
  *                          fx  fx_fast  batch/RGB
  *   cortex-m0 -O2          492      152        724
  *   cortex-m0 -Os          600      120        696
- *   cortex-m4 -O2          240       88        320
- *   cortex-m4 -Os          488       80        640
- *   cortex-m33 -O2         260       88        332
- *   cortex-m33 -Os         488       80        640
- * The deepest call is brdf_hammon's (its RGB batch above all); a kernel's
- * own figure is at most its tier's column.  FACET_FX_STACK_BYTES: no call
+ *   cortex-m4 -O2          240      120        320
+ *   cortex-m4 -Os          488       88        640
+ *   cortex-m33 -O2         260      136        332
+ *   cortex-m33 -Os         488       88        640
+ * The deepest call is brdf_hammon's (its RGB batch above all), but the
+ * fast tier's on M4/M33, smith_g1_gtr's at -O2 (120 / 136) and
+ * brdf_hammon's at -Os (88): the constant-time op layer
+ * (src/fx/fx_ops_scalar.h, opaque compare masks) holds more values live
+ * (was 88 / 88 / 80 / 80 with data-dependent branches); a kernel's own
+ * figure is at most its tier's column.  FACET_FX_STACK_BYTES: no call
  * needs more on any of these builds. */
 #define FACET_FX_STACK_BYTES 724
+/*
+ * Execution time (bytes aside, what a firmware budget needs): executed
+ * instructions (insns, MEASURED under qemu-system-arm 7.2, deterministic)
+ * and cycles (MODELLED) per call of every kernel, minimum-maximum over its
+ * golden vectors (the edge cases of `facet vectors` and 256 of its random
+ * vectors, seed 1: tests/cortexm/wcet_main.c), entry to return, callees
+ * included, arm-none-eabi-gcc 12.2.1 -mthumb -O2.  Cycles: Cortex-M0 the
+ * TRM timings on each executed trace (zero wait states); Cortex-M4 / M33
+ * llvm-mca 14 -mcpu=cortex-m4 / cortex-m33 on each distinct executed path
+ * as straight-line code (-iterations=1; no fetch, wait-state or branch
+ * penalty).  M33 code runs on the M4 model (bench/cortexm/cortexm.sh).
+ * Constant time: on Cortex-M4 and M33 the fast kernels' machine code, -O2
+ * and -Os, has no conditional branch (the op layer's Thumb-2 forms,
+ * src/fx/fx_ops_scalar.h; facet_brdf_hammon_rgb_fx_fast has one, its
+ * channel loop's), so every fast row there is one figure.  The precise
+ * tier keeps its exact division's and root's fix-up steps (and
+ * loh_from_dots returns early at L.V = -1).  On Cortex-M0 (no IT) gcc
+ * makes selects, min, max and clamps branches: the spread is each M0 row's
+ * (fast tier: loh_from_dots 27-59, its portable clz; the others at most
+ * 1.25x, the largest absolute smith_g1_gtr's 3906-4393; brdf_hammon
+ * 1001-1032); branch-free compare masks (CMP + SBCS) measured +4.8%
+ * instructions over the fast tier for 47 of its 746 conditional branches:
+ * not taken.
+ * Held exactly by tests/suites/51-fx-wcet.sh (with the disassembly check).
+ * Regenerate after a change of the bodies or the op layer with the one
+ * command  sh tests/cortexm/wcet.sh --write
+ * <wcet-table>
+ *   kernel                     tier  M0 insns  cycles     M4 insns  cycles     M33 insns cycles
+ *   noh_from_dots              fx    1053-1177 1319-1490  192-240   208-256    190-238   205-253
+ *   noh_from_dots              fast  131-150   176-198    71        77         71        75
+ *   loh_from_dots              fx    31-452    57-578     25-92     28-103     25-92     28-101
+ *   loh_from_dots              fast  27-59     42-84      37        40         36        38
+ *   fresnel_schlick            fx    103-106   117-124    21        25         21        25
+ *   fresnel_schlick            fast  60-63     70-77      23        27         23        27
+ *   fresnel_cook_torrance      fast  626-638   752-764    232       251        239       256
+ *   fresnel_schlick_f90        fast  75-78     91-98      30        35         30        35
+ *   fresnel_schlick_sg         fast  92-95     115-118    35        40         34        42
+ *   ggx_d                      fx    763-804   941-1001   148-181   156-189    148-181   155-188
+ *   ggx_d                      fast  213-219   258-270    77        84         78        87
+ *   blinn_phong_d              fast  908-940   1031-1058  215       246        224       250
+ *   beckmann_d                 fast  626-645   702-731    152       174        157       177
+ *   ggx_aniso_d                fx    1205-1268 1455-1544  338-374   353-389    342-377   356-391
+ *   ggx_aniso_d                fast  549-579   681-712    157       171        156       169
+ *   gtr_d                      fast  1523-1532 1703-1717  295       344        306       357
+ *   smith_g1                   fx    1080-1198 1350-1509  207-249   220-263    207-249   217-259
+ *   smith_g1                   fast  215-234   269-292    98        104        97        103
+ *   smith_g2                   fx    1648-1863 2042-2335  339-374   361-396    332-367   349-384
+ *   smith_g2                   fast  410-425   494-517    146       156        146       155
+ *   smith_g2_uncorrelated      fx    1680-1873 2086-2349  364-410   387-433    364-410   381-427
+ *   smith_g2_uncorrelated      fast  407-427   498-524    147       158        147       155
+ *   smith_vis                  fx    1622-1837 2001-2291  321-358   345-382    318-354   339-375
+ *   smith_vis                  fast  371-380   450-464    128       139        129       138
+ *   smith_g1_hammon            fx    501-539   629-677    59-86     65-92      59-86     64-91
+ *   smith_g1_hammon            fast  103-119   132-151    66        70         67        72
+ *   smith_g1_gtr               fast  3906-4393 4721-5375  1162      1297       1231      1382
+ *   smith_g2_hammon            fx    614-662   779-841    118-142   125-149    118-142   127-151
+ *   smith_g2_hammon            fast  177-182   222-236    87        93         88        95
+ *   smith_vis_hammon           fx    586-624   732-781    107-131   116-140    107-131   115-139
+ *   smith_vis_hammon           fast  140-146   178-186    71        75         73        78
+ *   g_implicit                 fx    19-22     25-28      12        13         12        13
+ *   g_implicit                 fast  19-22     25-28      13        14         13        14
+ *   g_neumann                  fx    16-20     19-27      12        13         12        13
+ *   g_neumann                  fast  16-20     19-27      9         10         9         10
+ *   g_cook_torrance            fx    536-583   684-744    89-90     92-93      89-90     92-93
+ *   g_cook_torrance            fast  156-164   205-215    85        89         85        90
+ *   g_kelemen                  fx    533-577   682-742    75-95     79-99      75-95     79-99
+ *   g_kelemen                  fast  151-161   196-213    80        85         80        85
+ *   smith_g1_beckmann          fx    1312-1785 1588-2173  378-485   404-511    378-490   400-514
+ *   smith_g1_beckmann          fast  533-548   650-671    181       196        182       195
+ *   smith_g1_schlick_beckmann  fx    579-617   727-782    95-124    103-132    95-124    104-133
+ *   smith_g1_schlick_beckmann  fast  167-176   212-221    80        87         79        87
+ *   smith_vis_joint_approx     fx    589-627   744-793    108-132   117-141    108-132   116-140
+ *   smith_vis_joint_approx     fast  143-149   190-198    72        76         74        79
+ *   smith_vis_fit              fx    1701-1783 2091-2200  575-619   605-649    582-626   615-659
+ *   smith_vis_fit              fast  318-325   379-388    114       131        114       134
+ *   diffuse_hammon             fx    2237-2373 2714-2892  666-716   708-759    669-719   712-762
+ *   diffuse_hammon             fast  400-418   479-500    123       137        131       146
+ *   diffuse_burley             fast  293-301   338-352    85        98         85        98
+ *   diffuse_oren_nayar         fast  427-465   511-563    205       214        205       217
+ *   diffuse_hammon_hybrid      fast  448-470   513-538    121       139        121       138
+ *   diffuse_hammon_cheap       fast  347-370   413-439    98        109        98        111
+ *   brdf_hammon                fx    4813-5050 5841-6180  1309-1531 1401-1634  1311-1533 1405-1640
+ *   brdf_hammon                fast  1001-1032 1182-1224  278       311        287       325
+ * </wcet-table>
+ */
 /*
  * How this header is organised: as facet.h, one block per kernel family
  * (the geometry identities, Fresnel, D, shadowing and visibility, diffuse,
@@ -123,7 +212,9 @@
  * written once over the lane op layer (src/fx/fx_fast_body.h), so a SIMD port
  * instantiates the same body.  Cost: executed instructions per call on
  * Cortex-M4 / Cortex-M0 (qemu trace, mean of bench/cortexm/cortexm_main.c's 4
- * inputs; arm-none-eabi-gcc 12.2 -O2), the precise tier's in brackets.
+ * inputs; arm-none-eabi-gcc 12.2 -O2), the precise tier's in brackets; the
+ * M4 figures of the fast tier are its constant-time code's (one figure for
+ * every input: the Execution time table above gives min-max per target).
  *
  * Datapath (a specification a fixed-function pipeline can implement):
  *   Inputs are clamped first (compare/select).  Exact stages:
@@ -270,7 +361,7 @@ const char *facet_fx_port_name(void); /* "avx2", "neon", "helium" or "scalar" */
  * fx: error 0 LSB (correctly rounded).  Cost: 1 sqrt, 1 division, ~8 mul64.
  * fx_fast: N.H = s / sqrt(2t); one sqrt, one 1/x.
  *   Error: FACET_FX_FAST_ERR_NOH_FROM_DOTS; measured e 0.538 (LSB 0.509) at
- *   (137, 879, -15701).  Cost: 73 / 147 (214 / 1109). */
+ *   (137, 879, -15701).  Cost: 71 / 147 (214 / 1109). */
 int32_t facet_noh_from_dots_fx(int32_t nol, int32_t nov, int32_t lov);
 int32_t facet_noh_from_dots_fx_fast(int32_t nol, int32_t nov, int32_t lov);
 void facet_noh_from_dots_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
@@ -331,7 +422,7 @@ void facet_fresnel_schlick_fx_fast_batch(int32_t *out, const int32_t *f0, const 
  * test's sweep: 0.610 at (49, 11673).  The extra 0.13 LSB over the final
  * rounding comes from the sqrt and 1/x tables (2^-15, 2^-16) in sqrt(f0),
  * 1/(1 + sqrt(f0)) and the refracted cosine (a Newton step on sqrt(f0)
- * alone measured 0.617: not taken).  Cost: 206 / 620. */
+ * alone measured 0.617: not taken).  Cost: 232 / 620. */
 int32_t facet_fresnel_cook_torrance_fx_fast(int32_t f0, int32_t voh);
 void facet_fresnel_cook_torrance_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *voh, size_t n);
 
@@ -351,7 +442,7 @@ void facet_fresnel_schlick_f90_fx_fast_batch(int32_t *out, const int32_t *f0, co
  * 2^-p = 2^-floor(p) times a 257-entry Q31 table of 2^(-i/256) with 20
  * interpolation bits (2^-20.1).
  * Error: FACET_FX_FAST_ERR_FRESNEL_SCHLICK_SG; measured e 0.501 (LSB
- * 0.500) at (46, 17697).  Cost: 36 / 95. */
+ * 0.500) at (46, 17697).  Cost: 35 / 95. */
 int32_t facet_fresnel_schlick_sg_fx_fast(int32_t f0, int32_t cos_theta);
 void facet_fresnel_schlick_sg_fx_fast_batch(int32_t *out, const int32_t *f0, const int32_t *cos_theta,
                                             size_t n);
@@ -379,7 +470,7 @@ void facet_fresnel_schlick_sg_fx_fast_batch(int32_t *out, const int32_t *f0, con
  * fx: error FACET_FX_ERR_GGX_D LSB.  Cost: 1 division, 3 fxe, 2 mul64.
  * fx_fast: d = (1 - n)(1 + n) + (n alpha)^2 exact in 64 bits; one 1/x.
  *   Error: FACET_FX_FAST_ERR_GGX_D; measured e 0.514 (LSB 0.510, rel
- *   2^-15.15) at (16701, 16432).  Cost: 73 / 217 (157 / 788). */
+ *   2^-15.15) at (16701, 16432).  Cost: 77 / 217 (157 / 788). */
 uint32_t facet_ggx_d_fx(int32_t noh, int32_t alpha);
 uint32_t facet_ggx_d_fx_fast(int32_t noh, int32_t alpha);
 void facet_ggx_d_fx_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
@@ -408,7 +499,7 @@ void facet_ggx_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t 
  * Error: FACET_FX_FAST_ERR_BLINN_PHONG_D (measured 0.5009 over every N.H
  * at 560 alphas; 0.5000 in the test; relative 2^-16 above 2^15 LSB;
  * e 0.501, LSB 0.500, rel 2^-16.01 at (31571, 3846)).
- * Cost: 202 / 918 (no precise tier). */
+ * Cost: 215 / 918 (no precise tier). */
 uint32_t facet_blinn_phong_d_fx_fast(int32_t noh, int32_t alpha);
 void facet_blinn_phong_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
 
@@ -422,7 +513,7 @@ void facet_blinn_phong_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const 
  * Error: FACET_FX_FAST_ERR_BECKMANN_D (measured 0.5001 over every N.H at
  * 560 alphas; 0.5000 in the test; relative 2^-16 above 2^15 LSB;
  * e 0.500, LSB 0.500, rel 2^-16.02 at (19614, 22452)).
- * Cost: 163 / 638 (no precise tier). */
+ * Cost: 152 / 638 (no precise tier). */
 uint32_t facet_beckmann_d_fx_fast(int32_t noh, int32_t alpha);
 void facet_beckmann_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha, size_t n);
 
@@ -447,7 +538,7 @@ void facet_beckmann_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int
  * from the normalised product; one 1/x.
  *   Error: FACET_FX_FAST_ERR_GGX_ANISO_D; measured e 0.514 (LSB 0.514, rel
  *   2^-15.02, i.e. 2^-15.0 above 2^15 LSB) at (24888, -32706, 7085, 32723,
- *   32705); 0.512 over 3e6 unit half vectors.  Cost: 159 / 569 (352 / 1242). */
+ *   32705); 0.512 over 3e6 unit half vectors.  Cost: 157 / 569 (352 / 1242). */
 uint32_t facet_ggx_aniso_d_fx(int32_t noh, int32_t toh, int32_t boh, int32_t alpha_x, int32_t alpha_y);
 uint32_t facet_ggx_aniso_d_fx_fast(int32_t noh, int32_t toh, int32_t boh, int32_t alpha_x, int32_t alpha_y);
 void facet_ggx_aniso_d_fx_batch(uint32_t *out, const int32_t *noh, const int32_t *toh,
@@ -482,7 +573,7 @@ void facet_ggx_aniso_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const in
  * Error: FACET_FX_FAST_ERR_GTR_D (measured max 0.514, relative 2^-15.1
  * above 2^15 LSB: the reciprocal's 2^-16 and the exponent's 2^-24 times ln 2
  * |Z|; e 0.514, LSB 0.510, rel 2^-15.12 at (26315, 315, 31073)).
- * Cost: 293 / 1525 (no precise tier). */
+ * Cost: 295 / 1525 (no precise tier). */
 uint32_t facet_gtr_d_fx_fast(int32_t noh, int32_t alpha, int32_t gamma);
 void facet_gtr_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t *alpha,
                                const int32_t *gamma, size_t n);
@@ -539,7 +630,7 @@ void facet_gtr_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t 
  * fx: error FACET_FX_ERR_SMITH_G1 LSB.  Cost: 1 sqrt, 1 division, 1 fxe, 3 mul.
  * fx_fast: w exact in 64 bits, one sqrt, one 1/x.
  *   Error: FACET_FX_FAST_ERR_SMITH_G1; measured e 0.536 (LSB 0.536) at
- *   (126, 8227).  Cost: 91 / 229 (210 / 1138). */
+ *   (126, 8227).  Cost: 98 / 229 (210 / 1138). */
 int32_t facet_smith_g1_fx(int32_t nov, int32_t alpha);
 int32_t facet_smith_g1_fx_fast(int32_t nov, int32_t alpha);
 void facet_smith_g1_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
@@ -551,7 +642,7 @@ void facet_smith_g1_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_
  * fx: error FACET_FX_ERR_SMITH_G2 LSB.  Cost: 2 sqrt, 1 division, 3 fxe, ~8 mul.
  * fx_fast: two sqrt, one 1/x.
  *   Error: FACET_FX_FAST_ERR_SMITH_G2; measured e 0.536 (LSB 0.526) at
- *   (32744, 128, 8281).  Cost: 136 / 418 (352 / 1766). */
+ *   (32744, 128, 8281).  Cost: 146 / 418 (352 / 1766). */
 int32_t facet_smith_g2_fx(int32_t nol, int32_t nov, int32_t alpha);
 int32_t facet_smith_g2_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 void facet_smith_g2_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
@@ -564,7 +655,7 @@ void facet_smith_g2_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_
  * division, 3 fxe, ~8 mul.
  * fx_fast: two sqrt, one 1/x.
  *   Error: FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED; measured e 0.544 (LSB
- *   0.539) at (16617, 139, 8637).  Cost: 131 / 420 (378 / 1792). */
+ *   0.539) at (16617, 139, 8637).  Cost: 147 / 420 (378 / 1792). */
 int32_t facet_smith_g2_uncorrelated_fx(int32_t nol, int32_t nov, int32_t alpha);
 int32_t facet_smith_g2_uncorrelated_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 void facet_smith_g2_uncorrelated_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
@@ -577,7 +668,7 @@ void facet_smith_g2_uncorrelated_fx_fast_batch(int32_t *out, const int32_t *nol,
  * fx: error FACET_FX_ERR_SMITH_VIS LSB.  Cost: as smith_g2.
  * fx_fast: two sqrt, one 1/x.
  *   Error: FACET_FX_FAST_ERR_SMITH_VIS; measured e 0.054 (LSB 0.000, rel
- *   2^-14.24) at (32739, 181, 16531).  Cost: 115 / 374 (331 / 1740). */
+ *   2^-14.24) at (32739, 181, 16531).  Cost: 128 / 374 (331 / 1740). */
 uint32_t facet_smith_vis_fx(int32_t nol, int32_t nov, int32_t alpha);
 uint32_t facet_smith_vis_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 void facet_smith_vis_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
@@ -591,7 +682,7 @@ void facet_smith_vis_fx_fast_batch(uint32_t *out, const int32_t *nol, const int3
  * correctly rounded).  Cost: 1 division, 2 mul.
  * fx_fast: the denominator exact; one 1/x.
  *   Error: FACET_FX_FAST_ERR_SMITH_G1_HAMMON; measured e 0.514 (LSB 0.511)
- *   at (61, 4096).  Cost: 54 / 115 (68 / 514). */
+ *   at (61, 4096).  Cost: 66 / 115 (68 / 514). */
 int32_t facet_smith_g1_hammon_fx(int32_t nov, int32_t alpha);
 int32_t facet_smith_g1_hammon_fx_fast(int32_t nov, int32_t alpha);
 void facet_smith_g1_hammon_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
@@ -618,7 +709,7 @@ void facet_smith_g1_hammon_fx_fast_batch(int32_t *out, const int32_t *nov, const
  * Error: FACET_FX_FAST_ERR_SMITH_G1_GTR LSB (measured 0.5002 in the test,
  * 0.5021 over 3e6 tuples with gamma uniform in [0, 4] and 1 in 7 at an
  * integer order; each closed form alone <= 0.5016; e 0.502, LSB 0.500 at
- * (24, 34, 97874)).  Cost: 949 / 3790
+ * (24, 34, 97874)).  Cost: 1162 / 3790
  * (no precise tier; 14 refined reciprocals, 2 log2, 1 2^f: the widest
  * kernel of the tier). */
 int32_t facet_smith_g1_gtr_fx_fast(int32_t nov, int32_t alpha, int32_t gamma);
@@ -630,7 +721,7 @@ void facet_smith_g1_gtr_fx_fast_batch(int32_t *out, const int32_t *nov, const in
  * fx: error FACET_FX_ERR_SMITH_G2_HAMMON LSB.  Cost: 1 division, ~6 mul.
  * fx_fast: m exact in 64 bits; one 1/x.
  *   Error: FACET_FX_FAST_ERR_SMITH_G2_HAMMON; measured e 0.514 (LSB 0.509)
- *   at (169, 13161, 10510).  Cost: 77 / 180 (128 / 648). */
+ *   at (169, 13161, 10510).  Cost: 87 / 180 (128 / 648). */
 int32_t facet_smith_g2_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
 int32_t facet_smith_g2_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 void facet_smith_g2_hammon_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
@@ -642,7 +733,7 @@ void facet_smith_g2_hammon_fx_fast_batch(int32_t *out, const int32_t *nol, const
  * fx: error FACET_FX_ERR_SMITH_VIS_HAMMON LSB.  Cost: 1 division, ~6 mul.
  * fx_fast: one 1/x.
  *   Error: FACET_FX_FAST_ERR_SMITH_VIS_HAMMON; measured e 0.037 (LSB 0.000,
- *   rel 2^-15.38) at (32762, 31510, 9047).  Cost: 66 / 143 (115 / 610). */
+ *   rel 2^-15.38) at (32762, 31510, 9047).  Cost: 71 / 143 (115 / 610). */
 uint32_t facet_smith_vis_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
 uint32_t facet_smith_vis_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 void facet_smith_vis_hammon_fx_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
@@ -781,7 +872,7 @@ void facet_smith_vis_fit_fx_fast_batch(uint32_t *out, const int32_t *nol, const 
  * table; the bracket in Q25 [< 2^31.02], times albedo / pi; one sqrt, one
  * 1/x.
  *   Error: FACET_FX_FAST_ERR_DIFFUSE_HAMMON; measured e 0.552 (LSB 0.517,
- *   rel 2^-14.55) at (134, 142, -32768, 40, 10500).  Cost: 121 / 414 (686 /
+ *   rel 2^-14.55) at (134, 142, -32768, 40, 10500).  Cost: 123 / 414 (686 /
  *   2290). */
 uint32_t facet_diffuse_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                  int32_t albedo);
@@ -812,7 +903,7 @@ void facet_diffuse_burley_fx_fast_batch(uint32_t *out, const int32_t *nol, const
  * max(nl, nv) Q22 [<= 256 2^22]; A + B term Q21 [< 2^27.5]; times albedo/pi
  * Q33: Q26.
  * Error: FACET_FX_FAST_ERR_DIFFUSE_OREN_NAYAR; measured e 0.507 (LSB 0.507,
- * rel 2^-11.00) at (2230, 2227, 32768, 22716, 1).  Cost: 172 / 453. */
+ * rel 2^-11.00) at (2230, 2227, 32768, 22716, 1).  Cost: 205 / 453. */
 uint32_t facet_diffuse_oren_nayar_fx_fast(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                                           int32_t albedo);
 void facet_diffuse_oren_nayar_fx_fast_batch(uint32_t *out, const int32_t *nol, const int32_t *nov,
@@ -859,7 +950,7 @@ void facet_diffuse_hammon_cheap_fx_fast_batch(uint32_t *out, const int32_t *nol,
  * fx_fast: one sqrt, three 1/x, 26 high-word products; spec and diffuse
  * added in Q29 (64 bits) and rounded once.
  *   Error: FACET_FX_FAST_ERR_BRDF_HAMMON; measured e 0.646 (LSB 0.646, rel
- *   2^-13.20 above 2^15 LSB) at (32768, 128, 129, 1000, 32, 0).  Cost: 275
+ *   2^-13.20 above 2^15 LSB) at (32768, 128, 129, 1000, 32, 0).  Cost: 278
  *   / 1060 (1476 / 4919). */
 uint64_t facet_brdf_hammon_fx(int32_t nol, int32_t nov, int32_t lov, int32_t alpha,
                               int32_t f0, int32_t albedo);

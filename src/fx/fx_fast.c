@@ -2,6 +2,7 @@
  * the bodies of src/fx/fx_fast_body.h on one lane (src/fx/fx_ops_scalar.h), the
  * specification every port of the tier reproduces bit for bit. */
 #include "facet/fx.h"
+#define FXV_CONSTANT_TIME 1 /* branch-free machine code where the op layer can (fx_ops_scalar.h) */
 #include "fx_ops_scalar.h"
 #include "fx_fast_body.h"
 
