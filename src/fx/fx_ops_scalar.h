@@ -83,9 +83,9 @@ FXV_INLINE fxv_u32 fxv_clamp(fxv_i32 x, int32_t lo, int32_t hi)
  * min; USAT #16 alone for a 2^16-wide domain */
 FXV_INLINE fxv_u32 fxv_clamp_off(fxv_i32 x, int32_t lo, int32_t hi)
 {
-    if (__builtin_constant_p(lo) && __builtin_constant_p(hi) && lo > -(1 << 29) && hi < (1 << 29)) {
+    if (__builtin_constant_p(lo) && __builtin_constant_p(hi) && lo > -0x20000000 && hi < 0x20000000) {
         int32_t t = fxv_t2_ssat31_(x) - lo;
-        uint32_t r, w = (uint32_t)(hi - lo);
+        uint32_t r, w = (uint32_t)hi - (uint32_t)lo;
         if (w == 65535u) {
             __asm__("usat\t%0, #16, %1" : "=r"(r) : "r"(t));
             return r;
@@ -117,7 +117,7 @@ FXV_INLINE fxv_u32 fxv_shlv(fxv_u32 a, fxv_u32 n) { return a << n; }
 FXV_INLINE fxv_u32 fxv_clz(fxv_u32 a)
 {
     uint32_t r;
-    if (__builtin_constant_p(a))
+    if (__builtin_constant_p(a) != 0)
         return a ? (uint32_t)__builtin_clz(a) : 32u;
     __asm__("clz\t%0, %1" : "=r"(r) : "r"(a));
     return r;
