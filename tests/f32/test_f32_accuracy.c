@@ -1,7 +1,9 @@
 /* test_f32_accuracy.c - every f32 kernel against the oracle, at the same
  * float inputs: random samples aimed at the hard regions, dense grids, and
  * the edge list.  Enforces the FACET_ERR_* bounds of facet.h and prints the
- * measured table (max relative error, max ulp, argmax input). */
+ * measured table (max relative error, max ulp, argmax input).  On every
+ * port this CPU runs: its batches and its per-sample entries (the
+ * facet_<kernel>_f32 calls, src/f32/f32_one_body.h; rows "<port>/1"). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <float.h>
@@ -113,6 +115,23 @@ static void measure(const set *st, const facet_kernel *k, batch_fn batch, float 
             for (i = 0; i < k->n_inputs; i++)
                 r->arg[i] = st->in[i][j];
         }
+    }
+}
+
+/* the per-sample calls as a batch: facet_<kernel>_f32 (_fast) on each
+ * sample, i.e. the active port's per-sample entry */
+static const facet_kernel *one_k_;
+static int one_fast_;
+static void one_batch(float *out, const float *const *in, size_t n)
+{
+    float (*f)(const float *) = one_fast_ ? one_k_->f32_fast : one_k_->f32;
+    size_t j;
+    int i;
+    for (j = 0; j < n; j++) {
+        float x[FACET_MAX_INPUTS];
+        for (i = 0; i < one_k_->n_inputs; i++)
+            x[i] = in[i][j];
+        out[j] = f(x);
     }
 }
 
@@ -275,6 +294,17 @@ int main(int argc, char **argv)
                 worst = r;
                 worst_port = pn;
             }
+            /* the same samples through the port's per-sample entries */
+            one_k_ = k;
+            one_fast_ = tier;
+            measure(&st, k, one_batch, out, &r);
+            printf("%-22s %-7s %10.3g %8.2f %9.2f  (", kn, pn, r.max_rel,
+                   r.max_rel > 0 ? log2(r.max_rel) : -999.0, r.max_ulp);
+            for (i = 0; i < k->n_inputs; i++)
+                printf("%s%.9g", i ? ", " : "", r.arg[i]);
+            printf(") -> %.9g / %.17g  (%s/1: per sample)\n", r.got, r.want, pn);
+            CHECK(r.max_rel <= bound, "%s per sample on %s: max relative error %.3g (2^%.2f) exceeds the bound 2^%.2f",
+                  kn, pn, r.max_rel, log2(r.max_rel), log2(bound));
         }
         if (md) {
             fprintf(md, " %ld | (", st.n);
