@@ -9,11 +9,11 @@
  *     the target has it (__FMA__ or AVX-512F on x86, __ARM_FEATURE_FMA on
  *     ARM, the F extension on RISC-V); otherwise a*b+c is two rounded operations and
  *     the exact square error comes from a Dekker split;
- *   - x86 with FMA (-mfma or -mavx512f, -march=x86-64-v3 and up, GCC or clang): the
- *     hardware's estimates, rcpss / rsqrtss (vrcp14ss / vrsqrt14ss with
- *     AVX-512F), with the refinement of facet/avx2.h (facet/avx512.h), and
- *     divss / sqrtss for quotients and roots: lane for lane the arithmetic
- *     of those ports.  FACET_SCALAR_PORTABLE forces the portable ops.
+ *   - x86 with FMA (-mfma or -mavx512f, -march=x86-64-v3 and up; GCC or
+ *     clang): the hardware's estimates rcpss / rsqrtss with the refinement
+ *     of facet/avx2.h, and divss / sqrtss for quotients and roots: lane
+ *     for lane the AVX2 port's arithmetic.  FACET_SCALAR_PORTABLE forces
+ *     the portable ops.
  * The contracts of the kernels are in facet.h.
  */
 #ifndef FACET_SCALAR_H
@@ -79,53 +79,29 @@ FACET_INLINE float facet_scalar_keep_ord4(float r, float a, float b, float c, fl
 }
 
 #if FACET_SCALAR_HAS_FMA && (defined(__x86_64__) || defined(__i386__)) && !defined(FACET_SCALAR_PORTABLE)
-/* x86 with FMA: the hardware's estimates and square root (one lane of the
- * AVX2 port's ops, or of the AVX-512 port's under AVX-512F) */
+/* x86 with FMA: the hardware's estimates and square root, one lane of the
+ * AVX2 port's ops (with AVX-512F too: rcpss / rsqrtss, not the 14-bit
+ * forms, so that one refinement covers every x86 FMA target) */
 #define FACET_SCALAR_X86_EST 1
 #include <immintrin.h>
 FACET_INLINE float facet_scalar_hw_sqrt_(float x) { return _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(x))); }
 #ifdef FACET_SCALAR_TEST_WORST_ESTIMATES
-/* Test builds only: estimates off by the architectural bound (1.5 * 2^-12;
- * just under 2^-14 with AVX-512F), the sign from bit 12 of x, as the AVX2
- * and AVX-512 ports emulate theirs (tests/suites/15-worst-estimates.sh). */
+/* Test builds only: estimates off by the architectural bound 1.5 * 2^-12,
+ * the sign from bit 12 of x, as the AVX2 port emulates its own
+ * (tests/suites/15-worst-estimates.sh). */
 FACET_INLINE float facet_scalar_worst_(float exact, float x)
 {
     union { float f; uint32_t u; } b;
-#ifdef __AVX512F__
-    const float d = 0.99f / 16384.0f;
-#else
     const float d = 1.5f / 4096.0f;
-#endif
     b.f = x;
     return __builtin_fmaf(exact, (b.u & 0x1000u) ? -d : d, exact);
 }
 #define facet_scalar_rcp_est_(x) facet_scalar_worst_(1.0f / (x), (x))
 #define facet_scalar_rsqrt_est_(x) facet_scalar_worst_(1.0f / facet_scalar_hw_sqrt_(x), (x))
-#elif defined(__AVX512F__)
-#define facet_scalar_rcp_est_(x) _mm_cvtss_f32(_mm_rcp14_ss(_mm_set_ss(x), _mm_set_ss(x)))
-#define facet_scalar_rsqrt_est_(x) _mm_cvtss_f32(_mm_rsqrt14_ss(_mm_set_ss(x), _mm_set_ss(x)))
 #else
 #define facet_scalar_rcp_est_(x) _mm_cvtss_f32(_mm_rcp_ss(_mm_set_ss(x)))
 #define facet_scalar_rsqrt_est_(x) _mm_cvtss_f32(_mm_rsqrt_ss(_mm_set_ss(x)))
 #endif
-#ifdef __AVX512F__
-/* facet/avx512.h: one Newton step each (2^-14 -> 2^-28), the fast tier the
- * raw 14-bit estimates, its root x times the rsqrt estimate */
-FACET_INLINE float facet_scalar_rcp(float x)
-{
-    float r = facet_scalar_rcp_est_(x);
-    return __builtin_fmaf(r, __builtin_fmaf(-x, r, 1.0f), r);
-}
-FACET_INLINE float facet_scalar_rsqrt(float x)
-{
-    float y = facet_scalar_rsqrt_est_(x);
-    float e = __builtin_fmaf(-(x * y), y, 1.0f);
-    return __builtin_fmaf(0.5f * y, e, y);
-}
-FACET_INLINE float facet_scalar_rcp_fast(float x) { return facet_scalar_rcp_est_(x); }
-FACET_INLINE float facet_scalar_rsqrt_fast(float x) { return facet_scalar_rsqrt_est_(x); }
-FACET_INLINE float facet_scalar_sqrt_fast(float x) { return x * facet_scalar_rsqrt_est_(x); }
-#else
 /* facet/avx2.h: the third-order steps r (1 + e + e^2) and
  * y (1 + e/2 + 3e^2/8) (error < 5e-11 from a 1.5 * 2^-12 estimate), the
  * fast tier one Newton step each (about 1.5 e^2 < 2^-21) */
@@ -154,7 +130,6 @@ FACET_INLINE float facet_scalar_rsqrt_fast(float x)
     return __builtin_fmaf(0.5f * y, e, y);
 }
 FACET_INLINE float facet_scalar_sqrt_fast(float x) { return facet_scalar_hw_sqrt_(x); }
-#endif
 FACET_INLINE float facet_scalar_sqrt(float x) { return facet_scalar_hw_sqrt_(x); }
 #endif
 

@@ -62,3 +62,4 @@ const facet_f32_port BATCH_CAT(facet_port_, BATCH_PORT, BATCH_CAT(_, BATCH_TIER,
 #undef BATCH_KERNEL
 #undef BATCH_TAIL_
 #undef BATCH_ONE_TABLE
+#undef BATCH_ONE_TABLE_OF

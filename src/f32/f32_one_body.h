@@ -5,13 +5,21 @@
  * estimates and square root, one lane of the AVX2 / AVX-512 arithmetic;
  * FMA on NEON, Helium and RVV targets; the portable ops elsewhere).
  * Included by src/f32/f32_batch_body.h once per tier, which puts the table
- * in the port's facet_f32_port (member one).
+ * (facet_one_<port>_<tier>) in the port's facet_f32_port (member one).
+ * A port whose own flags do not make good scalar code names the port whose
+ * table it takes instead, BATCH_ONE_FROM (a port its CPU test implies):
+ * ports/avx512/f32_avx512.c takes avx2's.
  * Names generated here from src/core/kernels.def: one function per kernel. */
 #include "facet/scalar.h"
 
 #define BATCH_ONE_FN(k) BATCH_CAT(one_, k, BATCH_CAT(_, BATCH_TIER, _))
 #define BATCH_ONE_KERNEL(k) BATCH_CAT(facet_, k, BATCH_CAT(_, BATCH_TIER, _scalar))
-#define BATCH_ONE_TABLE BATCH_CAT(one_table_, BATCH_TIER, _)
+#define BATCH_ONE_TABLE_OF(p) BATCH_CAT(facet_one_, p, BATCH_CAT(_, BATCH_TIER, ))
+#ifdef BATCH_ONE_FROM
+#define BATCH_ONE_TABLE BATCH_ONE_TABLE_OF(BATCH_ONE_FROM)
+extern const facet_f32_one BATCH_ONE_TABLE;
+#else
+#define BATCH_ONE_TABLE BATCH_ONE_TABLE_OF(BATCH_PORT)
 #define BATCH_ONE_PARAM_(q) float x##q
 #define BATCH_ONE_ARG_(q) x##q
 
@@ -31,12 +39,15 @@ static void BATCH_ONE_FN(brdf_hammon_rgb)(float out[3], float nol, float nov, fl
                                                            albedo[2]);
 }
 
-static const facet_f32_one BATCH_ONE_TABLE = {
+extern const facet_f32_one BATCH_ONE_TABLE;
+const facet_f32_one BATCH_ONE_TABLE = {
 #define FACET_KERNEL(name, NAME, n, ...) BATCH_ONE_FN(name),
 #include "../core/kernels.def"
 #undef FACET_KERNEL
     BATCH_ONE_FN(brdf_hammon_rgb),
 };
+
+#endif /* !BATCH_ONE_FROM */
 
 #undef BATCH_ONE_FN
 #undef BATCH_ONE_KERNEL
