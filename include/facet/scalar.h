@@ -28,14 +28,18 @@
 #else
 #define FACET_SCALAR_HAS_FMA 0
 #endif
+/* x86 with FMA (and so AVX): the AVX2 port's ops on one lane, below */
+#if FACET_SCALAR_HAS_FMA && (defined(__x86_64__) || defined(__i386__)) && !defined(FACET_SCALAR_PORTABLE)
+#define FACET_SCALAR_X86_EST 1
+#include <immintrin.h>
+#else
+#define FACET_SCALAR_X86_EST 0
+#endif
 
 FACET_INLINE float facet_scalar_set(float x) { return x; }
 FACET_INLINE float facet_scalar_add(float a, float b) { return a + b; }
 FACET_INLINE float facet_scalar_sub(float a, float b) { return a - b; }
 FACET_INLINE float facet_scalar_mul(float a, float b) { return a * b; }
-FACET_INLINE float facet_scalar_min(float a, float b) { return a < b ? a : b; }
-FACET_INLINE float facet_scalar_max(float a, float b) { return a > b ? a : b; }
-
 /* a*b + c; fused where the hardware fuses. */
 FACET_INLINE float facet_scalar_fma(float a, float b, float c)
 {
@@ -52,6 +56,9 @@ FACET_INLINE float facet_scalar_fnma(float a, float b, float c)
 {
     return facet_scalar_fma(-a, b, c);
 }
+
+FACET_INLINE float facet_scalar_min(float a, float b) { return a < b ? a : b; }
+FACET_INLINE float facet_scalar_max(float a, float b) { return a > b ? a : b; }
 
 /* a < b ? x : y */
 FACET_INLINE float facet_scalar_sel_lt(float a, float b, float x, float y)
@@ -78,12 +85,10 @@ FACET_INLINE float facet_scalar_keep_ord4(float r, float a, float b, float c, fl
     return (a == a && b == b && c == c && d == d) ? r : 0.0f;
 }
 
-#if FACET_SCALAR_HAS_FMA && (defined(__x86_64__) || defined(__i386__)) && !defined(FACET_SCALAR_PORTABLE)
+#if FACET_SCALAR_X86_EST
 /* x86 with FMA: the hardware's estimates and square root, one lane of the
  * AVX2 port's ops (with AVX-512F too: rcpss / rsqrtss, not the 14-bit
  * forms, so that one refinement covers every x86 FMA target) */
-#define FACET_SCALAR_X86_EST 1
-#include <immintrin.h>
 FACET_INLINE float facet_scalar_hw_sqrt_(float x) { return _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(x))); }
 #ifdef FACET_SCALAR_TEST_WORST_ESTIMATES
 /* Test builds only: estimates off by the architectural bound 1.5 * 2^-12,
@@ -133,7 +138,7 @@ FACET_INLINE float facet_scalar_sqrt_fast(float x) { return facet_scalar_hw_sqrt
 FACET_INLINE float facet_scalar_sqrt(float x) { return facet_scalar_hw_sqrt_(x); }
 #endif
 
-#ifndef FACET_SCALAR_X86_EST
+#if !FACET_SCALAR_X86_EST
 /* 1/x for x in [2^-126, 2^126]: the IEEE division. */
 FACET_INLINE float facet_scalar_rcp(float x) { return 1.0f / x; }
 
