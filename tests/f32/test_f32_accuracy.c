@@ -85,10 +85,14 @@ static const char *fast_name(const char *name)
 
 typedef void (*batch_fn)(float *out, const float *const *in, size_t n);
 
-static void measure(const set *st, const facet_kernel *k, batch_fn batch, float *out, stat *r)
+/* ftz: the path flushes denormal inputs (then judged at the flushed
+ * input): a port's batches (smp_port_flushes_denormals) and its per-sample
+ * entries (scalar code: on armv7 and Helium the scalar FPU keeps the
+ * denormals the vector unit flushes) are probed apart */
+static void measure(const set *st, const facet_kernel *k, batch_fn batch, int ftz, float *out, stat *r)
 {
     long j;
-    int i, ftz = smp_port_flushes_denormals();
+    int i;
     double floor_ = ftz ? SMP_ERR_FLOOR_FTZ : SMP_ERR_FLOOR;
     memset(r, 0, sizeof *r);
     batch(out, (const float *const *)st->in, (size_t)st->n);
@@ -280,7 +284,7 @@ int main(int argc, char **argv)
                 continue;
             }
             CHECK(facet_set_port(pn) == 0 && !strcmp(facet_port_name(), pn), "cannot select port %s", pn);
-            measure(&st, k, batch, out, &r);
+            measure(&st, k, batch, smp_port_flushes_denormals(), out, &r);
             printf("%-22s %-7s %10.3g %8.2f %9.2f  (", kn, pn, r.max_rel,
                    r.max_rel > 0 ? log2(r.max_rel) : -999.0, r.max_ulp);
             for (i = 0; i < k->n_inputs; i++)
@@ -297,7 +301,7 @@ int main(int argc, char **argv)
             /* the same samples through the port's per-sample entries */
             one_k_ = k;
             one_fast_ = tier;
-            measure(&st, k, one_batch, out, &r);
+            measure(&st, k, one_batch, facet_lambert_f32(1e-39f) == 0.0f, out, &r);
             printf("%-22s %-7s %10.3g %8.2f %9.2f  (", kn, pn, r.max_rel,
                    r.max_rel > 0 ? log2(r.max_rel) : -999.0, r.max_ulp);
             for (i = 0; i < k->n_inputs; i++)
