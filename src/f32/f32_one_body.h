@@ -8,7 +8,8 @@
  * (facet_one_<port>_<tier>) in the port's facet_f32_port (member one).
  * A port whose own flags do not make good scalar code names the port whose
  * table it takes instead, BATCH_ONE_FROM (a port its CPU test implies):
- * ports/avx512/f32_avx512.c takes avx2's.
+ * ports/avx512/f32_avx512.c takes avx2's, ports/helium/f32_helium.c the
+ * scalar port's (the same code there).
  * Names generated here from src/core/kernels.def: one function per kernel. */
 #include "facet/scalar.h"
 
