@@ -36,7 +36,8 @@ endif
 # every target.  Both get the port's own ISA flags (PORT_FLAGS_<port>).
 BENCH_LOOP_PORTS := $(filter $(patsubst bench/harness/loops_%.c,%,$(wildcard bench/harness/loops_*.c)),$(FACET_PORTS))
 BENCH_HARNESS := cycles bench cli_bench api_bench speed_bench loops_scalar loops_call $(BENCH_LOOP_PORTS:%=loops_%) \
-                 loops_batch loops_tables peers peers_textbook peers_sample fxhook $(BENCH_SHADER_PEERS)
+                 loops_batch loops_tables peers peers_textbook peers_sample fxhook $(BENCH_SHADER_PEERS) \
+                 percall_inline percall_peer
 BENCH_HARNESS_OBJ := $(BENCH_HARNESS:%=$(BUILD)/bench/harness/%.o)
 BENCH_RASTER_OBJ  := $(patsubst bench/raster/%.c,$(BUILD)/bench/raster/%.o,$(wildcard bench/raster/raster*.c))
 BENCH_REPORT_OBJ  := $(patsubst %,$(BUILD)/bench/report/%.o,report data doc doc_md doc_html svg kernel_facts \
@@ -101,6 +102,19 @@ $(BUILD)/bench/harness/%_fm.o: BENCH_FM = -ffast-math -DPEER_FASTMATH
 $(BENCH_SHADER_PEERS:%=$(BUILD)/bench/harness/%.o): $(BENCH_SHADER_SRC)
 	@mkdir -p $(dir $@)
 	$(CC) $(BENCH_SHADER) $(BENCH_PEER) $(BENCH_FM) -c $< -o $@
+
+# the per-call comparison (bench/harness/percall.h): one sample per loop
+# iteration, not vectorized, for -march=x86-64-v3 on x86 (-march=native
+# elsewhere): facet/scalar.h inline at -O2, and the engine-style peer
+# (peers_shader.c's brdf_hammon formula) at -O2 -ffast-math
+BENCH_PERCALL_MARCH := $(if $(BENCH_X86),-march=x86-64-v3,$(BENCH_NATIVE))
+BENCH_PERCALL = -O2 -fno-tree-vectorize $(BENCH_PERCALL_MARCH) '-DPERCALL_MARCH=$(or $(BENCH_PERCALL_MARCH),default)'
+$(BUILD)/bench/harness/percall_inline.o: bench/harness/percall_inline.c $(BENCH_DEPS)
+	@mkdir -p $(dir $@)
+	$(CC) $(BENCH_FLAGS) $(BENCH_PERCALL) -c $< -o $@
+$(BUILD)/bench/harness/percall_peer.o: $(BENCH_SHADER_SRC) bench/harness/percall.h
+	@mkdir -p $(dir $@)
+	$(CC) $(WARN) -Wno-unused-function -Iinclude $(CFLAGS) $(BENCH_PERCALL) -ffast-math -DPEER_PERCALL -c $< -o $@
 
 # the PNG encoder and the rasterizer (every shading path against the oracle)
 $(BUILD)/tests/test_bench: bench/test_bench.c $(BUILD)/bench/report/png.o $(BENCH_RASTER_OBJ) \

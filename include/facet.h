@@ -50,8 +50,11 @@
  *     itself); `test_op_counts --tsv FILE` adds each port's refinement
  *     operations and the fast-math shader peer's count.
  *
- * Names: facet_<kernel>_f32 here (library functions, the scalar port);
- * facet_<kernel>_f32_scalar in facet/scalar.h (the same, static inline).
+ * Names: facet_<kernel>_f32 here (library functions: one sample, the
+ * active port's per-sample entry, chosen once with the batches' port: the
+ * scalar body compiled with that port's flags, on x86 with FMA the
+ * hardware's rcp / rsqrt estimates and square root); facet_<kernel>_f32_scalar
+ * in facet/scalar.h (the same body, static inline, under your own flags).
  */
 #ifndef FACET_H
 #define FACET_H
@@ -1105,8 +1108,8 @@ typedef struct facet_dirs_f32 {
  * Error: the kernel's bound at the dots as formed (2^-18.5; the dots' own
  * rounding is the caller's geometry), plus one rounding for the factor.
  * Cost: 15 scalar ops for the three dots, 2 compares and 3 multiplies for
- * the factor, then facet_brdf_hammon_rgb_f32 (the scalar port: measured
- * within noise of that call alone, `build/facet-bench api`). */
+ * the factor, then facet_brdf_hammon_rgb_f32 (the active port's per-sample
+ * entry: measured within noise of that call alone, `build/facet-bench api`). */
 void facet_shade_hammon_rgb_f32(float out[3], const facet_dirs_f32 *dirs,
                                 const facet_material_f32 *m);
 /* the same on facet_brdf_hammon_rgb_f32_fast */

@@ -4,7 +4,12 @@
  *   - uniform material vs per-sample arrays (the same values),
  *   - per pixel: one sample per call through the library's scalar call,
  *     the vector entry, and the dispatched batch with n = 1,
- *   - fixed point: the RGB kernel vs three brdf_hammon_fx calls.
+ *   - fixed point: the RGB kernel vs three brdf_hammon_fx calls,
+ *   - per call (issue 26): facet_brdf_hammon_f32 and _f32_fast one sample
+ *     per call (dispatched to the port's per-sample entries), facet/scalar.h
+ *     inline and the engine-style formula (-ffast-math), each in a loop of
+ *     independent calls that is not vectorized (percall.h), in ticks per
+ *     call and as a ratio to the engine-style code.
  * Per port this CPU runs (the batch forms follow facet_set_port), both f32
  * tiers where it matters.  Unit: the clock's (cyc_unit(): ticks on a VM
  * without a PMU), per RGB sample; min and median over >= 11 epochs. */
@@ -18,6 +23,7 @@
 #include "cycles.h"
 #include "facet_bench.h"
 #include "raster/raster.h"
+#include "percall.h"
 
 #define N 1024
 
@@ -157,6 +163,28 @@ static void fx_fast_rgb(long reps)
 }
 
 
+/* per call: brdf_hammon, one sample per call, a loop of independent calls */
+static const float *pc_in_[6] = { nl, nv, lv, al, f0p[0], abp[0] };
+static void pc_lib(long reps)
+{
+    long r;
+    int i;
+    for (r = 0; r < reps; r++)
+        for (i = 0; i < N; i++)
+            op[1][i] = facet_brdf_hammon_f32(nl[i], nv[i], lv[i], al[i], f0p[0][i], abp[0][i]);
+}
+static void pc_lib_fast(long reps)
+{
+    long r;
+    int i;
+    for (r = 0; r < reps; r++)
+        for (i = 0; i < N; i++)
+            op[1][i] = facet_brdf_hammon_f32_fast(nl[i], nv[i], lv[i], al[i], f0p[0][i], abp[0][i]);
+}
+static void pc_inline(long reps) { long r; for (r = 0; r < reps; r++) percall_scalar_h(op[1], pc_in_, N); }
+static void pc_inline_fast(long reps) { long r; for (r = 0; r < reps; r++) percall_scalar_h_fast(op[1], pc_in_, N); }
+static void pc_peer(long reps) { long r; for (r = 0; r < reps; r++) percall_peer(op[1], pc_in_, N); }
+
 /* the rasterizer's shading pass (bench/raster), one frame per rep */
 static rs_gbuf *rg_;
 static void r_scalar(long reps) { long r; for (r = 0; r < reps; r++) rs_shade_scalar(rg_); }
@@ -180,6 +208,7 @@ static int cmp_d(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
+static double last_min_[16]; /* run_entries: each entry's minimum */
 static void run_entries(const entry *e, int n, int rounds, const char *suffix)
 {
     static double t[16][401];
@@ -194,6 +223,7 @@ static void run_entries(const entry *e, int n, int rounds, const char *suffix)
         }
     for (i = 0; i < n; i++) {
         qsort(t[i], (size_t)rounds, sizeof(double), cmp_d);
+        last_min_[i] = t[i][0];
         printf("%-8s %-48s %10.2f %10.2f%s\n", e[i].port, e[i].what, t[i][0], t[i][rounds / 2], suffix);
     }
 }
@@ -261,6 +291,8 @@ int facet_bench_api(int argc, char **argv)
                 { pn, "per pixel: _batch_material_interleaved, n = 1", pp_batch1, N },
                 { pn, "per pixel: brdf_hammon_rgb_f32 (scalar call)", pp_scalar_call, N },
                 { pn, "per pixel: shade_hammon_rgb_f32 (N, L, V)", pp_shade, N },
+                { pn, "per call: brdf_hammon_f32 (mono)", pc_lib, N },
+                { pn, "per call: brdf_hammon_f32_fast (mono)", pc_lib_fast, N },
             };
             run_entries(e, (int)(sizeof e / sizeof e[0]), quick ? 5 : 200, "");
         }
@@ -274,6 +306,28 @@ int facet_bench_api(int argc, char **argv)
             { "scalar", "fx_fast: brdf_hammon_rgb_fx_fast_batch", fx_fast_rgb, N },
         };
         run_entries(e, 4, quick ? 5 : 60, "");
+    }
+    /* per call, interleaved: the library's dispatched per-sample calls, scalar.h
+     * inline and the engine-style formula, built for percall_march */
+#if defined(__x86_64__) || defined(__i386__)
+    if (facet_port_supported("avx2")) /* the objects are built for x86-64-v3 */
+#endif
+    {
+        const char *pn = facet_port_name();
+        entry e[] = {
+            { pn, "per call: facet_brdf_hammon_f32 (dispatched)", pc_lib, N },
+            { pn, "per call: facet_brdf_hammon_f32_fast (dispatched)", pc_lib_fast, N },
+            { "inline", "per call: facet/scalar.h f32, -O2", pc_inline, N },
+            { "inline", "per call: facet/scalar.h f32_fast, -O2", pc_inline_fast, N },
+            { "peer", "per call: engine-style, -O2 -ffast-math", pc_peer, N },
+        };
+        int k;
+        printf("# per call: brdf_hammon one sample per call, a loop of %d independent calls, not vectorized;\n"
+               "# inline and peer built with %s -fno-tree-vectorize; %s per call, min and median, ratio to the peer's min\n",
+               N, percall_march, cyc_unit());
+        run_entries(e, 5, quick ? 11 : 301, "");
+        for (k = 0; k < 4; k++)
+            printf("%-8s %-48s %10.2fx\n", e[k].port, e[k].what, last_min_[k] / last_min_[4]);
     }
     /* the rasterizer's frame (shading pass only), every path on the auto port */
     rg_ = rs_render(quick ? 96 : 480, quick ? 64 : 320);

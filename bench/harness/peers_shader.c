@@ -109,24 +109,42 @@ static inline float sh_inv_len_h(float lv)
     return 1.0f / sqrtf(l2 > 1e-12f ? l2 : 1e-12f);
 }
 
+static inline float sh_brdf_hammon_1(float x0, float x1, float x2, float x3, float x4, float x5)
+{
+    float nl = cmax_(x0), nv = cmax_(x1), a = amax_(x3);
+    float lv = clamp_(x2, -1.0f, 1.0f);
+    float inv_len_h = sh_inv_len_h(lv);
+    float noh = sat_((nl + nv) * inv_len_h);
+    float loh = sat_(inv_len_h + inv_len_h * lv);
+    float a2 = a * a;
+    float d = (noh * a2 - noh) * noh + 1.0f;
+    float p = 2.0f * nl * nv;
+    float vis = 0.5f / (p + (nl + nv - p) * a);
+    float spec = a2 / (d * d) * INV_PI_F * vis * sh_f(x4, loh);
+    return spec + sh_diffuse(nl, nv, lv, noh, a, x5);
+}
+
+#ifdef PEER_PERCALL
+/* bench/harness/percall.h: the same formula one sample per iteration, the
+ * loop not vectorized (bench.mk builds this object -O2 -fno-tree-vectorize
+ * -ffast-math for the per-call comparison of `facet-bench api`) */
+#include "percall.h"
+void percall_peer(float *restrict out, const float *const *in, size_t n)
+{
+    const float *restrict x0 = in[0], *restrict x1 = in[1], *restrict x2 = in[2];
+    const float *restrict x3 = in[3], *restrict x4 = in[4], *restrict x5 = in[5];
+    size_t i;
+    for (i = 0; i < n; i++)
+        out[i] = sh_brdf_hammon_1(x0[i], x1[i], x2[i], x3[i], x4[i], x5[i]);
+}
+#else
 static void sh_brdf_hammon_b(float *restrict out, const float *const *in, size_t n)
 {
     const float *restrict x0 = in[0], *restrict x1 = in[1], *restrict x2 = in[2];
     const float *restrict x3 = in[3], *restrict x4 = in[4], *restrict x5 = in[5];
     size_t i;
-    for (i = 0; i < n; i++) {
-        float nl = cmax_(x0[i]), nv = cmax_(x1[i]), a = amax_(x3[i]);
-        float lv = clamp_(x2[i], -1.0f, 1.0f);
-        float inv_len_h = sh_inv_len_h(lv);
-        float noh = sat_((nl + nv) * inv_len_h);
-        float loh = sat_(inv_len_h + inv_len_h * lv);
-        float a2 = a * a;
-        float d = (noh * a2 - noh) * noh + 1.0f;
-        float p = 2.0f * nl * nv;
-        float vis = 0.5f / (p + (nl + nv - p) * a);
-        float spec = a2 / (d * d) * INV_PI_F * vis * sh_f(x4[i], loh);
-        out[i] = spec + sh_diffuse(nl, nv, lv, noh, a, x5[i]);
-    }
+    for (i = 0; i < n; i++)
+        out[i] = sh_brdf_hammon_1(x0[i], x1[i], x2[i], x3[i], x4[i], x5[i]);
 }
 
 static void sh_fresnel_b(float *restrict out, const float *const *in, size_t n)
@@ -581,3 +599,4 @@ static const peer_term_entry terms_[] = {
 };
 
 const peer_set SET_ = { NAME_, BUILD_, WIDTH_, sh_brdf, terms_ };
+#endif

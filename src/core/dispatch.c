@@ -1,10 +1,12 @@
 /* dispatch.c - the one dispatcher: picks the port for the running CPU once
  * and routes every public batch call to it: facet_<kernel>_f32_batch and
- * _f32_fast_batch, the RGB batches, facet_<sampler>_f32_batch and
+ * _f32_fast_batch, the RGB batches, the per-sample calls facet_<kernel>_f32
+ * and _f32_fast and facet_brdf_hammon_rgb_f32 (_fast), facet_<sampler>_f32_batch and
  * _f32_fast_batch, and (through facet_fx_active_port) every
  * facet_<kernel>_fx_batch and _fx_fast_batch (src/fx/fx_batch.c).
  * Names generated here from src/core/ports.def (the table of ports),
- * src/core/kernels.def and src/core/sample_kernels.def (the entry points).
+ * src/core/kernels.def and src/core/sample_kernels.def (the entry points,
+ * batch and per-sample).
  *
  * The ports compiled in are the lines of src/core/ports.def whose guard
  * holds (src/core/platform.h), best first, scalar last; a port is
@@ -146,6 +148,33 @@ int facet_port_supported(const char *name)
     }
 #include "kernels.def"
 #undef FACET_KERNEL
+
+/* ---- the per-sample entry points: the active port's per-sample entries of
+ * the tier (src/f32/f32_one_body.h), one acquire load and an indirect call */
+#define ONE_PARAM_(q) float x##q
+#define FACET_KERNEL(name, NAME, n, fx_type, ...)                                    \
+    float facet_##name##_f32(FACET_EACH_INPUT(n, ONE_PARAM_))                        \
+    {                                                                                \
+        return port()->f32->one->name(FACET_EACH_INPUT(n, ARG_));                    \
+    }                                                                                \
+    float facet_##name##_f32_fast(FACET_EACH_INPUT(n, ONE_PARAM_))                   \
+    {                                                                                \
+        return port()->f32_fast->one->name(FACET_EACH_INPUT(n, ARG_));               \
+    }
+#include "kernels.def"
+#undef FACET_KERNEL
+
+void facet_brdf_hammon_rgb_f32(float out[3], float nol, float nov, float lov, float alpha, const float f0[3],
+                               const float albedo[3])
+{
+    port()->f32->one->brdf_hammon_rgb(out, nol, nov, lov, alpha, f0, albedo);
+}
+
+void facet_brdf_hammon_rgb_f32_fast(float out[3], float nol, float nov, float lov, float alpha,
+                                    const float f0[3], const float albedo[3])
+{
+    port()->f32_fast->one->brdf_hammon_rgb(out, nol, nov, lov, alpha, f0, albedo);
+}
 
 /* the fx batch entry points (src/fx/fx_batch.c) ask here: the port's own
  * table of the tier, the scalar loops' where it has none (ports.def) */

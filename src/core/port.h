@@ -25,6 +25,18 @@ typedef struct facet_rgb_io {
     ptrdiff_t f0_stride, albedo_stride;
 } facet_rgb_io;
 
+/* f32, one sample: the port's per-sample entries of a tier (the scalar body,
+ * facet/scalar.h, compiled with the port's flags: src/f32/f32_one_body.h);
+ * facet_<name>_f32 and _f32_fast call the active port's (src/core/dispatch.c) */
+#define FACET_F32_ONE_PARAM_(q) float x##q
+typedef struct facet_f32_one {
+#define FACET_KERNEL(name, NAME, n, fx_type, ...) float (*name)(FACET_EACH_INPUT(n, FACET_F32_ONE_PARAM_));
+#include "kernels.def"
+#undef FACET_KERNEL
+    void (*brdf_hammon_rgb)(float out[3], float nol, float nov, float lov, float alpha, const float f0[3],
+                            const float albedo[3]);
+} facet_f32_one;
+
 /* f32: out[i] = facet_<name>_f32(x0[i], ...), any n, out may be an input */
 typedef struct facet_f32_port {
     const char *name;
@@ -39,6 +51,8 @@ typedef struct facet_f32_port {
     /* lanes 0 (vector-length agnostic): the lanes on this CPU, asked only
      * where the CPU runs the port; NULL for a port of fixed lanes */
     int (*lanes_fn)(void);
+    /* the per-sample entries of the same tier, from the port's own object */
+    const facet_f32_one *one;
 } facet_f32_port;
 
 /* fx: bit-identical to the scalar specification (src/fx/fx_kernels.c).  A

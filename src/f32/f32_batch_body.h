@@ -47,15 +47,19 @@
 
 /* the RGB batch */
 #include "f32_rgb_batch_body.h"
+/* the per-sample entries */
+#include "f32_one_body.h"
 
 const facet_f32_port BATCH_CAT(facet_port_, BATCH_PORT, BATCH_CAT(_, BATCH_TIER, )) = {
     BATCH_STR(BATCH_PORT), BATCH_W,
 #define FACET_KERNEL(name, NAME, n, ...) BATCH_FN(name),
 #include "../core/kernels.def"
 #undef FACET_KERNEL
-    BATCH_FN(brdf_hammon_rgb), BATCH_LANES_FN,
+    BATCH_FN(brdf_hammon_rgb), BATCH_LANES_FN, &BATCH_ONE_TABLE,
 };
 
 #undef BATCH_FN
 #undef BATCH_KERNEL
 #undef BATCH_TAIL_
+#undef BATCH_ONE_TABLE
+#undef BATCH_ONE_TABLE_OF

@@ -1,40 +1,16 @@
-/* f32_entry.c - the library's per-sample f32 entry points of both tiers:
- * the scalar port, out of line.
- * Names generated here from src/core/kernels.def: facet_<kernel>_f32 and
- * facet_<kernel>_f32_fast; from src/core/sample_kernels.def:
+/* f32_entry.c - the library's per-sample f32 entry points of both tiers
+ * beyond the kernels' (which src/core/dispatch.c routes to the active
+ * port's per-sample entries, src/f32/f32_one_body.h): the vector entry
+ * facet_shade_hammon_rgb_f32 (_fast) over the dispatched RGB call, and the
+ * samplers, the scalar port out of line.
+ * Names generated here from src/core/sample_kernels.def:
  * facet_<sampler>_f32 and facet_<sampler>_f32_fast. */
 #include "facet.h"
 #include "facet/scalar.h"
 #include "../core/kernel_list.h"
 #include "../core/sample_port.h"
 
-#define PARAM_(q) float x##q
 #define ARG_(q) x##q
-#define FACET_KERNEL(name, NAME, n, ...)                                               \
-    float facet_##name##_f32(FACET_EACH_INPUT(n, PARAM_))                              \
-    {                                                                                  \
-        return facet_##name##_f32_scalar(FACET_EACH_INPUT(n, ARG_));                   \
-    }                                                                                  \
-    float facet_##name##_f32_fast(FACET_EACH_INPUT(n, PARAM_))                         \
-    {                                                                                  \
-        return facet_##name##_f32_fast_scalar(FACET_EACH_INPUT(n, ARG_));              \
-    }
-#include "../core/kernels.def"
-#undef FACET_KERNEL
-
-void facet_brdf_hammon_rgb_f32(float out[3], float nol, float nov, float lov,
-                               float alpha, const float f0[3], const float albedo[3])
-{
-    facet_brdf_hammon_rgb_f32_scalar(&out[0], &out[1], &out[2], nol, nov, lov, alpha, f0[0], f0[1],
-                                     f0[2], albedo[0], albedo[1], albedo[2]);
-}
-
-void facet_brdf_hammon_rgb_f32_fast(float out[3], float nol, float nov, float lov,
-                                    float alpha, const float f0[3], const float albedo[3])
-{
-    facet_brdf_hammon_rgb_f32_fast_scalar(&out[0], &out[1], &out[2], nol, nov, lov, alpha, f0[0],
-                                          f0[1], f0[2], albedo[0], albedo[1], albedo[2]);
-}
 
 /* the vector entry: the dots, the kernel, the below-horizon rule, the N.L factor */
 static float dot3_(const facet_vec3_f32 *a, const facet_vec3_f32 *b)
@@ -48,15 +24,14 @@ static float dot3_(const facet_vec3_f32 *a, const facet_vec3_f32 *b)
         float nol = dot3_(&d->n, &d->l), nov = dot3_(&d->n, &d->v);                     \
         float lov = dot3_(&d->l, &d->v), brdf[3], k;                                    \
         int c;                                                                          \
-        rgb(&brdf[0], &brdf[1], &brdf[2], nol, nov, lov, m->alpha, m->f0[0], m->f0[1],   \
-            m->f0[2], m->albedo[0], m->albedo[1], m->albedo[2]);                        \
+        rgb(brdf, nol, nov, lov, m->alpha, m->f0, m->albedo);                           \
         /* 0 below the horizon and for NaN (the compare is false) */                    \
         k = nol > 0.0f ? (nol < 1.0f ? nol : 1.0f) : 0.0f;                              \
         for (c = 0; c < 3; c++)                                                         \
             out[c] = brdf[c] * k;                                                       \
     }
-SHADE_(facet_shade_hammon_rgb_f32, facet_brdf_hammon_rgb_f32_scalar)
-SHADE_(facet_shade_hammon_rgb_f32_fast, facet_brdf_hammon_rgb_f32_fast_scalar)
+SHADE_(facet_shade_hammon_rgb_f32, facet_brdf_hammon_rgb_f32)
+SHADE_(facet_shade_hammon_rgb_f32_fast, facet_brdf_hammon_rgb_f32_fast)
 
 /* ---- the samplers ---------------------------------------------------------- */
 #define S_PARAM_(q) float x##q

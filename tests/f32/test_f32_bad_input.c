@@ -6,7 +6,9 @@
  * either sign, payloads) in each input position gives +0 (the NaN rule).
  * Also the named special points, and both tiers of every kernel at its
  * golden values (tests/lib/golden.h): within the bound, to the bit where
- * the point is a named point of the contract. */
+ * the point is a named point of the contract.  The per-sample calls run
+ * the active port's per-sample entries (src/f32/f32_one_body.h): all of it
+ * on every port this CPU runs, selected with facet_set_port. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <float.h>
@@ -30,14 +32,13 @@ static float nan_at(int i)
     return f;
 }
 
-int main(void)
+static void check_port(void)
 {
     const float bad[] = { INFINITY, -INFINITY, 0.0f, -0.0f, 1.4e-45f, -1.4e-45f,
                           1e-39f, -1e-30f, -1.0f, -2.0f, 1.0000001f, 2.0f, 1e30f, FLT_MAX, -FLT_MAX };
     const int n_bad = (int)(sizeof bad / sizeof bad[0]);
     smp_rng rng = { 12345 };
     size_t ki;
-    th_name = "f32_bad_input";
 
     for (ki = 0; ki < 2 * facet_kernel_count(); ki++) {
         /* every kernel in both tiers: f32, then f32_fast */
@@ -290,5 +291,26 @@ int main(void)
                       (int)j, got, (float)g->want);
         }
     }
+}
+
+int main(void)
+{
+    static char names[16][48];
+    size_t pi;
+    for (pi = 0; pi < facet_port_count() && pi < 16; pi++) {
+        int sup;
+        const char *pn = facet_port_at(pi, &sup, NULL);
+        th_name = "f32_bad_input";
+        if (!sup) {
+            SKIP("port %s is compiled in but this CPU cannot run it", pn);
+            continue;
+        }
+        CHECK(facet_set_port(pn) == 0 && !strcmp(facet_port_name(), pn), "cannot select port %s", pn);
+        snprintf(names[pi], sizeof names[pi], "f32_bad_input (port %s)", pn);
+        th_name = names[pi];
+        check_port();
+    }
+    facet_set_port("auto");
+    th_name = "f32_bad_input";
     return th_done();
 }
