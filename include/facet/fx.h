@@ -247,6 +247,24 @@
  *     2^10 (biased, so never negative).  A quotient is one table
  *     reciprocal of the normalised divisor times the normalised dividend,
  *     then one rounded shift by the lane's exponent (saturating).
+ *     The G terms (smith_g1, smith_g2, smith_g2_uncorrelated,
+ *     smith_g1_hammon, smith_g2_hammon, smith_g1_beckmann,
+ *     smith_g1_schlick_beckmann) refine that reciprocal by one Newton step
+ *     (2^-30), and the GGX ones take the form G1 = X / (X + Y), X = 2 n (n +
+ *     r), Y = a^2 (1 - n^2) (G2 = 1 / (1/G1 + 1/G1 - 1), the uncorrelated
+ *     G2 = G1 G1 from the same two ratios), rounded as 1 - Y / (X + Y):
+ *     a ratio near 1 by the table alone steps backwards where its chord
+ *     slope is off by more than the function's slope (issue 25 item 4).
+ *   Monotone: every fast kernel is non-decreasing or non-increasing in each
+ *     input in which its function is, along every line of
+ *     tests/fx/test_fx_fast.c's monotonicity sweep (every value of the
+ *     input on 128 lines of the other input, or 120 lines of three- to
+ *     six-input kernels: 69 kernel-input pairs, 315 M steps), and over
+ *     every (N.V, alpha) pair in both inputs for smith_g1, smith_g1_hammon,
+ *     smith_g1_beckmann and smith_g1_schlick_beckmann (2^31 steps each);
+ *     but smith_g1_gtr, whose monotone cubic in gamma meets five closed
+ *     forms rounded apart: 1 reversal in N.V and 172 in alpha over the
+ *     sweep's 3.9 M steps each (its contract), held to those counts.
  *   Intermediates truncate (floor), but for the few steps the body marks
  *     as rounded (table interpolations, the diffuse sum's terms); the final
  *     rounding is to nearest, ties up; results saturate at the format's
@@ -594,18 +612,18 @@ void facet_gtr_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t 
  * sweep, 0.8 M to 2 M tuples per kernel, and its quick variant under
  * FACET_TEST_QUICK. */
 #define FACET_FX_ERR_SMITH_G1                        1
-#define FACET_FX_FAST_ERR_SMITH_G1                   0.536
+#define FACET_FX_FAST_ERR_SMITH_G1                   0.520
 #define FACET_FX_ERR_SMITH_G2                        1
-#define FACET_FX_FAST_ERR_SMITH_G2                   0.536
+#define FACET_FX_FAST_ERR_SMITH_G2                   0.527
 #define FACET_FX_ERR_SMITH_G2_UNCORRELATED           1
-#define FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED      0.544
+#define FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED      0.532
 #define FACET_FX_ERR_SMITH_VIS                       1
 #define FACET_FX_FAST_ERR_SMITH_VIS                  0.054
 #define FACET_FX_ERR_SMITH_G1_HAMMON                 1
-#define FACET_FX_FAST_ERR_SMITH_G1_HAMMON            0.514
+#define FACET_FX_FAST_ERR_SMITH_G1_HAMMON            0.500
 #define FACET_FX_FAST_ERR_SMITH_G1_GTR               0.51
 #define FACET_FX_ERR_SMITH_G2_HAMMON                 1
-#define FACET_FX_FAST_ERR_SMITH_G2_HAMMON            0.514
+#define FACET_FX_FAST_ERR_SMITH_G2_HAMMON            0.500
 #define FACET_FX_ERR_SMITH_VIS_HAMMON                1
 #define FACET_FX_FAST_ERR_SMITH_VIS_HAMMON           0.037
 #define FACET_FX_ERR_G_IMPLICIT                      1
@@ -617,9 +635,9 @@ void facet_gtr_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t 
 #define FACET_FX_ERR_G_KELEMEN                       1
 #define FACET_FX_FAST_ERR_G_KELEMEN                  0.513
 #define FACET_FX_ERR_SMITH_G1_BECKMANN               1
-#define FACET_FX_FAST_ERR_SMITH_G1_BECKMANN          0.523
+#define FACET_FX_FAST_ERR_SMITH_G1_BECKMANN          0.502
 #define FACET_FX_ERR_SMITH_G1_SCHLICK_BECKMANN       1
-#define FACET_FX_FAST_ERR_SMITH_G1_SCHLICK_BECKMANN  0.508
+#define FACET_FX_FAST_ERR_SMITH_G1_SCHLICK_BECKMANN  0.500
 #define FACET_FX_ERR_SMITH_VIS_JOINT_APPROX          1
 #define FACET_FX_FAST_ERR_SMITH_VIS_JOINT_APPROX     0.037
 #define FACET_FX_ERR_SMITH_VIS_FIT                   1
@@ -628,9 +646,15 @@ void facet_gtr_d_fx_fast_batch(uint32_t *out, const int32_t *noh, const int32_t 
 /* Smith G1 (GGX, exact) = 2 n / (n + sqrt(alpha^2 + (1 - alpha^2) n^2));
  * nov [0, 1], alpha [2^-10, 1].  Q15, max 1; G1(0) = 0, G1(1) = 1.
  * fx: error FACET_FX_ERR_SMITH_G1 LSB.  Cost: 1 sqrt, 1 division, 1 fxe, 3 mul.
- * fx_fast: w exact in 64 bits, one sqrt, one 1/x.
- *   Error: FACET_FX_FAST_ERR_SMITH_G1; measured e 0.536 (LSB 0.536) at
- *   (126, 8227).  Cost: 98 / 229 (210 / 1138). */
+ * fx_fast: G1 = X / (X + Y), X = 2 n (n + r), Y = a^2 (1 - n^2) (r's
+ *   table root; X, Y and their sum exact in 64 bits), rounded as 1 - Y / (X
+ *   + Y) by one Newton-refined 1/x; monotone in both inputs (every pair,
+ *   the datapath paragraph above).
+ *   Error: FACET_FX_FAST_ERR_SMITH_G1; measured e 0.520 (LSB 0.520) at
+ *   (117, 8397) (0.536 as 2 n / (n + r) by the table 1/x: r's error now
+ *   enters times (r - n) / (n + r)^2).  Cost: 98 / 229 (210 / 1138),
+ *   measured before the monotone form
+ *   (M4 and M33 now: the Execution time table). */
 int32_t facet_smith_g1_fx(int32_t nov, int32_t alpha);
 int32_t facet_smith_g1_fx_fast(int32_t nov, int32_t alpha);
 void facet_smith_g1_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
@@ -640,9 +664,14 @@ void facet_smith_g1_fx_fast_batch(int32_t *out, const int32_t *nov, const int32_
  * r(x) = sqrt(alpha^2 + (1 - alpha^2) x^2); nol, nov [2^-8, 1], alpha
  * [2^-10, 1].  Q15, max 1.
  * fx: error FACET_FX_ERR_SMITH_G2 LSB.  Cost: 2 sqrt, 1 division, 3 fxe, ~8 mul.
- * fx_fast: two sqrt, one 1/x.
- *   Error: FACET_FX_FAST_ERR_SMITH_G2; measured e 0.536 (LSB 0.526) at
- *   (32744, 128, 8281).  Cost: 146 / 418 (352 / 1766). */
+ * fx_fast: two sqrt, one Newton-refined 1/x: each cosine's G1 = x / d as
+ *   smith_g1, G2 = x_l x_v / (d_l d_v - y_l y_v) (y = d - x: 1 / (1/G1_l +
+ *   1/G1_v - 1)), in 64 bits, rounded as 1 - (den - x_l x_v) / den;
+ *   monotone in each input (the datapath paragraph).
+ *   Error: FACET_FX_FAST_ERR_SMITH_G2; measured e 0.527 (LSB 0.527) at
+ *   (131, 16606, 8269) (0.536 before the monotone form).  Cost: 146 / 418
+ *   (352 / 1766), measured before the monotone form
+ *   (M4 and M33 now: the Execution time table). */
 int32_t facet_smith_g2_fx(int32_t nol, int32_t nov, int32_t alpha);
 int32_t facet_smith_g2_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 void facet_smith_g2_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
@@ -653,9 +682,13 @@ void facet_smith_g2_fx_fast_batch(int32_t *out, const int32_t *nol, const int32_
 /* G1(N.L) G1(N.V); domains as smith_g2.  Q15, max 1.
  * fx: error FACET_FX_ERR_SMITH_G2_UNCORRELATED LSB.  Cost: 2 sqrt, 1
  * division, 3 fxe, ~8 mul.
- * fx_fast: two sqrt, one 1/x.
- *   Error: FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED; measured e 0.544 (LSB
- *   0.539) at (16617, 139, 8637).  Cost: 147 / 420 (378 / 1792). */
+ * fx_fast: two sqrt, one Newton-refined 1/x: G = x_l x_v / (d_l d_v)
+ *   (each G1 = x / d as smith_g1), rounded as 1 - (d_l d_v - x_l x_v) /
+ *   (d_l d_v); monotone in each input.
+ *   Error: FACET_FX_FAST_ERR_SMITH_G2_UNCORRELATED; measured e 0.532 (LSB
+ *   0.532) at (386, 380, 4236) (0.544 before the monotone form).  Cost:
+ *   147 / 420 (378 / 1792), measured before the monotone form
+ *   (M4 and M33 now: the Execution time table). */
 int32_t facet_smith_g2_uncorrelated_fx(int32_t nol, int32_t nov, int32_t alpha);
 int32_t facet_smith_g2_uncorrelated_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 void facet_smith_g2_uncorrelated_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
@@ -680,9 +713,13 @@ void facet_smith_vis_fx_fast_batch(uint32_t *out, const int32_t *nol, const int3
  * [2^-10, 1].  Q15, max 1.
  * fx: error FACET_FX_ERR_SMITH_G1_HAMMON LSB (both operands exact:
  * correctly rounded).  Cost: 1 division, 2 mul.
- * fx_fast: the denominator exact; one 1/x.
- *   Error: FACET_FX_FAST_ERR_SMITH_G1_HAMMON; measured e 0.514 (LSB 0.511)
- *   at (61, 4096).  Cost: 66 / 115 (68 / 514). */
+ * fx_fast: the denominator exact; one Newton-refined 1/x (2^-30: the
+ *   table's 2^-16 stepped backwards near G1 = 1), monotone in both inputs
+ *   (every pair).
+ *   Error: FACET_FX_FAST_ERR_SMITH_G1_HAMMON; measured e 0.500 (LSB 0.500)
+ *   at (61, 5878) (0.514 by the table 1/x).  Cost: 66 / 115 (68 / 514),
+ *   measured before the Newton step (two more high-word products; M4
+ *   and M33 now: the Execution time table). */
 int32_t facet_smith_g1_hammon_fx(int32_t nov, int32_t alpha);
 int32_t facet_smith_g1_hammon_fx_fast(int32_t nov, int32_t alpha);
 void facet_smith_g1_hammon_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,
@@ -706,6 +743,9 @@ void facet_smith_g1_hammon_fx_fast_batch(int32_t *out, const int32_t *nov, const
  * ends (3 d0 - d1) / 2 floored at 0) and the Hermite sum are formed from
  * differences >= 0: nothing is signed; Q27 .. Q32 stages, each bound
  * beside the code (src/fx/fx_fast_body.h).
+ * Not monotone everywhere (the only G term): 1 reversal in N.V and 172
+ * in alpha over tests/fx/test_fx_fast.c's monotonicity lines (3.9 M steps
+ * each), held to those counts; 0 in gamma.
  * Error: FACET_FX_FAST_ERR_SMITH_G1_GTR LSB (measured 0.5002 in the test,
  * 0.5021 over 3e6 tuples with gamma uniform in [0, 4] and 1 in 7 at an
  * integer order; each closed form alone <= 0.5016; e 0.502, LSB 0.500 at
@@ -719,9 +759,12 @@ void facet_smith_g1_gtr_fx_fast_batch(int32_t *out, const int32_t *nov, const in
 /* Hammon's G2 ~ 2 nl nv / m, m = (1 - alpha) 2 nl nv + alpha (nl + nv);
  * domains as smith_g2.  Q15, max 1.
  * fx: error FACET_FX_ERR_SMITH_G2_HAMMON LSB.  Cost: 1 division, ~6 mul.
- * fx_fast: m exact in 64 bits; one 1/x.
- *   Error: FACET_FX_FAST_ERR_SMITH_G2_HAMMON; measured e 0.514 (LSB 0.509)
- *   at (169, 13161, 10510).  Cost: 87 / 180 (128 / 648). */
+ * fx_fast: m exact in 64 bits; one Newton-refined 1/x; monotone in each
+ *   input.
+ *   Error: FACET_FX_FAST_ERR_SMITH_G2_HAMMON; measured e 0.500 (LSB 0.500)
+ *   at (170, 7132, 26909) (0.514 by the table 1/x).  Cost: 87 / 180 (128 /
+ *   648), measured before the Newton step (M4 and M33 now: the
+ *   Execution time table). */
 int32_t facet_smith_g2_hammon_fx(int32_t nol, int32_t nov, int32_t alpha);
 int32_t facet_smith_g2_hammon_fx_fast(int32_t nol, int32_t nov, int32_t alpha);
 void facet_smith_g2_hammon_fx_batch(int32_t *out, const int32_t *nol, const int32_t *nov,
@@ -791,8 +834,9 @@ void facet_g_kelemen_fx_fast_batch(int32_t *out, const int32_t *nol, const int32
  * [< 2^63]); sqrt(1 - n^2) by the exact root (fast: the table).
  * fx: error FACET_FX_ERR_SMITH_G1_BECKMANN LSB (measured 0).  Cost: 1 sqrt,
  * 1 division, ~8 fxe.
- * fx_fast: Error: FACET_FX_FAST_ERR_SMITH_G1_BECKMANN; measured e 0.523
- * (LSB 0.523) at (23, 2665). */
+ * fx_fast: both quotients by the Newton-refined 1/x; monotone in both
+ * inputs (every pair).  Error: FACET_FX_FAST_ERR_SMITH_G1_BECKMANN;
+ * measured e 0.502 (LSB 0.501) at (35, 4266) (0.523 by the table 1/x). */
 int32_t facet_smith_g1_beckmann_fx(int32_t nov, int32_t alpha);
 int32_t facet_smith_g1_beckmann_fx_fast(int32_t nov, int32_t alpha);
 void facet_smith_g1_beckmann_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha, size_t n);
@@ -804,8 +848,9 @@ void facet_smith_g1_beckmann_fx_fast_batch(int32_t *out, const int32_t *nov, con
  * [< 2^63].
  * fx: error FACET_FX_ERR_SMITH_G1_SCHLICK_BECKMANN LSB (measured 0).  Cost:
  * 1 division, 3 mul64.
- * fx_fast: Error: FACET_FX_FAST_ERR_SMITH_G1_SCHLICK_BECKMANN; measured e
- * 0.508 (LSB 0.507) at (150, 6527). */
+ * fx_fast: the quotient by the Newton-refined 1/x; monotone in both inputs
+ * (every pair).  Error: FACET_FX_FAST_ERR_SMITH_G1_SCHLICK_BECKMANN;
+ * measured e 0.500 (LSB 0.500) at (603, 32712) (0.508 by the table 1/x). */
 int32_t facet_smith_g1_schlick_beckmann_fx(int32_t nov, int32_t alpha);
 int32_t facet_smith_g1_schlick_beckmann_fx_fast(int32_t nov, int32_t alpha);
 void facet_smith_g1_schlick_beckmann_fx_batch(int32_t *out, const int32_t *nov, const int32_t *alpha,

@@ -175,6 +175,12 @@ FXQ_INLINE fxv_u32 fxq_top(fxv_u64 v, fxv_u32 *e)
     return fxv_or(fxv_shlv(hi, kk), fxv_shrv(fxv_lo(v), fxv_sub32(fxv_k32(32), kk)));
 }
 
+/* the top word of v at fxq_top's shift kk of another value (kk in [1, 31]) */
+FXQ_INLINE fxv_u32 fxq_top_at(fxv_u64 v, fxv_u32 kk)
+{
+    return fxv_or(fxv_shlv(fxv_hi(v), kk), fxv_shrv(fxv_lo(v), fxv_sub32(fxv_k32(32), kk)));
+}
+
 /* round(n / d 2^s) (ties up), saturated at max, with s given biased as the
  * lane b = 95 - s (so a per-lane s works too); n < 2^32 (0 gives 0), d >= 1:
  *   kn, kd normalise n and d; r = rcp20(d 2^kd) ~ 2^51 / (d 2^kd);
@@ -197,6 +203,35 @@ FXQ_INLINE fxv_u32 fxq_divb(fxv_u32 n, fxv_u32 d, fxv_u32 b, uint32_t max)
     return fxv_min(v, fxv_k32(max));
 }
 #define fxq_div(n, d, s, max) fxq_divb(n, d, fxv_k32(95u - (s)), max)
+
+/* ~ 2^63 / m for m in [2^31, 2^32): rcp20 (2^-16) and one Newton step,
+ * r1 = 2 hi(r, ~t), r = rcp20(m) 2^12, t = hi(m, r) ~ 2^31 (1 + e) [~t =
+ * 2^32 - 1 - t = 2^31 (1 - e) - 1 + (t's floor), in (2^31 - 2^17, 2^31 +
+ * 2^13); hi(r, ~t) < 2^31]: relative error <= 2^-30 (e^2 <= 2^-32 and the
+ * two floors).  The G terms divide by it (fxq_divbn): with the table's
+ * 2^-16, a ratio near 1 whose numerator and denominator move together
+ * (G ~ 1) steps backwards where the interpolation's chord slope is off
+ * (issue 25 item 4); at 2^-30 its output is monotone. */
+FXQ_INLINE fxv_u32 fxq_rcpn(fxv_u32 m)
+{
+    fxv_u32 r = fxv_shl(fxq_rcp20(m), 12);
+    return fxv_shl(fxq_mulhi(r, fxv_not(fxq_mulhi(m, r))), 1);
+}
+
+/* fxq_divb with the refined reciprocal: the quotient q to 2^-30, then the
+ * same normalising shift, rounding and saturation */
+FXQ_INLINE fxv_u32 fxq_divbn(fxv_u32 n, fxv_u32 d, fxv_u32 b, uint32_t max)
+{
+    fxv_u32 kn = fxv_min(fxv_clz(n), fxv_k32(31)), kd = fxv_clz(d);
+    fxv_u32 q = fxq_mulhi(fxv_shlv(n, kn), fxq_rcpn(fxv_shlv(d, kd)));
+    fxv_u32 kq = fxv_sub32(fxv_k32(1), fxv_shr(q, 31)); /* q 2^kq in [2^31, 2^32) */
+    fxv_u32 srb = fxv_add32(fxv_sub32(fxv_add32(b, kn), kd), kq); /* sr + 64 */
+    q = fxv_shlv(q, kq);
+    fxv_u32 t = fxv_shrv(q, fxv_min(fxv_sub32(fxv_max(srb, fxv_k32(65)), fxv_k32(65)), fxv_k32(31)));
+    fxv_u32 v = fxv_sel(fxv_lt(srb, fxv_k32(65)), t, fxv_shr(fxv_add32(t, fxv_k32(1)), 1));
+    v = fxv_sel(fxv_lt(srb, fxv_k32(64)), fxv_k32(max), fxv_sel(fxv_lt(srb, fxv_k32(97)), v, fxv_k32(0)));
+    return fxv_min(v, fxv_k32(max));
+}
 
 /* ---- Fresnel ------------------------------------------------------------------
  * F = f0 + (1 - f0) y^5, Y = 2^15 - C (Q15), hi = fxq_mulhi:
@@ -546,23 +581,58 @@ FXQ_INLINE fxv_u32 fxq_beckmann_d(fxv_i32 noh, fxv_i32 alpha)
  * top >> (E & 1), the table: r = sq 2^-(4 + H), H = E >> 1 in [15, 26],
  * sq in [2^19, 2^20); returned as Q30: sq 2^(26 - H) [r <= 1: <= 2^30;
  * r >= alpha >= 2^-10: >= 2^20]. */
-FXQ_INLINE fxv_u32 fxq_smith_r30(fxv_u32 x, fxv_u32 a2)
+FXQ_INLINE fxv_u32 fxq_s2(fxv_u32 x) { return fxv_mul32(fxv_sub32(fxv_k32(FACET_FX_ONE), x), fxv_add32(fxv_k32(FACET_FX_ONE), x)); }
+/* r from y60 = A^2 (2^15 - X)(2^15 + X) */
+FXQ_INLINE fxv_u32 fxq_smith_r30y(fxv_u32 x, fxv_u64 y60)
 {
     fxv_u32 e, top, ee, hh;
-    top = fxq_top(fxv_add64(fxv_mulw(a2, fxv_mul32(fxv_sub32(fxv_k32(FACET_FX_ONE), x), fxv_add32(fxv_k32(FACET_FX_ONE), x))),
-                            fxv_mulw(fxv_mul32(x, x), fxv_k32(1u << 30))), &e);
+    top = fxq_top(fxv_add64(y60, fxv_mulw(fxv_mul32(x, x), fxv_k32(1u << 30))), &e);
     ee = fxv_add32(e, fxv_k32(28));
     hh = fxv_shr(ee, 1);
     return fxv_shlv(fxq_sqrt20(fxv_shrv(top, fxv_and(ee, fxv_k32(1)))), fxv_sub32(fxv_k32(26), hh));
 }
+FXQ_INLINE fxv_u32 fxq_smith_r30(fxv_u32 x, fxv_u32 a2) { return fxq_smith_r30y(x, fxv_mulw(a2, fxq_s2(x))); }
 
-/* G1 = 2 n / (n + r(n)): den30 = N 2^15 + r30 [<= 2^31]; G1 2^15 = 2N 2^30 /
- * den30, one fxq_div.  G1(0) = 0, G1(1) = 1. */
+/* The monotone form of the GGX Smith terms (issue 25 item 4).  2 n / (n +
+ * r) steps backwards where n >> alpha: r's table root and the 1/x table
+ * have chord slopes off by up to 2^-7, more than the ratio's own slope.
+ * With X = 2 n (n + r) and Y = r^2 - n^2 = a^2 (1 - n^2) (exact):
+ *   G1 = X / (X + Y)      (n + r)^2 = 2 n (n + r) + a^2 (1 - n^2)
+ * X60 = hi-exact N 2^16 (N 2^15 + r30) Q60 [<= 2^62], Y60 = A^2 (2^15 -
+ * N)(2^15 + N) Q60 [<= 2^60], D60 = X60 + Y60 [< 2^63, >= a^2 2^60 >=
+ * 2^40]; *d = top(D60) in [2^31, 2^32), *x = X60 at the same shift [<= *d].
+ * X / (X + Y) increases with X and decreases with Y, X increases with n
+ * (r's table is non-decreasing) and Y decreases: monotone in n whatever r's
+ * error; in alpha Y's relative step 2 / alpha outruns X's (<= 1 / alpha).
+ * r's error enters G1 times (r - n) / (n + r)^2 <= 1: near G1 = 1 it
+ * vanishes. */
+FXQ_INLINE void fxq_smith_xd(fxv_u32 n, fxv_u32 a2, fxv_u32 *x, fxv_u32 *d)
+{
+    fxv_u64 y60 = fxv_mulw(a2, fxq_s2(n));
+    fxv_u32 den = fxv_add32(fxv_shl(n, 15), fxq_smith_r30y(n, y60));
+    fxv_u64 x60 = fxv_mulw(fxv_shl(n, 16), den);
+    fxv_u32 e;
+    *d = fxq_top(fxv_add64(x60, y60), &e);
+    *x = fxq_top_at(x60, e);
+}
+
+/* round(2^15 (1 - q / d)) for q <= d, d >= 2^23: the complement Q31 = round(q
+ * / d 2^31) by fxq_divbn [<= 2^31], then round((2^31 - Q31) / 2^16).  Near
+ * G = 1, where the G terms' steps are smallest, Q is small and its error
+ * (2^-30 relative) with it: the rounding of Q31 (2^-32) is what is left. */
+FXQ_INLINE fxv_u32 fxq_one_minus15(fxv_u32 q, fxv_u32 d)
+{
+    fxv_u32 c = fxq_divbn(q, d, fxv_k32(64), 1u << 31);
+    return fxv_shr(fxv_add32(fxv_sub32(fxv_k32(1u << 31), c), fxv_k32(1u << 15)), 16);
+}
+
+/* G1 = 2 n / (n + r(n)) = X / (X + Y) (fxq_smith_xd): G1 2^15 = x 2^15 /
+ * d, one fxq_divbn [x <= d: at most 2^15].  G1(0) = 0, G1(1) = 1. */
 FXQ_INLINE fxv_u32 fxq_smith_g1(fxv_i32 nov, fxv_i32 alpha)
 {
-    fxv_u32 n = fxv_unit(nov), a = fxv_alpha(alpha);
-    fxv_u32 den = fxv_add32(fxv_shl(n, 15), fxq_smith_r30(n, fxv_mul32(a, a)));
-    return fxq_div(fxv_shl(n, 1), den, 30, FACET_FX_ONE);
+    fxv_u32 n = fxv_unit(nov), a = fxv_alpha(alpha), x, d;
+    fxq_smith_xd(n, fxv_mul32(a, a), &x, &d);
+    return fxq_one_minus15(fxv_sub32(d, x), d);
 }
 
 /* nv r(nl) + nl r(nv) in Q45, in 64 bits [< 2^46, >= 2^28], top 32 bits:
@@ -572,12 +642,20 @@ FXQ_INLINE fxv_u32 fxq_g2_den(fxv_u32 nl, fxv_u32 nv, fxv_u32 a2, fxv_u32 *e)
     return fxq_top(fxv_add64(fxv_mulw(nv, fxq_smith_r30(nl, a2)), fxv_mulw(nl, fxq_smith_r30(nv, a2))), e);
 }
 
-/* G2 = 2 nl nv / den: G2 2^15 = 2 NL NV 2^30 / den45 = NL NV / dt 2^(e - 1) */
+/* G2 = 2 nl nv / (nv r(nl) + nl r(nv)) = 1 / (1 / g_l + 1 / g_v - 1), g =
+ * x / d = G1 of each cosine (fxq_smith_xd), y = d - x: G2 = x_l x_v / (d_l
+ * d_v - y_l y_v) [64-bit products < 2^64; the difference >= x_l d_v >=
+ * 2^55]; their high words [the denominator's >= 2^23; truncations <= 2^-23
+ * relative, G2 < 2^-7 there], one fxq_divbn: G2 2^15.  Monotone as G1:
+ * increasing in each g, each g monotone. */
 FXQ_INLINE fxv_u32 fxq_smith_g2(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
 {
-    fxv_u32 nl = fxv_cosine(nol), nv = fxv_cosine(nov), a = fxv_alpha(alpha), e;
-    fxv_u32 dt = fxq_g2_den(nl, nv, fxv_mul32(a, a), &e);
-    return fxq_divb(fxv_mul32(nl, nv), dt, fxv_sub32(fxv_k32(96), e), FACET_FX_ONE);
+    fxv_u32 nl = fxv_cosine(nol), nv = fxv_cosine(nov), a = fxv_alpha(alpha), a2 = fxv_mul32(a, a);
+    fxv_u32 xl, dl, xv, dv;
+    fxq_smith_xd(nl, a2, &xl, &dl);
+    fxq_smith_xd(nv, a2, &xv, &dv);
+    fxv_u64 den = fxv_sub64(fxv_mulw(dl, dv), fxv_mulw(fxv_sub32(dl, xl), fxv_sub32(dv, xv)));
+    return fxq_one_minus15(fxv_hi(fxv_sub64(den, fxv_mulw(xl, xv))), fxv_hi(den));
 }
 
 /* Vis = 0.5 / den: Vis 2^16 = 2^60 / den45 = 2^31 / dt 2^(e - 3) [< 2^30] */
@@ -588,16 +666,17 @@ FXQ_INLINE fxv_u32 fxq_smith_vis(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
     return fxq_divb(fxv_k32(1u << 31), dt, fxv_sub32(fxv_k32(98), e), FACET_FX_MAX_VIS);
 }
 
-/* G1(nl) G1(nv) = 4 nl nv / ((nl + r(nl)) (nv + r(nv))): the two sums Q30
- * [<= 2^31], their product Q60 [<= 2^62] ~ pt 2^(32 - e);
- * G 2^15 = NL NV 2^47 / prod = NL NV / pt 2^(15 + e) */
+/* G1(nl) G1(nv) = (x_l x_v) / (d_l d_v) (fxq_smith_xd) [d_l d_v >= 2^62]:
+ * the products' high words [the denominator's >= 2^30], one fxq_divbn: G
+ * 2^15.  A product of two monotone G1. */
 FXQ_INLINE fxv_u32 fxq_smith_g2_uncorrelated(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
 {
-    fxv_u32 nl = fxv_cosine(nol), nv = fxv_cosine(nov), a = fxv_alpha(alpha), a2 = fxv_mul32(a, a), e;
-    fxv_u32 dl = fxv_add32(fxv_shl(nl, 15), fxq_smith_r30(nl, a2));
-    fxv_u32 dv = fxv_add32(fxv_shl(nv, 15), fxq_smith_r30(nv, a2));
-    fxv_u32 pt = fxq_top(fxv_mulw(dl, dv), &e);
-    return fxq_divb(fxv_mul32(nl, nv), pt, fxv_sub32(fxv_k32(80), e), FACET_FX_ONE);
+    fxv_u32 nl = fxv_cosine(nol), nv = fxv_cosine(nov), a = fxv_alpha(alpha), a2 = fxv_mul32(a, a);
+    fxv_u32 xl, dl, xv, dv;
+    fxq_smith_xd(nl, a2, &xl, &dl);
+    fxq_smith_xd(nv, a2, &xv, &dv);
+    fxv_u64 den = fxv_mulw(dl, dv);
+    return fxq_one_minus15(fxv_hi(fxv_sub64(den, fxv_mulw(xl, xv))), fxv_hi(den));
 }
 
 /* ---- Smith G1 for GTR (Dimov) ------------------------------------------------
@@ -755,7 +834,7 @@ FXQ_INLINE fxv_u32 fxq_smith_g1_hammon(fxv_i32 nov, fxv_i32 alpha)
 {
     fxv_u32 n = fxv_unit(nov), a = fxv_alpha(alpha);
     fxv_u32 den = fxv_add32(fxv_mul32(n, fxv_sub32(fxv_k32(65536), a)), fxv_shl(a, 15));
-    return fxq_div(fxv_shl(n, 1), den, 30, FACET_FX_ONE);
+    return fxq_divbn(fxv_shl(n, 1), den, fxv_k32(65), FACET_FX_ONE);
 }
 
 /* m = (1 - a) 2 nl nv + a (nl + nv): m45 = 2 NL NV (2^15 - A) + A S 2^15
@@ -772,7 +851,7 @@ FXQ_INLINE fxv_u32 fxq_smith_g2_hammon(fxv_i32 nol, fxv_i32 nov, fxv_i32 alpha)
 {
     fxv_u32 nl = fxv_cosine(nol), nv = fxv_cosine(nov), a = fxv_alpha(alpha), p = fxv_mul32(nl, nv), e;
     fxv_u32 mt = fxq_hammon_m(nl, nv, a, p, &e);
-    return fxq_divb(p, mt, fxv_sub32(fxv_k32(96), e), FACET_FX_ONE);
+    return fxq_divbn(p, mt, fxv_sub32(fxv_k32(96), e), FACET_FX_ONE);
 }
 
 /* Vis 2^16 = 0.5 2^16 2^45 / m45 = 2^31 / mt 2^(e - 3) [< 2^30] */
@@ -830,13 +909,13 @@ FXQ_INLINE fxv_u32 fxq_smith_g1_beckmann(fxv_i32 nov, fxv_i32 alpha)
     fxv_u32 branch = fxv_lt(fxv_mul32(fxv_shr(fxv_mul32(n, n), 6), fxv_k32(25)), p2);
     fxv_u32 rh, rs = fxq_sqrt32(fxv_max(fxv_shl(w, 2), fxv_k32(1u << 16)), &rh);
     fxv_u32 pm = fxq_mulhi(fxv_shl(a, 16), fxv_shl(rs, 12));
-    fxv_u32 c = fxq_divb(n, pm, fxv_sub32(fxv_k32(50), rh), 858993459u); /* 1.6 2^29 */
+    fxv_u32 c = fxq_divbn(n, pm, fxv_sub32(fxv_k32(50), rh), 858993459u); /* 1.6 2^29 */
     fxv_u32 cc = fxq_mulhi(fxv_shl(c, 2), fxv_shl(c, 1));
     fxv_u32 en, ed, nt, dt, g;
     nt = fxq_top(fxv_add64(fxv_mulw(c, fxv_k32(FXB_WALTER_A)), fxv_mulw(cc, fxv_k32(FXB_WALTER_B))), &en);
     dt = fxq_top(fxv_add64(fxv_add64(fxv_mulw(fxv_k32(1u << 29), fxv_k32(1u << 30)), fxv_mulw(c, fxv_k32(FXB_WALTER_C))),
                            fxv_mulw(cc, fxv_k32(FXB_WALTER_D))), &ed);
-    g = fxq_divb(nt, dt, fxv_sub32(fxv_add32(fxv_k32(80), en), ed), FACET_FX_ONE);
+    g = fxq_divbn(nt, dt, fxv_sub32(fxv_add32(fxv_k32(80), en), ed), FACET_FX_ONE);
     return fxv_sel(branch, g, fxv_k32(FACET_FX_ONE));
 }
 
@@ -849,7 +928,7 @@ FXQ_INLINE fxv_u32 fxq_smith_g1_schlick_beckmann(fxv_i32 nov, fxv_i32 alpha)
     fxv_u32 n = fxv_unit(nov), e;
     fxv_u32 k = fxq_mulhi(fxv_shl(fxv_alpha(alpha), 16), fxv_k32(FXB_SQRT_2_PI_32));
     fxv_u32 dt = fxq_top(fxv_add64(fxv_mulw(n, fxv_sub32(fxv_k32(1u << 31), k)), fxv_mulw(k, fxv_k32(1u << 15))), &e);
-    return fxq_divb(n, dt, fxv_sub32(fxv_k32(81), e), FACET_FX_ONE);
+    return fxq_divbn(n, dt, fxv_sub32(fxv_k32(81), e), FACET_FX_ONE);
 }
 
 /* The joint approximation is Hammon's visibility: the same code and bits. */
@@ -1247,10 +1326,6 @@ FXQ_INLINE fxv_u32 fxq_fresnel_schlick_sg(fxv_i32 f0_in, fxv_i32 cos_in)
  *         fxq_div: |rp| Q31
  *   F Q31 = hi(2|rs|, 2|rs|) / 4 + hi(2|rp|, 2|rp|) / 4 [<= 2^31]
  *   raw = round(F / 2^16). */
-FXQ_INLINE fxv_u32 fxq_top_at(fxv_u64 v, fxv_u32 kk)
-{
-    return fxv_or(fxv_shlv(fxv_hi(v), kk), fxv_shrv(fxv_lo(v), fxv_sub32(fxv_k32(32), kk)));
-}
 
 FXQ_INLINE fxv_u32 fxq_sq31(fxv_u32 q) { return fxq_mulhi(fxv_shl(q, 1), fxv_shl(q, 1)); }
 

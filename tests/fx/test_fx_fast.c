@@ -194,6 +194,128 @@ static void clamping(const facet_fx_kernel *fk)
     CHECK(over == 0, "%s: %ld outputs above the format maximum", fk->name, over);
 }
 
+/* ---- monotonicity: every value of one input along lines of the others ----
+ * Where the function is monotone in an input (the oracle: the survey in the
+ * list's comment), the count of reversals (a step of the input by one raw
+ * unit that moves the output against the direction) along lines through
+ * every value of that input, the other inputs on a set of lines: for a
+ * two-input kernel 128 values of the other (alpha: fx_alpha_set's ends and
+ * log-spaced set; else every 256th raw value and 1 .. 89), for more inputs
+ * 120 lines of fx_random_inputs (the first four at the ends of every other
+ * input).  Held to exactly the figure the list states (0: monotone). */
+static long mono_lines(const facet_fx_kernel *fk, int which, int dir, long *checks)
+{
+    fx_rng r = { 0x3070fa57u };
+    int32_t in[FACET_FX_MAX_INPUTS], other[160];
+    int i, j, lines;
+    long bad = 0;
+    if (fk->n_inputs == 2) {
+        int o = 1 - which;
+        static const int32_t small[] = { 1, 2, 3, 5, 8, 13, 21, 34, 55, 89 };
+        if (!strcmp(fk->inputs[o], "alpha")) {
+            lines = fx_alpha_set(other, 124);
+        } else {
+            for (lines = 0; lines <= 128; lines++)
+                other[lines] = lines * 256;
+            for (j = 0; j < (int)(sizeof small / sizeof small[0]); j++)
+                other[lines++] = small[j];
+        }
+    } else {
+        lines = 120;
+    }
+    if (quick)
+        lines = lines < 8 ? lines : 8;
+    for (i = 0; i < lines; i++) {
+        uint64_t prev = 0;
+        int32_t x;
+        if (fk->n_inputs == 2) {
+            in[1 - which] = other[i];
+        } else {
+            fx_random_inputs(&r, FX_GEOM_NEAR_NORMAL, fk, in);
+            if (i < 4)
+                for (j = 0; j < fk->n_inputs; j++)
+                    in[j] = (i & 1) ? fk->hi[j] : fk->lo[j];
+        }
+        for (j = 0; j < fk->n_inputs; j++) /* the line's other inputs in the domain */
+            in[j] = in[j] < fk->lo[j] ? fk->lo[j] : in[j] > fk->hi[j] ? fk->hi[j] : in[j];
+        for (x = fk->lo[which]; x <= fk->hi[which]; x++) {
+            uint64_t y;
+            in[which] = x;
+            y = cur(in);
+            bad += x > fk->lo[which] && (dir > 0 ? y < prev : y > prev);
+            prev = y;
+            (*checks)++;
+        }
+    }
+    return bad;
+}
+
+static void monotonicity(void)
+{
+    /* kernel, input, direction (+1 non-decreasing, -1 non-increasing), the
+     * stated reversals on these lines (facet/fx.h); every pair where the
+     * oracle is monotone over fx_random_inputs lines */
+    static const struct { const char *k, *in; int dir; long stated; } mono[] = {
+        { "noh_from_dots", "nol", 1, 0 }, { "noh_from_dots", "nov", 1, 0 }, { "noh_from_dots", "lov", -1, 0 },
+        { "loh_from_dots", "lov", 1, 0 },
+        { "fresnel_schlick", "f0", 1, 0 }, { "fresnel_schlick", "cos", -1, 0 },
+        { "fresnel_schlick_f90", "f0", 1, 0 }, { "fresnel_schlick_f90", "f90", 1, 0 },
+        { "fresnel_schlick_sg", "f0", 1, 0 }, { "fresnel_schlick_sg", "cos", -1, 0 },
+        { "ggx_d", "noh", 1, 0 }, { "blinn_phong_d", "noh", 1, 0 }, { "gtr_d", "noh", 1, 0 },
+        { "ggx_aniso_d", "noh", -1, 0 },
+        { "smith_g1", "nov", 1, 0 }, { "smith_g1", "alpha", -1, 0 },
+        { "smith_g2", "nol", 1, 0 }, { "smith_g2", "nov", 1, 0 }, { "smith_g2", "alpha", -1, 0 },
+        { "smith_g2_uncorrelated", "nol", 1, 0 }, { "smith_g2_uncorrelated", "nov", 1, 0 },
+        { "smith_g2_uncorrelated", "alpha", -1, 0 },
+        { "smith_vis", "nol", -1, 0 }, { "smith_vis", "nov", -1, 0 }, { "smith_vis", "alpha", -1, 0 },
+        { "smith_g1_hammon", "nov", 1, 0 }, { "smith_g1_hammon", "alpha", -1, 0 },
+        { "smith_g1_gtr", "nov", 1, 1 }, { "smith_g1_gtr", "alpha", -1, 172 }, { "smith_g1_gtr", "gamma", 1, 0 },
+        { "smith_g2_hammon", "nol", 1, 0 }, { "smith_g2_hammon", "nov", 1, 0 }, { "smith_g2_hammon", "alpha", -1, 0 },
+        { "smith_vis_hammon", "nol", -1, 0 }, { "smith_vis_hammon", "nov", -1, 0 },
+        { "smith_vis_hammon", "alpha", -1, 0 },
+        { "g_implicit", "nol", 1, 0 }, { "g_implicit", "nov", 1, 0 }, { "g_neumann", "nol", 1, 0 },
+        { "g_neumann", "nov", 1, 0 }, { "g_cook_torrance", "nol", 1, 0 }, { "g_cook_torrance", "nov", 1, 0 },
+        { "g_cook_torrance", "noh", 1, 0 }, { "g_cook_torrance", "voh", -1, 0 },
+        { "g_kelemen", "nol", 1, 0 }, { "g_kelemen", "nov", 1, 0 }, { "g_kelemen", "voh", -1, 0 },
+        { "smith_g1_beckmann", "nov", 1, 0 }, { "smith_g1_beckmann", "alpha", -1, 0 },
+        { "smith_g1_schlick_beckmann", "nov", 1, 0 }, { "smith_g1_schlick_beckmann", "alpha", -1, 0 },
+        { "smith_vis_joint_approx", "nol", -1, 0 }, { "smith_vis_joint_approx", "nov", -1, 0 },
+        { "smith_vis_joint_approx", "alpha", -1, 0 },
+        { "smith_vis_fit", "nol", -1, 0 }, { "smith_vis_fit", "nov", -1, 0 },
+        { "diffuse_hammon", "lov", 1, 0 }, { "diffuse_hammon", "albedo", 1, 0 },
+        { "diffuse_burley", "loh", 1, 0 }, { "diffuse_burley", "alpha", 1, 0 }, { "diffuse_burley", "albedo", 1, 0 },
+        { "diffuse_oren_nayar", "lov", 1, 0 }, { "diffuse_oren_nayar", "albedo", 1, 0 },
+        { "diffuse_hammon_hybrid", "lov", 1, 0 }, { "diffuse_hammon_hybrid", "albedo", 1, 0 },
+        { "diffuse_hammon_cheap", "lov", 1, 0 }, { "diffuse_hammon_cheap", "albedo", 1, 0 },
+        { "brdf_hammon", "f0", 1, 0 }, { "brdf_hammon", "albedo", 1, 0 },
+    };
+    size_t i;
+    long steps = 0;
+    for (i = 0; i < sizeof mono / sizeof mono[0]; i++) {
+        const facet_fx_kernel *fk = facet_fx_kernel_find(mono[i].k);
+        int which = -1, j;
+        long bad, checks = 0;
+        for (j = 0; fk && j < fk->n_inputs; j++)
+            if (!strcmp(fk->inputs[j], mono[i].in))
+                which = j;
+        CHECK(fk && fk->fx_fast && which >= 0, "monotonicity: %s has no fast tier or no input %s", mono[i].k,
+              mono[i].in);
+        if (!fk || !fk->fx_fast || which < 0)
+            continue;
+        cur = fk->fx_fast;
+        bad = mono_lines(fk, which, mono[i].dir, &checks);
+        if (bad || mono[i].stated)
+            printf("monotonicity %-22s %-6s %+d: %ld reversals in %ld steps\n", mono[i].k, mono[i].in, mono[i].dir,
+                   bad, checks);
+        /* the quick sweep is a subset: at most the stated count */
+        CHECK(quick ? bad <= mono[i].stated : bad == mono[i].stated,
+              "%s: %ld reversals in %s (direction %+d) over %ld steps, stated %ld", mono[i].k, bad, mono[i].in,
+              mono[i].dir, checks, mono[i].stated);
+        steps += checks;
+    }
+    printf("monotonicity: %d kernel-input pairs, %ld steps\n", (int)(sizeof mono / sizeof mono[0]), steps);
+}
+
 static void key_points(void)
 {
     long bad = 0;
@@ -236,6 +358,7 @@ int main(void)
         accuracy(fk, k, fk->err_fast);
         clamping(fk);
     }
+    monotonicity();
     key_points();
     return th_done();
 }

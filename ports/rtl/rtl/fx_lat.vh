@@ -10,12 +10,15 @@ localparam L_TAB20  = 5;                      // fx_tab20: read, step, product, 
 localparam L_SQRT32 = 1 + L_TAB20;            // fx_sqrt32: even normalising shift, then fx_tab20
 localparam L_TOP    = 1;                      // fx_top: the top 32 bits of a 64-bit value
 localparam L_DIVB   = 1 + L_TAB20 + L_MULHI + 4; // fx_divb: normalise, rcp, product, 4 rounding stages
+localparam L_DIVBN  = L_DIVB + 2 * L_MULHI;  // fx_divb NEWTON: the Newton step's two products before q
 localparam L_P5     = 5;                      // fx_p5: x (1 + y + ... + y^4) by table
 localparam L_Y5     = L_MUL + 2 * L_MULHI;    // fx_y5: (1 - x)^5 by three products
 localparam L_DOTS   = 3;                      // fx_dots: the dot triple s, u, w, c
 localparam L_HAMMON_M = 1 + L_MULW + 1 + L_TOP; // fx_hammon_m: Hammon's Smith denominator, top word
 localparam L_R30    = L_MUL + L_MULW + 3 + L_TAB20 + 1; // fx_smith_r30: Smith's root r(x)
 localparam L_SDEN   = L_R30 + L_MULW + 1 + L_TOP; // fx_smith_den: nv r(nl) + nl r(nv), top word
+localparam L_XD     = L_R30 + 1 + L_MULW + 1 + L_TOP; // fx_smith_xd: the tops of X = 2n(n + r), X + Y
+localparam L_OM15   = L_DIVBN + 1;            // fx_one_minus15: round(2^15 (1 - q / d))
 // Hammon's diffuse pieces: inputs at two or three times (see each unit)
 localparam L_ROUGH  = L_SQRT32 + 2 + 3 * L_MULHI; // fx_rough: from a, s, c to the rough term
 localparam L_SHAPE  = L_ROUGH + 1;            // fx_shape: from nl, nv, a, s, c to the shape

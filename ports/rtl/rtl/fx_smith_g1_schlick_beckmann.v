@@ -3,14 +3,15 @@
 // the body's smith_g1_schlick_beckmann:
 //   k Q31 = hi(A 2^16, sqrt(2/pi) 2^32)
 //   den46 = N (2^31 - k) + k 2^15 exact in 64 bits; its top word dt (fx_top)
-//   G1 2^15 = N / dt 2^(14 + e): one fx_divb, b = 81 - e, saturated at 1
+//   G1 2^15 = N / dt 2^(14 + e): one fx_divb NEWTON (the refined reciprocal:
+//   monotone), b = 81 - e, saturated at 1
 module fx_smith_g1_schlick_beckmann (input clk, input rst, input in_valid, input [31:0] nov,
                                      input [31:0] alpha, output out_valid, output [31:0] y);
     `include "fx_ops.vh"
     `include "fx_lat.vh"
     `include "fx_consts.vh"
     localparam T_K = 1 + L_MULHI, T_OMK = T_K + 1, T_MW = T_OMK + L_MULW, T_TOP = T_MW + 1 + L_TOP;
-    localparam LATENCY = T_TOP + L_DIVB;
+    localparam LATENCY = T_TOP + L_DIVBN;
     reg [15:0] n, a;
     reg [31:0] omk, k4;
     reg [63:0] den;
@@ -31,6 +32,6 @@ module fx_smith_g1_schlick_beckmann (input clk, input rst, input in_valid, input
     fx_delay #(32, L_MULW) dk (clk, k4, kd);
     fx_top tp (clk, den, dt, e);                                      // at T_TOP
     fx_delay #(16, T_TOP - T_OMK) dn2 (clk, n4, n8);
-    fx_divb #(32768) dv (clk, {16'd0, n8}, dt, 32'd81 - e, y);
+    fx_divb #(32768, 1) dv (clk, {16'd0, n8}, dt, 32'd81 - e, y);
     fx_valid #(LATENCY) v (clk, rst, in_valid, out_valid);
 endmodule

@@ -206,11 +206,15 @@ endmodule
 //   Q1: kq = 1 - q[31], q 2^kq in [2^31, 2^32); its sr and flags selected
 //   Q2: t = q >> sr;  Q3: the rounding (t + 1) / 2 for sr >= 0 (srb > 64),
 //     saturation for sr < 0, 0 past 32;  Q4: min(v, MAX)
-module fx_divb #(parameter [31:0] MAX = 32'hFFFFFFFF) (input clk, input [31:0] n, input [31:0] d,
-                                                       input [31:0] b, output reg [31:0] y);
+// NEWTON = 1 is the body's fxq_divbn (the G terms): the reciprocal refined
+// by one Newton step (fxq_rcpn), r = rcp20 2^12, t = hi(dn, r), h = hi(r,
+// ~t), q = hi(nn, 2h) (= (nn h) >> 31: SH 1): two more products
+// (L_DIVBN = L_DIVB + 2 L_MULHI).
+module fx_divb #(parameter [31:0] MAX = 32'hFFFFFFFF, parameter NEWTON = 0) (input clk, input [31:0] n,
+                                                       input [31:0] d, input [31:0] b, output reg [31:0] y);
     `include "fx_ops.vh"
     `include "fx_lat.vh"
-    localparam TQ = 1 + L_TAB20 + L_MULHI;            // q
+    localparam TQ = 1 + L_TAB20 + (NEWTON ? 3 : 1) * L_MULHI; // q
     reg [31:0] nn1, dn1, b1, sb2, srb0, srb1, q1, t2, v3;
     reg [5:0] kn1, kd1;
     reg [4:0] sr0, sr1, sr;
@@ -245,8 +249,21 @@ module fx_divb #(parameter [31:0] MAX = 32'hFFFFFFFF) (input clk, input [31:0] n
         y <= f_min(v3, MAX);
     end
     fx_tab20 #(0) rcp (clk, dn1, rs);
-    fx_delay #(32, L_TAB20) dn (clk, nn1, nnd);
-    fx_mulhi #(32, 20, 12) mq (clk, nnd, rs, q);      // at TQ
+    fx_delay #(32, TQ - L_MULHI - 1) dn (clk, nn1, nnd);
+    generate
+        if (NEWTON) begin : g_newton
+            wire [31:0] dnd, t, rsd, h;
+            fx_delay #(32, L_TAB20) dd (clk, dn1, dnd);
+            fx_mulhi #(32, 20, 12) mt (clk, dnd, rs, t);          // t = hi(d, r) ~ 2^31
+            fx_delay #(20, L_MULHI) dr (clk, rs[19:0], rsd[19:0]);
+            assign rsd[31:20] = 12'd0;
+            fx_mulhi #(20, 32, 12) mh (clk, rsd, ~t, h);         // h = hi(r, ~t) < 2^31
+            // h < 2^31 for every d >= 1 (32 bits: an empty pipeline feeds d = 0)
+            fx_mulhi #(32, 32, 1) mq (clk, nnd, h, q);           // at TQ
+        end else begin : g_table
+            fx_mulhi #(32, 20, 12) mq (clk, nnd, rs, q);         // at TQ
+        end
+    endgenerate
     fx_delay #(5, TQ - 4) ds0 (clk, sr0, sr0d);
     fx_delay #(5, TQ - 4) ds1 (clk, sr1, sr1d);
     fx_delay #(3, TQ - 4) df0 (clk, fl0, fl0d);
