@@ -42,7 +42,7 @@ BENCH_HARNESS_OBJ := $(BENCH_HARNESS:%=$(BUILD)/bench/harness/%.o)
 BENCH_RASTER_OBJ  := $(patsubst bench/raster/%.c,$(BUILD)/bench/raster/%.o,$(wildcard bench/raster/raster*.c))
 BENCH_REPORT_OBJ  := $(patsubst %,$(BUILD)/bench/report/%.o,report data doc doc_md doc_html svg kernel_facts \
                      sec_choose sec_clock sec_pareto sec_image sec_furnace sec_model sec_pictures sec_samplers \
-                     sec_arm sec_rtl sec_raster sec_targets sec_speed sec_kernels symbols pictures png image_error geom)
+                     sec_arm sec_wcet sec_rtl sec_raster sec_targets sec_speed sec_kernels symbols pictures png image_error geom)
 BENCH_OBJ := $(BUILD)/bench/facet_bench.o $(BENCH_HARNESS_OBJ) $(BENCH_REPORT_OBJ) $(BENCH_RASTER_OBJ)
 
 TEST_BIN    += $(BUILD)/tests/test_bench

@@ -46,6 +46,7 @@ static const struct {
     { "pictures", section_pictures },
     { "importance sampling", section_samplers },
     { "Cortex-M", section_arm },
+    { "execution time", section_wcet },
     { "hardware", section_rtl },
     { "rasterizer", section_raster },
     { "targets", section_targets },

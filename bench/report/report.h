@@ -45,6 +45,7 @@ void section_model(report *r);      /* model error of every approximation */
 void section_pictures(report *r);   /* BRDF slices, spheres, heat maps */
 void section_samplers(report *r);   /* importance sampling */
 void section_arm(report *r);        /* Cortex-M figures */
+void section_wcet(report *r);       /* Cortex-M execution time per call (fx.h's table) */
 void section_rtl(report *r);        /* the RTL port: cells, depth, iCE40 LUTs and clock */
 void section_raster(report *r);     /* the software rasterizer */
 void section_targets(report *r);    /* the targets, met or not */
