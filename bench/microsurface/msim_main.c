@@ -6,6 +6,7 @@
  *   microsurface table  ...   the reference tables (make microsurface)
  *   microsurface error | refit | energy   the analyses (msim_analyse.c)
  * Every figure is printed with its Monte Carlo standard error. */
+#include "facet.h"
 #include "msim.h"
 #include "msim_grid.h"
 #include "msim_tables.h"
@@ -317,6 +318,15 @@ int main(int argc, char **argv)
     if (argc < 2 || parse(argc, argv, &o)) {
         usage();
         return 2;
+    }
+    /* the model-error tables quote the f32 kernels' values: the portable
+     * scalar port (IEEE operations only) gives the same digits on every
+     * CPU, where a dispatched per-sample call would carry this CPU's
+     * rcp/rsqrt estimates (they differ between vendors) into the
+     * committed, byte-compared files */
+    if (facet_set_port("scalar") != 0) {
+        fprintf(stderr, "microsurface: cannot select the scalar port\n");
+        return 1;
     }
     if (!strcmp(argv[1], "point"))
         rc = cmd_point(&o);

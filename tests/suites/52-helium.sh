@@ -84,6 +84,7 @@ else
             grep -qF -- "$r" "$1" || { echo "$r"; return 1; }
         done
     }
+    mkdir -p build/qcount build/m55-clang   # a fresh clone has neither
     if ! $MAKE -s BUILD=build/m55-clang CC=arm-none-eabi-gcc AR=arm-none-eabi-ar PICFLAGS= HELIUM_CC=clang \
             CFLAGS="-mcpu=cortex-m55 -mfloat-abi=hard -mthumb -O2 -g" build/m55-clang/libfacet.a > build/m55-clang/lib.log 2>&1 ||
        ! sh bench/qcount/qcount.sh m55 build/m55 > build/qcount/m55-gcc.txt 2> build/qcount/m55.log ||
