@@ -181,6 +181,19 @@ FXQ_INLINE fxv_u32 fxq_top_at(fxv_u64 v, fxv_u32 kk)
     return fxv_or(fxv_shlv(fxv_hi(v), kk), fxv_shrv(fxv_lo(v), fxv_sub32(fxv_k32(32), kk)));
 }
 
+/* the quotient's normalising shift, rounding and saturation, shared by
+ * fxq_divb and fxq_divbn (below): q = hi(n 2^kn, 1/(d 2^kd)) in [2^30, 2^32) */
+FXQ_INLINE fxv_u32 fxq_div_round(fxv_u32 q, fxv_u32 kn, fxv_u32 kd, fxv_u32 b, uint32_t max)
+{
+    fxv_u32 kq = fxv_sub32(fxv_k32(1), fxv_shr(q, 31)); /* q 2^kq in [2^31, 2^32) */
+    fxv_u32 srb = fxv_add32(fxv_sub32(fxv_add32(b, kn), kd), kq); /* sr + 64 */
+    fxv_u32 qn = fxv_shlv(q, kq);
+    fxv_u32 t = fxv_shrv(qn, fxv_min(fxv_sub32(fxv_max(srb, fxv_k32(65)), fxv_k32(65)), fxv_k32(31)));
+    fxv_u32 v = fxv_sel(fxv_lt(srb, fxv_k32(65)), t, fxv_shr(fxv_add32(t, fxv_k32(1)), 1));
+    v = fxv_sel(fxv_lt(srb, fxv_k32(64)), fxv_k32(max), fxv_sel(fxv_lt(srb, fxv_k32(97)), v, fxv_k32(0)));
+    return fxv_min(v, fxv_k32(max));
+}
+
 /* round(n / d 2^s) (ties up), saturated at max, with s given biased as the
  * lane b = 95 - s (so a per-lane s works too); n < 2^32 (0 gives 0), d >= 1:
  *   kn, kd normalise n and d; r = rcp20(d 2^kd) ~ 2^51 / (d 2^kd);
@@ -194,13 +207,7 @@ FXQ_INLINE fxv_u32 fxq_divb(fxv_u32 n, fxv_u32 d, fxv_u32 b, uint32_t max)
 {
     fxv_u32 kn = fxv_min(fxv_clz(n), fxv_k32(31)), kd = fxv_clz(d);
     fxv_u32 q = fxq_mulhi(fxv_shlv(n, kn), fxv_shl(fxq_rcp20(fxv_shlv(d, kd)), 12));
-    fxv_u32 kq = fxv_sub32(fxv_k32(1), fxv_shr(q, 31)); /* q 2^kq in [2^31, 2^32) */
-    fxv_u32 srb = fxv_add32(fxv_sub32(fxv_add32(b, kn), kd), kq); /* sr + 64 */
-    q = fxv_shlv(q, kq);
-    fxv_u32 t = fxv_shrv(q, fxv_min(fxv_sub32(fxv_max(srb, fxv_k32(65)), fxv_k32(65)), fxv_k32(31)));
-    fxv_u32 v = fxv_sel(fxv_lt(srb, fxv_k32(65)), t, fxv_shr(fxv_add32(t, fxv_k32(1)), 1));
-    v = fxv_sel(fxv_lt(srb, fxv_k32(64)), fxv_k32(max), fxv_sel(fxv_lt(srb, fxv_k32(97)), v, fxv_k32(0)));
-    return fxv_min(v, fxv_k32(max));
+    return fxq_div_round(q, kn, kd, b, max);
 }
 #define fxq_div(n, d, s, max) fxq_divb(n, d, fxv_k32(95u - (s)), max)
 
@@ -224,13 +231,7 @@ FXQ_INLINE fxv_u32 fxq_divbn(fxv_u32 n, fxv_u32 d, fxv_u32 b, uint32_t max)
 {
     fxv_u32 kn = fxv_min(fxv_clz(n), fxv_k32(31)), kd = fxv_clz(d);
     fxv_u32 q = fxq_mulhi(fxv_shlv(n, kn), fxq_rcpn(fxv_shlv(d, kd)));
-    fxv_u32 kq = fxv_sub32(fxv_k32(1), fxv_shr(q, 31)); /* q 2^kq in [2^31, 2^32) */
-    fxv_u32 srb = fxv_add32(fxv_sub32(fxv_add32(b, kn), kd), kq); /* sr + 64 */
-    q = fxv_shlv(q, kq);
-    fxv_u32 t = fxv_shrv(q, fxv_min(fxv_sub32(fxv_max(srb, fxv_k32(65)), fxv_k32(65)), fxv_k32(31)));
-    fxv_u32 v = fxv_sel(fxv_lt(srb, fxv_k32(65)), t, fxv_shr(fxv_add32(t, fxv_k32(1)), 1));
-    v = fxv_sel(fxv_lt(srb, fxv_k32(64)), fxv_k32(max), fxv_sel(fxv_lt(srb, fxv_k32(97)), v, fxv_k32(0)));
-    return fxv_min(v, fxv_k32(max));
+    return fxq_div_round(q, kn, kd, b, max);
 }
 
 /* ---- Fresnel ------------------------------------------------------------------
