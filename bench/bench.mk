@@ -21,7 +21,8 @@ BENCH_NATIVE := $(shell $(CC) -march=native -E -x c /dev/null >/dev/null 2>&1 &&
 # kind, for the samplers' loops).  -Ibench: a part's header from another part
 # is included as "harness/bench.h", "raster/raster.h", ...
 BENCH_FLAGS   = $(BASEFLAGS) -D_GNU_SOURCE -I. -Ibench
-BENCH_DEPS    = $(HEADERS) $(wildcard bench/*.h bench/*/*.h) tests/lib/sample.h tests/lib/sample_common.h src/core/kernel_list.h \
+BENCH_DEPS    = $(HEADERS) $(wildcard bench/*.h bench/*/*.h) tests/lib/sample.h tests/lib/sample_common.h tests/f16/f16_test.h \
+                src/core/kernel_list.h \
                 src/core/port.h src/core/sample_port.h
 
 ifneq ($(BENCH_X86),)

@@ -8,11 +8,13 @@
 #include <stdlib.h>
 #include <string.h>
 #include "facet/oracle.h"
+#include "facet/f16.h"
 #include "tests/lib/sample_common.h" /* the samplers the tests judge error on (and sample.h) */
 #include "bench.h"
 #include "loops.h"
 #include "peers.h"
 #include "fxhook.h"
+#include "tests/f16/f16_test.h" /* the f16 tests' inputs, domain clamp and error measure */
 
 #define ERR_FLOOR 0x1p-100
 
@@ -75,6 +77,9 @@ typedef struct work {
     const int32_t *const *fxin;
     peer_sample_fn sfn;       /* a sampler's batch (facet's or a peer's): SoA outputs */
     float *const *sout;
+    void (*hfn)(facet_f16 *, const facet_f16 *const *, size_t); /* an f16 batch: binary16 bits */
+    facet_f16 *hout;
+    const facet_f16 *const *hin;
 } work;
 
 static void run_work(void *ctx, long reps)
@@ -90,6 +95,9 @@ static void run_work(void *ctx, long reps)
     } else if (w->sfn) {
         for (r = 0; r < reps; r++)
             w->sfn(w->sout, w->in, w->n);
+    } else if (w->hfn) {
+        for (r = 0; r < reps; r++)
+            w->hfn(w->hout, w->hin, w->n);
     } else {
         for (r = 0; r < reps; r++)
             w->fn(w->out, w->in, w->n);
@@ -483,6 +491,94 @@ static void run_fx(const bench_fx *fx, const kdata *d, const bench_opts *o, benc
     free(x.out);
 }
 
+/* ---- binary16 (facet/f16.h) ---------------------------------------------------
+ * Format "f16", path "batch", port the f16 table that ran
+ * (facet_f16_port_name(): the f16 column of the active port's line of
+ * src/core/ports.def where this CPU runs it, else "scalar"): every f16
+ * table this CPU runs, each once, reached through the first f32 port that
+ * selects it.  Inputs: the f16 tests' generator (tests/f16/f16_test.h: the
+ * f32 samplers rounded to binary16, 1 in 4 cosines and alpha aimed at the
+ * 2^-7 floors); error: facet/f16.h's measure against the double oracle at
+ * the same binary16 inputs after the domain clamp (max_rel, bound
+ * FACET_ERR_<NAME>_F16); max_rel_vis: plain relative error where the
+ * oracle is >= 2^-8, as for the other formats (want above 65504: against
+ * 65504, the saturation the contract states).  Timed like the f32 batch
+ * rows (n_time samples per call, the same calibration and epochs), right
+ * after the kernel's fixed-point rows in the same run. */
+static void run_f16(const facet_f16_kernel *h, const kdata *d, const bench_opts *o, bench_sink sink, void *ctx,
+                    int *count)
+{
+    size_t n = d->n, i, p;
+    facet_f16 *hin[FACET_MAX_INPUTS], *hout = malloc((n + 32) * sizeof(facet_f16));
+    double *want = malloc(n * sizeof(double));
+    const char *done[16], *saved_port = facet_port_name();
+    int nd = 0, j;
+    smp_rng r;
+    r.s = o->seed ^ 0xf16f16ull ^ (uint64_t)(strlen(h->name) * 977u);
+    for (j = 0; j < d->k->n_inputs; j++)
+        hin[j] = malloc(n * sizeof(facet_f16));
+    for (i = 0; i < n; i++) {
+        facet_f16 x[FACET_MAX_INPUTS];
+        double dv[FACET_MAX_INPUTS];
+        f16t_inputs(&r, d->k, x);
+        for (j = 0; j < d->k->n_inputs; j++) {
+            hin[j][i] = x[j];
+            dv[j] = f16t_clamp(d->k->inputs[j], facet_f32_from_f16(x[j]));
+        }
+        want[i] = d->k->oracle(dv);
+    }
+    for (p = 0; p < facet_port_count(); p++) {
+        int sup = 0, k, seen = 0;
+        const char *pn = facet_port_at(p, &sup, NULL), *hn;
+        bench_row row;
+        bench_err *e = &row.err;
+        double sum = 0;
+        work w;
+        if (!sup || facet_set_port(pn) != 0)
+            continue;
+        hn = facet_f16_port_name();
+        for (k = 0; k < nd; k++)
+            seen |= !strcmp(done[k], hn);
+        if (seen || nd == 16 || !want_port(o, hn))
+            continue;
+        done[nd++] = hn;
+        row_init(&row, d, "f16", hn, "batch", 1);
+        row.bound = h->err_f16;
+        row.note = "facet_<kernel>_f16_batch (binary16 bits in and out) with facet_set_port(port) active";
+        h->f16_batch(hout, (const facet_f16 *const *)hin, n);
+        e->max_rel = -1;
+        for (i = 0; i < n; i++) {
+            double got = facet_f32_from_f16(hout[i]), rel = f16t_err(got, want[i]);
+            if (got != got)
+                rel = INFINITY;
+            sum += rel;
+            if (want[i] >= 0x1p-8 && rel > e->max_rel_vis)
+                e->max_rel_vis = rel;
+            if (rel > e->max_rel) {
+                e->max_rel = rel;
+                e->got = got;
+                e->want = want[i];
+                for (j = 0; j < d->k->n_inputs; j++)
+                    e->arg[j] = facet_f32_from_f16(hin[j][i]);
+            }
+        }
+        e->n = (long)n;
+        e->mean_rel = sum / (double)n;
+        memset(&w, 0, sizeof w);
+        w.hfn = h->f16_batch;
+        w.hout = hout;
+        w.hin = (const facet_f16 *const *)hin;
+        w.n = o->n_time < n ? o->n_time : n;
+        row.thr = time_work(&w, (double)w.n, o);
+        finish(&row, o, sink, ctx, count);
+    }
+    facet_set_port(saved_port ? saved_port : "auto");
+    for (j = 0; j < d->k->n_inputs; j++)
+        free(hin[j]);
+    free(hout);
+    free(want);
+}
+
 /* ---- the importance samplers (facet.h, src/core/sample_kernels.def) ----------------- */
 
 typedef struct sdata {
@@ -692,7 +788,7 @@ int bench_run(const bench_opts *o, bench_sink sink, void *ctx)
     if (o->peers && peer_check(stderr) != 0)
         return -2;
     if (o->format && strcmp(o->format, "f32") && strcmp(o->format, "f32_fast") && strcmp(o->format, "fx") &&
-        strcmp(o->format, "fx_fast"))
+        strcmp(o->format, "fx_fast") && strcmp(o->format, "f16"))
         return -1;
     if (o->port) {
         int known = 0;
@@ -703,6 +799,8 @@ int bench_run(const bench_opts *o, bench_sink sink, void *ctx)
         for (p = 0; p < facet_port_count(); p++)
             if (!strcmp(facet_port_at(p, NULL, NULL), o->port))
                 known = 1;
+        if (facet_f16_port_supported(o->port))
+            known = 1;
         if (!known)
             return -1;
     }
@@ -789,6 +887,11 @@ int bench_run(const bench_opts *o, bench_sink sink, void *ctx)
             const bench_fx *fx = bench_fx_find(k->name);
             if (fx && (tier || fx->batch) && (!o->format || !strcmp(o->format, tier ? "fx_fast" : "fx")))
                 run_fx(fx, &d, o, sink, ctx, &count, tier);
+        }
+        {
+            const facet_f16_kernel *h = facet_f16_kernel_find(k->name);
+            if (h && h->f16 && h->f16_batch && (!o->format || !strcmp(o->format, "f16")))
+                run_f16(h, &d, o, sink, ctx, &count);
         }
         kdata_free(&d);
     }

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "facet/f16.h"
 #include "bench.h"
 #include "peers.h"
 
@@ -14,7 +15,7 @@
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: facet-bench bench [KERNEL] [--port P] [--format f32|f32_fast|fx|fx_fast] [--json]\n"
+            "usage: facet-bench bench [KERNEL] [--port P] [--format f32|f32_fast|fx|fx_fast|f16] [--json]\n"
             "                         [--samples N] [--err-samples N] [--epochs E] [--quick] [--no-peers]\n"
             "Times every kernel (or KERNEL) on every port this CPU runs, through the batch\n"
             "API, the inline kernels and the library call, next to the peers (textbook;\n"
@@ -30,7 +31,8 @@ static void usage(FILE *f)
             "the time-stamp counter in ticks (labelled so; est. cycles use a measured\n"
             "ticks-per-cycle ratio).\n"
             "  --port P         a facet port (scalar, sse2, avx2, avx512, neon) or a peer\n"
-            "  --format F       f32, f32_fast, fx or fx_fast\n"
+            "  --format F       f32, f32_fast, fx, fx_fast or f16 (binary16: port = the f16 table\n"
+            "                   that ran, e.g. avx512fp16; --port takes that name too)\n"
             "  --json           one JSON document on stdout\n"
             "  --samples N      samples per timed pass (default 1024, multiple of 8,\n"
             "                   at most 65536)\n"
@@ -199,8 +201,8 @@ int facet_cmd_bench(int argc, char **argv)
         }
     }
     if (o.format && strcmp(o.format, "f32") && strcmp(o.format, "f32_fast") && strcmp(o.format, "fx") &&
-        strcmp(o.format, "fx_fast")) {
-        fprintf(stderr, "facet-bench bench: unknown format '%s' (known: f32, f32_fast, fx, fx_fast)\n", o.format);
+        strcmp(o.format, "fx_fast") && strcmp(o.format, "f16")) {
+        fprintf(stderr, "facet-bench bench: unknown format '%s' (known: f32, f32_fast, fx, fx_fast, f16)\n", o.format);
         return 2;
     }
     if (o.port) {
@@ -213,6 +215,8 @@ int facet_cmd_bench(int argc, char **argv)
         for (p = 0; p < facet_port_count(); p++)
             if (!strcmp(facet_port_at(p, NULL, NULL), o.port))
                 known = 1;
+        if (facet_f16_port_supported(o.port))
+            known = 1;
         if (!known) {
             fprintf(stderr, "facet-bench bench: unknown port '%s'\n", o.port);
             return 2;
