@@ -20,9 +20,15 @@
 #           under qemu-riscv64 -cpu rv64,v=true,vlen=128: MEASURED
 #           instruction counts, not cycles (the speed table's RVV column)
 # for every kernel and every tier the port runs (f32, f32_fast, fx,
-# fx_fast), from one image per target (bench/report/armcount_main.c).
+# fx_fast), from one image per target (bench/report/armcount_main.c); and
+# format f16 where the port's line of src/core/ports.def names an f16
+# table of its own (armcount_main.c finds it in the port list: the neon
+# line's neonfp16 on aarch64, ARMv8.2-A FP16 arithmetic, costed by the same
+# llvm-mca model with -mattr=+fullfp16; a port whose line runs the scalar
+# f16 table has "no f16 port yet", and picks one up when its line names one).
 # Writes OUT_DIR/arm_vec.tsv ("format port kernel measure value") and
 # OUT_DIR/arm_vec.status (per target "PORT ok HOW" or "PORT skipped WHY",
+# and "PORT-f16 ok HOW" or "PORT-f16 skipped WHY" for its binary16 table,
 # which the report prints).  A missing tool or a failed build skips that
 # target with the reason; it never fails the report.  The figures are
 # cached in build/armcount/ and reused while the library, this script and
@@ -71,16 +77,32 @@ counts() {
           if (on) { n++; if (mca) print text[pc] > (mca "/" k ".s") } }' "$2" "$4" "$3"
 }
 samples=64
+# f16status PORT LABELS|-: the PORT-f16 status line from the counting run's
+# "armcount-f16: TABLE" line (or, with -, from the cached PORT.f16)
+f16status() {
+    if [ "$2" != - ]; then sed -n 's/^armcount-f16: //p' "$2" | tr -d '\r' > "$dir/$1.f16"; fi
+    t=$(cat "$dir/$1.f16" 2>/dev/null)
+    case $t in
+    "") status "$1-f16 skipped: the counting image did not say which f16 table the $1 line runs" ;;
+    none) status "$1-f16 skipped: no f16 port yet (src/core/ports.def: the $1 line runs the scalar f16 table)" ;;
+    *) status "$1-f16 ok the $t table, $3" ;;
+    esac
+}
 
 # ---- NEON (aarch64): llvm-mca on the executed trace -------------------------
 cpu=cortex-a57
+neon_f16_how="llvm-mca -mcpu=$cpu -mattr=+fullfp16 on the executed trace (the A57 itself is ARMv8.0, without FP16 arithmetic: LLVM 14 schedules A72, A76 and Neoverse N1 with the same model)"
 if ! have aarch64-linux-gnu-gcc || ! have qemu-aarch64 || ! have llvm-mca; then
     status "neon skipped: not installed: $(missing aarch64-linux-gnu-gcc qemu-aarch64 llvm-mca)"
+    status "neon-f16 skipped: not installed: $(missing aarch64-linux-gnu-gcc qemu-aarch64 llvm-mca)"
 elif ! $MAKE -s BUILD=build/aarch64 CC=aarch64-linux-gnu-gcc CFLAGS="-O2 -g" build/aarch64/libfacet.a > "$dir/aarch64.build.log" 2>&1; then
     status "neon skipped: the aarch64 cross build of the library failed ($dir/aarch64.build.log)"
-elif fresh "$dir/neon.tsv" build/aarch64/libfacet.a bench/report/armcount_main.c bench/report/arm_targets.sh; then
+    status "neon-f16 skipped: the aarch64 cross build of the library failed ($dir/aarch64.build.log)"
+elif fresh "$dir/neon.tsv" build/aarch64/libfacet.a bench/report/armcount_main.c bench/report/arm_targets.sh &&
+     [ -s "$dir/neon.f16" ]; then
     cat "$dir/neon.tsv" >> "$out/arm_vec.tsv"
     status "neon ok llvm-mca -mcpu=$cpu on the executed trace (cached)"
+    f16status neon - "$neon_f16_how (cached)"
 else
     NM=aarch64-linux-gnu-nm
     rm -rf "$dir/neon.d" && mkdir -p "$dir/neon.d"
@@ -88,13 +110,14 @@ else
             bench/report/armcount_main.c build/aarch64/libfacet.a -lm -o "$dir/neon.elf" 2> "$dir/neon.log" &&
        qemu-aarch64 -singlestep -d exec,nochain -D "$dir/neon.trace" "$dir/neon.elf" > "$dir/neon.labels" 2>> "$dir/neon.log"; then
         aarch64-linux-gnu-objdump -d --no-show-raw-insn "$dir/neon.elf" > "$dir/neon.dis"
-        grep -v '^armcount:' "$dir/neon.labels" > "$dir/neon.lab"
+        grep -v '^armcount' "$dir/neon.labels" > "$dir/neon.lab"
         counts "$dir/neon.elf" "$dir/neon.dis" "$dir/neon.trace" "$dir/neon.lab" "$dir/neon.d" > "$dir/neon.calls"
         rm -f "$dir/neon.trace"
         i=0
         : > "$dir/neon.tsv.tmp"
         while read -r fmt k insns; do
-            c=$(llvm-mca -mtriple=aarch64 -mcpu=$cpu -iterations=1 "$dir/neon.d/$i.s" 2>> "$dir/neon.log" |
+            attr=; [ "$fmt" = f16 ] && attr=-mattr=+fullfp16
+            c=$(llvm-mca -mtriple=aarch64 -mcpu=$cpu $attr -iterations=1 "$dir/neon.d/$i.s" 2>> "$dir/neon.log" |
                 awk -v n=$samples '/^Iterations:/ {it = $2} /^Total Cycles:/ {c = $3} END { if (it) printf "%.2f", c / it / n }')
             [ -n "$c" ] && echo "$fmt neon $k mca-$cpu $c" >> "$dir/neon.tsv.tmp"
             echo "$fmt neon $k qemu-insn $(awk -v i="$insns" -v n=$samples 'BEGIN { printf "%.1f", i / n }')" >> "$dir/neon.tsv.tmp"
@@ -105,11 +128,14 @@ else
             mv "$dir/neon.tsv.tmp" "$dir/neon.tsv"
             cat "$dir/neon.tsv" >> "$out/arm_vec.tsv"
             status "neon ok llvm-mca -mcpu=$cpu on the executed trace"
+            f16status neon "$dir/neon.labels" "$neon_f16_how"
         else
             status "neon skipped: no call was traced ($dir/neon.log)"
+            status "neon-f16 skipped: no call was traced ($dir/neon.log)"
         fi
     else
         status "neon skipped: the counting image failed to build or run ($dir/neon.log)"
+        status "neon-f16 skipped: the counting image failed to build or run ($dir/neon.log)"
     fi
 fi
 
@@ -117,13 +143,16 @@ fi
 lib=build/m55-clang/libfacet.a
 if ! have arm-none-eabi-gcc || ! have qemu-system-arm || ! have clang; then
     status "helium skipped: not installed: $(missing arm-none-eabi-gcc qemu-system-arm clang)"
+    status "helium-f16 skipped: not installed: $(missing arm-none-eabi-gcc qemu-system-arm clang)"
 elif ! $MAKE -s BUILD=build/m55-clang CC=arm-none-eabi-gcc AR=arm-none-eabi-ar PICFLAGS= HELIUM_CC=clang \
         CFLAGS="-mcpu=cortex-m55 -mfloat-abi=hard -mthumb -O2 -g" $lib > "$dir/m55.build.log" 2>&1; then
     status "helium skipped: the Cortex-M55 build of the library failed ($dir/m55.build.log)"
+    status "helium-f16 skipped: the Cortex-M55 build of the library failed ($dir/m55.build.log)"
 elif fresh "$dir/helium.tsv" $lib bench/report/armcount_main.c bench/report/arm_targets.sh bench/qcount/m55_mca.awk &&
-     { ! have llvm-mca-16 || grep -q ' mca-cortex-m55 ' "$dir/helium.tsv"; }; then
+     { ! have llvm-mca-16 || grep -q ' mca-cortex-m55 ' "$dir/helium.tsv"; } && [ -s "$dir/helium.f16" ]; then
     cat "$dir/helium.tsv" >> "$out/arm_vec.tsv"
     status "helium ok $(cat "$dir/helium.how" 2>/dev/null) (cached)"
+    f16status helium - "$(cat "$dir/helium.how" 2>/dev/null) (cached)"
 else
     NM=arm-none-eabi-nm
     m55mca="llvm-mca-16 -mtriple=thumbv8.1m.main -mcpu=cortex-m55 -mattr=+mve.fp"
@@ -133,7 +162,7 @@ else
        timeout 300 qemu-system-arm -M mps3-an547 -nographic -semihosting-config enable=on,target=native \
             -kernel "$dir/m55.elf" -singlestep -d exec,nochain -D "$dir/m55.trace" > "$dir/m55.labels" 2>> "$dir/m55.log"; then
         arm-none-eabi-objdump -d --no-show-raw-insn -m armv8.1-m.main "$dir/m55.elf" > "$dir/m55.dis"
-        grep -v '^armcount:' "$dir/m55.labels" | tr -d '\r' > "$dir/m55.lab"
+        grep -v '^armcount' "$dir/m55.labels" | tr -d '\r' > "$dir/m55.lab"
         rm -rf "$dir/m55.d" && mkdir -p "$dir/m55.d"
         counts "$dir/m55.elf" "$dir/m55.dis" "$dir/m55.trace" "$dir/m55.lab" "$dir/m55.d" 1 > "$dir/m55.calls"
         rm -f "$dir/m55.trace"
@@ -165,11 +194,14 @@ else
             mv "$dir/helium.tsv.tmp" "$dir/helium.tsv"
             cat "$dir/helium.tsv" >> "$out/arm_vec.tsv"
             status "helium ok $how"
+            f16status helium "$dir/m55.labels" "$how"
         else
             status "helium skipped: no call was traced ($dir/m55.log)"
+            status "helium-f16 skipped: no call was traced ($dir/m55.log)"
         fi
     else
         status "helium skipped: the counting image failed to build or run ($dir/m55.log)"
+        status "helium-f16 skipped: the counting image failed to build or run ($dir/m55.log)"
     fi
 fi
 # ---- RVV (RV64GCV, VLEN 128): executed instructions under qemu-riscv64 ------------
@@ -188,7 +220,7 @@ else
        timeout 600 qemu-riscv64 -cpu rv64,v=true,vext_spec=v1.0,vlen=128 -singlestep -d exec,nochain \
             -D "$dir/rvv.trace" "$dir/rvv.elf" > "$dir/rvv.labels" 2>> "$dir/rvv.log"; then
         riscv64-linux-gnu-objdump -d "$dir/rvv.elf" > "$dir/rvv.dis"
-        grep -v '^armcount:' "$dir/rvv.labels" > "$dir/rvv.lab"
+        grep -v '^armcount' "$dir/rvv.labels" > "$dir/rvv.lab"
         counts "$dir/rvv.elf" "$dir/rvv.dis" "$dir/rvv.trace" "$dir/rvv.lab" |
             awk -v n=$samples '{ printf "%s rvv %s qemu-insn %.1f\n", $1, $2, $3 / n }' > "$dir/rvv.tsv.tmp"
         rm -f "$dir/rvv.trace"

@@ -4,12 +4,23 @@
  * under qemu (bench/report/arm_targets.sh cuts the trace at the markers).
  * The port's tables are called directly (src/core/port.h), so the dispatcher's
  * pointer load is not counted.  Prints one "FORMAT KERNEL" line per counted
- * call, in call order.  ARMCOUNT_PORT names the port (helium). */
+ * call, in call order.  ARMCOUNT_PORT names the port (helium).
+ *
+ * Binary16 (format f16): the f16 table the port's line of
+ * src/core/ports.def names in its f16 column (where its guard holds on
+ * this target), found in the port list at run time, so a port that gains
+ * an f16 table is counted with no change here; the line
+ * "armcount-f16: TABLE" says which ("none": the line runs the scalar f16
+ * table, i.e. the port has no f16 code of its own, and nothing is
+ * counted).  Inputs: the same values as binary16 bits. */
 #include <stdint.h>
 #include <stdio.h>
+#include <string.h>
 #include "facet.h"
 #include "facet/fx.h"
 #include "../../src/core/port.h"
+#include "../../src/core/platform.h"
+#include "../../src/core/f16_port.h"
 
 #ifndef N
 #define N 64
@@ -32,7 +43,43 @@ enum { D_UNIT, D_COS, D_ALPHA, D_LOV, D_GAMMA, D_N };
 static float fin[D_N][N], out[N];
 static int32_t qin[D_N][N];
 static uint64_t qout[N];
+static uint16_t hin[D_N][N], hout[N];
 static int id;
+
+/* every kernel's inputs' domain classes, by the kernel's place in kernels.def */
+enum {
+#define FACET_KERNEL(name, ...) K_##name,
+#include "../../src/core/kernels.def"
+#undef FACET_KERNEL
+    K_N
+};
+#define DOM_(input, domain) D_##domain
+static const unsigned char kdom[K_N][6] = {
+#define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...) \
+    { FACET_MAP_INPUTS(n, DOM_, __VA_ARGS__) },
+#include "../../src/core/kernels.def"
+#undef FACET_KERNEL
+};
+
+/* the port lines compiled for this target and the f16 table each runs */
+#define STR_(x) #x
+#define STR(x) STR_(x)
+static const struct { const char *port; const facet_f16_port *f16; } f16_lines[] = {
+#define FACET_PORT(name, guard, cpu, fx, fx_fast, f16, f16_cpu) FACET_PORT_IF(guard, { #name, &facet_f16_port_##f16 },)
+#include "../../src/core/ports.def"
+#undef FACET_PORT
+};
+
+/* binary16 bits of x (|x| in [2^-14, 1] or 0; truncated: any in-domain value will do) */
+static uint16_t h_of(float x)
+{
+    uint32_t b, s;
+    int e;
+    memcpy(&b, &x, sizeof b);
+    s = (b >> 16) & 0x8000u;
+    e = (int)((b >> 23) & 255u) - 127 + 15;
+    return (uint16_t)(e <= 0 ? s : s | (uint32_t)e << 10 | (b & 0x7fffffu) >> 13);
+}
 
 #define CLASS_(input, domain) D_##domain
 #define F_ARG_(input, domain) fin[D_##domain]
@@ -63,6 +110,31 @@ int main(void)
     FACET_IF_FX(fx_type, CALL_(FX_FAST, facet_fx_fast_port_scalar, "fx_fast", name, (fx_type *)(void *)qout, FACET_MAP_INPUTS(n, Q_ARG_, __VA_ARGS__)))
 #include "../../src/core/kernels.def"
 #undef FACET_KERNEL
-    printf("armcount: %g %llu\n", (double)out[0], (unsigned long long)qout[0]);
+    {
+        const facet_f16_port *h = NULL;
+        const uint16_t *hp[6];
+        size_t l;
+        int q;
+        for (l = 0; l < sizeof f16_lines / sizeof f16_lines[0] && !h; l++)
+            if (!strcmp(f16_lines[l].port, STR(ARMCOUNT_PORT)))
+                h = f16_lines[l].f16;
+        if (h == &facet_f16_port_scalar)
+            h = NULL;
+        printf("armcount-f16: %s\n", h ? h->name : "none");
+        for (d = 0; d < D_N; d++)
+            for (i = 0; i < N; i++)
+                hin[d][i] = h_of(fin[d][i]);
+#define HP_(q) hp[q]
+#define FACET_F16(name, NAME, n, form, why)                                                    \
+        FACET_IF_F16(form, if (h) {                                                           \
+            for (q = 0; q < n; q++)                                                           \
+                hp[q] = hin[kdom[K_##name][q]];                                               \
+            armcount_begin(id); h->name(hout, FACET_EACH_INPUT(n, HP_), N); armcount_end(id++); \
+            printf("f16 %s\n", #name);                                                        \
+        })
+#include "../../src/core/f16_kernels.def"
+#undef FACET_F16
+    }
+    printf("armcount: %g %llu %u\n", (double)out[0], (unsigned long long)qout[0], (unsigned)hout[0]);
     return 0;
 }
