@@ -9,13 +9,23 @@
  * against the double oracle on the timed samples (tests/lib/sample.h's
  * generator: a quarter of them at the specular peak) and on a peak set
  * (mirror geometry within 2^-30 .. 2^-3, alpha in [2^-10, 2^-8]) for the
- * two-cosine kernels. */
+ * two-cosine kernels.
+ *
+ * Binary16 (facet/f16.h): where a port's line runs an f16 table of its own
+ * (avx512fp16 on avx512), that table's batch is one more entry of the same
+ * rounds (tier "f16", port the table, width the port), on the same inputs
+ * rounded to binary16 (facet_f16_from_f32; in and out 2 bytes a value), called
+ * through the dispatcher with that port active (set outside the timed call);
+ * its error in facet/f16.h's measure at those binary16 inputs, clamped to
+ * the f16 domain; no peak set (the peak set's alpha lies below the f16
+ * floor 2^-7). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <math.h>
 #include "facet.h"
-#include "tests/lib/sample.h"
+#include "facet/f16.h"
+#include "tests/f16/f16_test.h"
 #include "src/core/port.h"
 #include "port_tables.h"
 #include "cycles.h"
@@ -25,7 +35,7 @@
 
 
 #define MAX_ROUNDS SPEED_MAX_ROUNDS
-#define MAX_ENTRIES 24
+#define MAX_ENTRIES 26
 
 /* one kernel's batch function in a port table, called on SoA columns */
 typedef void (*tab_call)(const facet_f32_port *p, float *out, const float *const *in, size_t n);
@@ -48,6 +58,8 @@ typedef struct entry {
     const char *width;          /* the vector width it belongs to (port name) */
     const facet_f32_port *tab;  /* facet: the port table */
     peer_term_fn peer;          /* peer: the loop */
+    const facet_f16_kernel *h;  /* f16: the kernel, run through the dispatcher with port `via` active */
+    const char *via;
     double t[MAX_ROUNDS];
     double min, median, err, err_peak;
 } entry;
@@ -58,10 +70,15 @@ static int cmp_d(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
+/* the binary16 inputs and output of the f16 entries */
+static facet_f16 *hin_[FACET_MAX_INPUTS], *hout_;
+
 static void run(entry *e, size_t ki, float *out, const float *const *in, size_t n)
 {
     if (e->tab)
         calls_[ki](e->tab, out, in, n);
+    else if (e->h)
+        e->h->f16_batch(hout_, (const facet_f16 *const *)hin_, n);
     else
         e->peer(out, in, n);
 }
@@ -70,6 +87,21 @@ static double max_err(entry *e, size_t ki, float *out, const float *const *in, c
 {
     size_t i;
     double m = 0;
+    if (e->h) { /* f16: facet/f16.h's measure at the binary16 inputs */
+        const facet_kernel *k = facet_kernel_at(ki);
+        int j;
+        facet_set_port(e->via);
+        e->h->f16_batch(hout_, (const facet_f16 *const *)hin_, n);
+        for (i = 0; i < n; i++) {
+            double dv[FACET_MAX_INPUTS], got = facet_f32_from_f16(hout_[i]), d;
+            for (j = 0; j < k->n_inputs; j++)
+                dv[j] = f16t_clamp(k->inputs[j], facet_f32_from_f16(hin_[j][i]));
+            d = got != got ? INFINITY : f16t_err(got, k->oracle(dv));
+            if (d > m)
+                m = d;
+        }
+        return m;
+    }
     run(e, ki, out, in, n);
     for (i = 0; i < n; i++) {
         double d = out[i] != out[i] ? INFINITY : fabs(out[i] - want[i]) / fmax(fabs(want[i]), 0x1p-100);
@@ -109,6 +141,7 @@ int speed_run(const char *only, int rounds, size_t n, speed_sink sink, void *ctx
         { "scalar", &facet_port_scalar_f32, &facet_port_scalar_f32_fast },
     };
     static entry e[MAX_ENTRIES];
+    const char *saved = facet_port_name(), *via;
     size_t ki, nk = facet_kernel_count();
     float *in[FACET_MAX_INPUTS], *pin[FACET_MAX_INPUTS], *out;
     double *want, *pwant;
@@ -124,6 +157,9 @@ int speed_run(const char *only, int rounds, size_t n, speed_sink sink, void *ctx
     out = malloc(n * sizeof(float));
     want = malloc(n * sizeof(double));
     pwant = malloc(n * sizeof(double));
+    for (a = 0; a < FACET_MAX_INPUTS; a++)
+        hin_[a] = malloc(n * sizeof(facet_f16));
+    hout_ = malloc(n * sizeof(facet_f16));
     for (ki = 0; ki < nk; ki++) {
         const facet_kernel *k = facet_kernel_at(ki);
         smp_rng r = { 0x5eed0021ull + ki };
@@ -161,6 +197,8 @@ int speed_run(const char *only, int rounds, size_t n, speed_sink sink, void *ctx
             }
             pwant[q] = k->oracle(dv);
         }
+        for (j = 0; j < k->n_inputs; j++)
+            facet_f16_from_f32_batch(hin_[j], in[j], n);
         for (p = 0; p < sizeof ports / sizeof ports[0]; p++) {
             if (!ports[p].f32 || !facet_port_supported(ports[p].name) || ne + 2 > MAX_ENTRIES)
                 continue;
@@ -171,7 +209,24 @@ int speed_run(const char *only, int rounds, size_t n, speed_sink sink, void *ctx
             e[ne + 1].tier = "f32_fast";
             e[ne + 1].tab = ports[p].fast;
             e[ne].peer = e[ne + 1].peer = NULL;
+            e[ne].h = e[ne + 1].h = NULL;
             ne += 2;
+            /* the port's own f16 table, if its line has one and this CPU runs it */
+            {
+                const facet_f16_kernel *h = facet_f16_kernel_find(k->name);
+                const char *hn;
+                if (h && h->f16 && ne < MAX_ENTRIES && facet_set_port(ports[p].name) == 0 &&
+                    strcmp(hn = facet_f16_port_name(), "scalar")) {
+                    e[ne].port = hn;
+                    e[ne].width = ports[p].name;
+                    e[ne].tier = "f16";
+                    e[ne].tab = NULL;
+                    e[ne].peer = NULL;
+                    e[ne].h = h;
+                    e[ne].via = ports[p].name;
+                    ne++;
+                }
+            }
         }
         for (s = 0; peer_sets[s] && ne < MAX_ENTRIES; s++) {
             peer_term_fn fn = peer_term(peer_sets[s], k->name);
@@ -182,16 +237,27 @@ int speed_run(const char *only, int rounds, size_t n, speed_sink sink, void *ctx
             e[ne].tier = "peer";
             e[ne].tab = NULL;
             e[ne].peer = fn;
+            e[ne].h = NULL;
             ne++;
         }
+        /* the active port matters to the f16 entries alone: set when it
+         * changes, not before every call (facet_set_port asks the CPU, and
+         * under a hypervisor each CPUID is a VM exit, after which the next
+         * AVX-512 call measured up to 2.6x slower) */
+        via = NULL;
         for (i = 0; i < ne; i++) {
             e[i].err = max_err(&e[i], ki, out, (const float *const *)in, want, n);
-            e[i].err_peak = two_cos ? max_err(&e[i], ki, out, (const float *const *)pin, pwant, n) : NAN;
+            e[i].err_peak = two_cos && !e[i].h ? max_err(&e[i], ki, out, (const float *const *)pin, pwant, n) : NAN;
+            if (e[i].h)
+                facet_set_port(via = e[i].via);
             run(&e[i], ki, out, (const float *const *)in, n); /* warm-up */
         }
         for (j = 0; j < rounds; j++)
             for (i = 0; i < ne; i++) {
-                uint64_t t0 = cyc_now();
+                uint64_t t0;
+                if (e[i].h && strcmp(e[i].via, via))
+                    facet_set_port(via = e[i].via);
+                t0 = cyc_now();
                 run(&e[i], ki, out, (const float *const *)in, n);
                 e[i].t[j] = (double)(cyc_now() - t0) / (double)n;
             }
@@ -215,9 +281,13 @@ int speed_run(const char *only, int rounds, size_t n, speed_sink sink, void *ctx
         free(in[a]);
         free(pin[a]);
     }
+    for (a = 0; a < FACET_MAX_INPUTS; a++)
+        free(hin_[a]);
+    free(hout_);
     free(out);
     free(want);
     free(pwant);
+    facet_set_port(saved ? saved : "auto");
     return 0;
 }
 

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "facet.h"
+#include "facet/f16.h"
 #include "report.h"
 
 /* the issue's targets (issue 21): brdf_hammon's, and every kernel whose
@@ -132,6 +133,50 @@ static void x86_table(report *r, report_data *D)
         doc_para(r->doc, "No AVX2 or AVX-512 rows: this machine runs neither width (or the measured set has no speed run).");
 }
 
+/* binary16 against both f32 tiers at the same width: the f16 entries of the
+ * same interleaved rounds (a port whose line runs an f16 table of its own) */
+static void f16_table(report *r, report_data *D)
+{
+    size_t ki;
+    int i, rows = 0;
+    doc_para(r->doc, "Binary16 (facet/f16.h) in the same rounds: where a port's line of src/core/ports.def runs an f16 "
+             "table of its own and this CPU runs it, that table's batch (through the dispatcher with the port "
+             "active, set outside the timed call) is one more entry of each kernel's rounds, on the same inputs "
+             "rounded to binary16 (2 bytes a value in and out, where f32 moves 4). Ratios of minima: above 1 the "
+             "f16 batch is faster. Max err f16: facet/f16.h's measure (relative to max(|value|, 2^-14)) at those "
+             "binary16 inputs clamped to the f16 domain, against the bound FACET_ERR_<NAME>_F16.");
+    doc_table(r->doc, 8, "kernel", "f16 table (width)", "f16 min (med)", "f32 min (med)", "f32_fast min (med)",
+              "f32 / f16", "f32_fast / f16", "max err f16 (bound)");
+    for (ki = 0; ki < facet_kernel_count(); ki++) {
+        const char *kn = facet_kernel_at(ki)->name;
+        const facet_f16_kernel *h = facet_f16_kernel_find(kn);
+        for (i = 0; i < D->n_speed; i++) {
+            const data_speed *x = &D->speed[i], *f, *ff;
+            char b[8][96], e[32];
+            const char *cells[8];
+            if (strcmp(x->kernel, kn) || strcmp(x->tier, "f16"))
+                continue;
+            f = data_speed_of(D, kn, x->width, "f32");
+            ff = data_speed_of(D, kn, x->width, "f32_fast");
+            cells[0] = kn;
+            cells[1] = report_fmt(b[1], sizeof b[1], "%s (%s)", x->port, x->width);
+            cells[2] = ticks_cell(b[2], sizeof b[2], x);
+            cells[3] = ticks_cell(b[3], sizeof b[3], f);
+            cells[4] = ticks_cell(b[4], sizeof b[4], ff);
+            cells[5] = ratio_cell(b[5], sizeof b[5], f, x, 0);
+            cells[6] = ratio_cell(b[6], sizeof b[6], ff, x, 0);
+            report_g3(e, x->err);
+            cells[7] = h ? report_fmt(b[7], sizeof b[7], "%s (%.3g)", e, h->err_f16) : e;
+            doc_row(r->doc, cells);
+            rows++;
+        }
+    }
+    doc_table_end(r->doc);
+    if (!rows)
+        doc_para(r->doc, "No f16 entries: no port line this CPU runs has an f16 table of its own (or the measured set "
+                 "has none).");
+}
+
 /* the fast tier against the precise one on a port this machine cannot time */
 static const char *vec_cell(char *b, size_t n, report_data *D, const char *kn, const char *port, const char *measure,
                             double *ratio)
@@ -225,5 +270,6 @@ void section_speed(report *r)
              D->speed_rounds, D->clock.is_cycles ? "the cycle counter" : "rdtsc", D->clock.unit, D->clock.tpc,
              D->clock.unit);
     x86_table(r, D);
+    f16_table(r, D);
     vector_table(r, D);
 }
