@@ -1,7 +1,9 @@
 // chooser.js - the interactive chooser at the top of index.html, inlined by
 // bench/report/sec_choose.c after the data it reads (the JSON element
-// #facet-choose-data: targets, terms, kernels' inputs, and per target and
-// term every candidate [target, term, kernel, format, cost, impl, model]).
+// #facet-choose-data: targets (each with the binary16 table its f16
+// candidates come from, or why it has none), terms, kernels' inputs, and
+// per target and term every candidate [target, term, kernel, format, cost,
+// impl, model]; format f32, f32_fast, fx, fx_fast or f16).
 // No network, no framework.  Without script the page shows the static
 // tables that follow (the same candidates).
 //
@@ -33,9 +35,10 @@
     ];
     var FORMAT = {
         f32: ['f32', 'precise'], f32_fast: ['f32', 'fast'],
-        fx: ['fixed point', 'precise'], fx_fast: ['fixed point', 'fast']
+        fx: ['fixed point', 'precise'], fx_fast: ['fixed point', 'fast'],
+        f16: ['binary16', 'one']
     };
-    var COLOUR = { f32: '#1f6feb', f32_fast: '#8250df', fx: '#bf8700', fx_fast: '#cf222e' };
+    var COLOUR = { f32: '#1f6feb', f32_fast: '#8250df', fx: '#bf8700', fx_fast: '#cf222e', f16: '#0a7ea4' };
     var SVGNS = 'http://www.w3.org/2000/svg';
 
     function el(tag, attrs, text) {
@@ -61,7 +64,7 @@
         var out = [];
         D.cands.forEach(function (a, i) {
             if (a[0] !== t || a[1] !== g) return;
-            var c = { i: i, kernel: a[2], format: a[3], cost: a[4], impl: a[5], model: a[6] };
+            var c = { i: i, kernel: a[2], format: a[3] /*facet-format*/, cost: a[4], impl: a[5], model: a[6] };
             c.err = total(c);
             if (v ? c.kernel === v : D.terms[g].ref && c.model >= 0) out.push(c);
         });
@@ -83,6 +86,12 @@
     // the code line that calls candidate c on target t
     function code_line(c, t) {
         var ins = D.kernels[c.kernel] || [];
+        if (c.format === 'f16')
+            return '#include <facet/f16.h>\n' +
+                '/* binary16 bit patterns (uint16_t, facet_f16): in from floats with ' +
+                'facet_f16_from_f32_batch(h, x, n), out with facet_f32_from_f16_batch(x, h, n) */\n' +
+                'facet_' + c.kernel + '_f16_batch(out, ' + ins.join(', ') + ', n);  /* arrays of n uint16_t; ' +
+                'the dispatcher picks the ' + (D.targets[t].f16port || 'f16') + ' table on such a CPU */';
         var fx = c.format.slice(0, 2) === 'fx';
         var hdr = fx ? '#include <facet/fx.h>' : '#include <facet.h>';
         if (D.targets[t].path === 'call')
@@ -185,6 +194,10 @@
         answer.appendChild(dd);
         entry('ch-cheaper', 'Next cheaper (less accurate)', r.cheaper, t);
         entry('ch-better', 'Next more accurate (costlier)', r.better, t);
+        if (D.targets[t].f16) {
+            answer.appendChild(el('dt', {}, 'Binary16 (f16)'));
+            answer.appendChild(el('dd', { id: 'ch-f16' }, 'not listed on this target: ' + D.targets[t].f16));
+        }
         draw(list, r, need, t, g);
     }
 

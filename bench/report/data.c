@@ -18,6 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "data.h"
+#include "src/core/platform.h"
 
 #define MAX_FIELDS 64
 
@@ -464,3 +465,34 @@ const bench_row *data_best_peer(const report_data *d, const char *kernel, const 
 }
 
 double data_est(const report_data *d, double ticks) { return ticks / d->clock.tpc; }
+
+/* ---- the port list's f16 column ------------------------------------------------ */
+
+const char *data_f16_table(const char *port)
+{
+    static const char *const lines[][2] = {
+#define FACET_PORT(name, guard, cpu, fx, fx_fast, f16, f16_cpu) FACET_PORT_IF(guard, { #name, #f16 },)
+#include "src/core/ports.def"
+#undef FACET_PORT
+    };
+    size_t i;
+    for (i = 0; i < sizeof lines / sizeof lines[0]; i++)
+        if (!strcmp(lines[i][0], port))
+            return lines[i][1];
+    return NULL;
+}
+
+int data_f16_lines(const char **ports, const char **tables, int max)
+{
+    static const char *const lines[][2] = {
+#define FACET_PORT(name, guard, cpu, fx, fx_fast, f16, f16_cpu) { #name, #f16 },
+#include "src/core/ports.def"
+#undef FACET_PORT
+    };
+    int i, n = 0;
+    for (i = 0; i < (int)(sizeof lines / sizeof lines[0]) && n < max; i++, n++) {
+        ports[n] = lines[i][0];
+        tables[n] = lines[i][1];
+    }
+    return n;
+}

@@ -132,7 +132,17 @@ double data_armvec(const report_data *d, const char *format, const char *port, c
  * row of kernel, or NULL */
 const data_rtl *data_rtl_of(const report_data *d, const char *kernel);
 /* arm_vec.status: "PORT ok HOW" or "PORT skipped WHY": the line for port
- * (without the port's name) into b, or why there is none; 1 if ok */
+ * (without the port's name) into b, or why there is none; 1 if ok.  A
+ * port's binary16 table has its own line, port "PORT-f16" ("ok the TABLE
+ * table, HOW"). */
 int data_armvec_status(const report_data *d, const char *port, char *b, size_t n);
+
+/* src/core/ports.def's f16 column: the binary16 table that port's line
+ * runs in this build (the line whose guard holds here), "scalar" where the
+ * line has no f16 code of its own, NULL for a port not compiled in */
+const char *data_f16_table(const char *port);
+/* every line of ports.def, guards ignored: its port and its f16 table,
+ * at most max; returns the count */
+int data_f16_lines(const char **ports, const char **tables, int max);
 
 #endif

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "facet.h"
+#include "facet/f16.h"
 #include "kernel_facts.h"
 #include "choose.h"
 #include "report.h"
@@ -16,7 +17,9 @@ static const char *const chooser_js[] = {
     NULL
 };
 
-static const char *const fmts[] = { "f32", "f32_fast", "fx", "fx_fast" };
+static const char *const fmts[] = { "f32", "f32_fast", "fx", "fx_fast", "f16" };
+#define N_FMTS 5
+#define F16 4 /* fmts[F16] */
 
 /* targets: a port of this machine (measured est. cycles), an Arm vector
  * port (arm_vec.tsv: llvm-mca NEON cycles, Helium instruction counts and
@@ -51,6 +54,49 @@ static double impl_of(const report_data *D, const char *kn, const char *format, 
 }
 
 static double total_of(const choice *c) { return (c->model > 0 ? c->model : 0) + c->impl; }
+
+/* Binary16 on target t: the f16 table its candidates come from (into
+ * table) and "" where it has f16 costs in this data, else why not (into
+ * why).  This machine's ports: the f16 column of the port's line of
+ * src/core/ports.def (scalar: no binary16 arithmetic, the batches would
+ * run the specification emulated in portable C); the Arm vector ports:
+ * their "PORT-f16" line of arm_vec.status (arm_targets.sh finds the table
+ * in the same column); Cortex-M and the RTL port compute no binary16. */
+static const char *f16_of(const report_data *D, int t, char *table, size_t tn, char *why, size_t wn)
+{
+    const choose_target *tg = &targets[t];
+    table[0] = why[0] = 0;
+    if (tg->port) {
+        const char *h = data_f16_table(tg->port);
+        int i, rows = 0;
+        if (!h || !strcmp(h, "scalar")) {
+            snprintf(why, wn, "no binary16 arithmetic (the %s line of src/core/ports.def runs the scalar f16 table: "
+                     "binary16 emulated in portable C, the specification, not a way to compute fast)", tg->port);
+            return why;
+        }
+        snprintf(table, tn, "%s", h);
+        for (i = 0; i < D->n_rows; i++)
+            rows += !strcmp(D->rows[i].format, "f16") && !strcmp(D->rows[i].port, h);
+        if (!rows)
+            snprintf(why, wn, "no %s rows in this run (%s)", h,
+                     facet_f16_port_refusal(h) ? facet_f16_port_refusal(h) : "this CPU does not run it");
+    } else if (tg->vec) {
+        char key[32], b[300];
+        snprintf(key, sizeof key, "%s-f16", tg->vec);
+        if (data_armvec_status(D, key, b, sizeof b))
+            sscanf(b, "ok the %31s table", table);
+        else
+            snprintf(why, wn, "%s", !strncmp(b, "skipped: ", 9) ? b + 9 : b);
+        (void)tn;
+    } else if (tg->cpu) {
+        snprintf(why, wn, "%s", !strcmp(tg->cpu, "cortex-m0") || !tg->f32fpu
+                                    ? "no binary16 arithmetic (no FPU)"
+                                    : "no binary16 arithmetic (the M4's FPv4-SP converts binary16, computes in f32)");
+    } else {
+        snprintf(why, wn, "the RTL port is the fast fixed-point tier");
+    }
+    return why;
+}
 
 /* the RTL target's clock beside a candidate's cost: " at 25.6 MHz (iCE40
  * UP5K)", " (fits no iCE40)"; empty for the other targets */
@@ -117,9 +163,12 @@ int choose_candidates(const report_data *D, int term, int t, choice *c, int max)
     for (k = 0; k < nk; k++) {
         const char *kn = names[k];
         double model = kf_model_of(kn);
-        for (f = 0; f < 4 && n < max; f++) {
+        for (f = 0; f < N_FMTS && n < max; f++) {
             double cost = -1, impl, mhz = -1;
             const char *device = NULL;
+            const facet_f16_kernel *h = f == F16 ? facet_f16_kernel_find(kn) : NULL;
+            if (f == F16 && (!h || !h->f16))
+                continue;
             if (tg->rtl) {
                 /* the RTL is the fast fixed-point tier, bit for bit */
                 const data_rtl *x = f == 3 ? data_rtl_of(D, kn) : NULL;
@@ -130,16 +179,24 @@ int choose_candidates(const report_data *D, int term, int t, choice *c, int max)
                 device = x->device;
                 impl = impl_of(D, kn, fmts[f], "scalar");
             } else if (tg->port) {
-                const bench_row *x = data_row_of(D, kn, fmts[f], tg->port, "batch");
+                /* f16: the binary16 table of the port's line, where it has one */
+                const char *pp = f == F16 ? data_f16_table(tg->port) : tg->port;
+                const bench_row *x;
+                if (!pp || (f == F16 && !strcmp(pp, "scalar")))
+                    continue;
+                x = data_row_of(D, kn, fmts[f], pp, "batch");
                 if (x)
                     cost = data_est(D, x->thr.median);
-                impl = impl_of(D, kn, fmts[f], tg->port);
+                impl = impl_of(D, kn, fmts[f], pp);
             } else if (tg->vec) {
                 cost = data_armvec(D, fmts[f], tg->vec, kn, tg->measure);
-                impl = impl_of(D, kn, fmts[f], "scalar");
+                /* f16: the contract's bound, the largest measured on any f16
+                 * port (neonfp16's under qemu by 40-arm), not the scalar
+                 * specification's: the ports' estimates differ */
+                impl = f == F16 ? h->err_f16 : impl_of(D, kn, fmts[f], "scalar");
             } else {
                 const char *what = f == 0 ? (tg->f32fpu ? "f32fpu" : tg->f32soft ? "f32soft" : NULL)
-                                          : f == 1 ? NULL : f == 2 ? "fx" : "fxfast";
+                                          : f == 1 || f == F16 ? NULL : f == 2 ? "fx" : "fxfast";
                 char key[32];
                 if (!what)
                     continue;
@@ -205,7 +262,7 @@ static const char *target_note(const report_data *D, int t, const char *why_neon
  * inside index.html (what the page's script reads) and as OUTDIR/choose.tsv
  * (what tests/report/chooser_check.js computes the expected answers from,
  * independently of the page):
- *   target T name unit path note      term G ref title
+ *   target T name unit path note f16table f16why    term G ref title
  *   kernel name header input...       cand T G kernel format cost impl model */
 static void choose_export(report *r, const char *why_neon, const char *why_helium, int ok_neon, int ok_helium)
 {
@@ -232,7 +289,9 @@ static void choose_export(report *r, const char *why_neon, const char *why_heliu
         const choose_target *tg = &targets[t];
         const char *note = target_note(D, t, why_neon, why_helium, ok_neon, ok_helium);
         const char *how = tg->cpu ? "call" : "batch";
-        fprintf(tsv, "target\t%d\t%s\t%s\t%s\t%s\n", t, tg->name, tg->unit, how, note);
+        char f16t[32], f16why[400];
+        f16_of(D, t, f16t, sizeof f16t, f16why, sizeof f16why);
+        fprintf(tsv, "target\t%d\t%s\t%s\t%s\t%s\t%s\t%s\n", t, tg->name, tg->unit, how, note, f16t, f16why);
         fputs(t ? ",{\"name\":" : "{\"name\":", js);
         put_str(js, tg->name);
         fputs(",\"unit\":", js);
@@ -243,6 +302,10 @@ static void choose_export(report *r, const char *why_neon, const char *why_heliu
         put_str(js, tg->port ? tg->port : tg->vec ? tg->vec : "scalar");
         fputs(",\"note\":", js);
         put_str(js, note);
+        fputs(",\"f16port\":", js);
+        put_str(js, f16t);
+        fputs(",\"f16\":", js);
+        put_str(js, f16why);
         fputc('}', js);
     }
     fputs("],\"terms\":[", js);
@@ -364,6 +427,30 @@ void section_choose(report *r)
          "it as the shadowing rows do.",
          r->quick ? "a quick" : "a full", D->n_rtl ? D->rtl_path : "no cost file (ports/rtl/cost.tsv missing)",
          why_neon, why_helium);
+    doc_para(r->doc, "Binary16 (f16: facet/f16.h, binary16 bit patterns in and out, alpha, N.L and N.V at or above "
+         "2^-7) is a candidate where the target computes in binary16: its port's line of src/core/ports.def names "
+         "an f16 table of its own. This machine's ports: the f16 batch rows of the same bench run (est. cycles per "
+         "sample, timed like the f32 batch rows; implementation error: max relative where the value is >= 2^-8, "
+         "at the f16 tests' binary16 inputs, against the double oracle at those inputs). NEON: the neonfp16 table "
+         "(ARMv8.2-A FP16 arithmetic) traced like the f32 rows and modelled by the same llvm-mca model with "
+         "-mattr=+fullfp16 (the Cortex-A57 itself is ARMv8.0 and has no FP16 arithmetic; LLVM 14 schedules A72, "
+         "A76 and Neoverse N1, which do, with this model); implementation error there: the contract's bound "
+         "FACET_ERR_<NAME>_F16 (the largest measured on any f16 port, neonfp16's under qemu included). Where a "
+         "target has no f16 rows, the table below says why.");
+    doc_table(r->doc, 2, "target", "binary16 (f16)");
+    for (t = 0; t < choose_target_count(); t++) {
+        char tb[32], wb[400], cell[500];
+        const char *cells[2];
+        f16_of(D, t, tb, sizeof tb, wb, sizeof wb);
+        if (wb[0])
+            snprintf(cell, sizeof cell, "not listed: %s", wb);
+        else
+            snprintf(cell, sizeof cell, "listed: the %s table", tb);
+        cells[0] = targets[t].name;
+        cells[1] = cell;
+        doc_row(r->doc, cells);
+    }
+    doc_table_end(r->doc);
     for (g = 0; g < kf_term_count(); g++) {
         int any = 0;
         for (t = 0; t < choose_target_count(); t++) {

@@ -148,13 +148,16 @@ static void pareto_figure(const report *r, const char *term, const point *p, int
 void section_pareto(report *r)
 {
     report_data *D = r->data;
-    static const char *const formats[] = { "f32", "f32_fast", "fx", "fx_fast" };
+    static const char *const formats[] = { "f32", "f32_fast", "fx", "fx_fast", "f16" };
     int g;
     doc_heading(r->doc, 2, "%s", "Pareto: error vs cycles, per term");
     doc_para(r->doc, "Every facet kernel of each term in every format and tier on every port this machine runs (batch path), "
          "and the peers, by cost (est. cycles per sample) and by the two errors, kept apart. Fixed-point "
          "implementation error: against the oracle at the same Q15 inputs (the input rounding is in the "
-         "image-space section). (The SVG plots are in index.html.)");
+         "image-space section). Binary16 (f16): the rows of f16 tables that compute in binary16 (avx512fp16 here), "
+         "error in facet/f16.h's measure restricted to values >= 2^-8 at the f16 tests' binary16 inputs; the scalar "
+         "f16 table, the specification emulated in portable C, is in the kernels table, not plotted. (The SVG plots "
+         "are in index.html.)");
     for (g = 0; g < kf_term_count(); g++) {
         const char *names[32];
         int nk = kf_term_kernels(g, names, 32), ref = kf_term_has_reference(g);
@@ -163,10 +166,12 @@ void section_pareto(report *r)
         for (s2 = 0; s2 < nk && n < 128; s2++) {
             const char *kn = names[s2];
             double model = ref ? kf_model_of(kn) : -1;
-            for (f = 0; f < 4; f++)
+            for (f = 0; f < 5; f++)
                 for (i = 0; i < D->n_rows && n < 128; i++) {
                     const bench_row *x = &D->rows[i].r;
                     if (strcmp(x->kernel, kn) || strcmp(x->format, formats[f]) || strcmp(x->path, "batch"))
+                        continue;
+                    if (f == 4 && !strcmp(x->port, "scalar")) /* emulated: not a way to compute */
                         continue;
                     pts[n].x = data_est(D, x->thr.median);
                     pts[n].yi = x->err.max_rel_vis;

@@ -8,15 +8,18 @@
 //
 // Cases: for every target, term, variant ("any" where the term has an exact
 // form, else each kernel) and need (8, 10, 12 bits, float), the expected
-// answer; the page is asked for the first case whose answer is fixed point,
-// the first whose answer is f32_fast, the first f32 precise, the first
-// where nothing meets the need, one with a maximum total error typed in,
-// and a term without an exact reference (a variant chosen).  Missing a
-// fixed-point or an f32_fast case fails (the data must have both).  For
-// each: the recommended kernel, format and cost, the next cheaper and the
-// next more accurate, the code line (the function it calls is declared in
-// include/), and the plot (one point per candidate, each named on hover,
-// the recommendation marked).  Returns the list of failures.
+// answer; the page is asked for the case (with the most candidates) whose
+// answer is fixed point, the one whose answer is f32_fast, f32 precise,
+// binary16 (f16), the one where nothing meets the need, one with a maximum
+// total error typed in, and a term without an exact reference (a variant
+// chosen).  Missing a fixed-point, an f32_fast or an f16 case fails (the
+// data must have each).  For each: the recommended kernel, format and
+// cost, the next cheaper and the next more accurate, the code line (the
+// function it calls is declared in include/; an f16 answer's line includes
+// facet/f16.h, says its arrays are uint16_t bit patterns and names the
+// conversion helpers, declared there too), and the plot (one point per
+// candidate, each named on hover, the recommendation marked).  Returns the
+// list of failures.
 'use strict';
 const fs = require('fs');
 const path = require('path');
@@ -95,7 +98,7 @@ async function ask(page, t, g, variant, need, maxerr) {
 }
 
 function declared(fn) {
-    for (const h of ['include/facet.h', 'include/facet/fx.h'])
+    for (const h of ['include/facet.h', 'include/facet/fx.h', 'include/facet/f16.h'])
         if (fs.existsSync(h) && new RegExp('\\b' + fn + '\\(').test(fs.readFileSync(h, 'utf8'))) return true;
     return false;
 }
@@ -121,14 +124,14 @@ exports.run = async function (page, log) {
                 if (!e.rec || e.n < 3) continue;
                 const c = { t, g, v, need, e };
                 const kind = e.none ? 'nothing meets the need' : e.rec.format.slice(0, 2) === 'fx' ? 'fixed point'
-                    : e.rec.format === 'f32_fast' ? 'f32_fast' : 'f32';
+                    : e.rec.format === 'f32_fast' ? 'f32_fast' : e.rec.format === 'f16' ? 'f16' : 'f32';
                 // per kind the case with the most candidates (the first of those)
                 if (!pick[kind] || e.n > pick[kind].e.n) pick[kind] = c;
                 if (!tm.ref && (!pick['a term without a reference'] || e.n > pick['a term without a reference'].e.n))
                     pick['a term without a reference'] = c;
             }
     }));
-    for (const k of ['fixed point', 'f32_fast'])
+    for (const k of ['fixed point', 'f32_fast', 'f16'])
         if (!pick[k]) fails.push('chooser: the data has no case whose answer is ' + k);
     // a maximum error typed in: just above the error of the f32_fast case's
     // next cheaper (so the answer moves to a cheaper one)
@@ -165,7 +168,13 @@ exports.run = async function (page, log) {
         }
         const fn = 'facet_' + e.rec.kernel + '_' + e.rec.format + (d.targets[c.t].path === 'batch' ? '_batch' : '');
         if (got.code.indexOf(fn + '(') < 0) bad('the code line does not call ' + fn + ': ' + got.code);
-        else if (!declared(fn)) bad(fn + ' is not declared in include/facet.h or include/facet/fx.h');
+        else if (!declared(fn)) bad(fn + ' is not declared in include/facet.h, include/facet/fx.h or include/facet/f16.h');
+        if (e.rec.format === 'f16') {
+            if (got.code.indexOf('#include <facet/f16.h>') < 0 || got.code.indexOf('uint16_t') < 0)
+                bad('the f16 code line does not include facet/f16.h or does not say the arrays are uint16_t: ' + got.code);
+            for (const h of ['facet_f16_from_f32_batch', 'facet_f32_from_f16_batch'])
+                if (got.code.indexOf(h + '(') < 0 || !declared(h)) bad('the f16 code line does not name ' + h + ' (declared)');
+        }
         if (got.points !== e.n) bad('the plot has ' + got.points + ' points, the data ' + e.n + ' candidates');
         if (got.named !== got.points) bad((got.points - got.named) + ' points are not named on hover');
         if (got.marks !== 1) bad('the plot marks ' + got.marks + ' recommendations');

@@ -77,11 +77,13 @@ if v=$(check "$work/report.html" --screenshot "$shot" $chooser); then ok; else b
 echo "report-browser: $rep/index.html: $v"
 grep '^chooser: ' "$work/verdict" | sed 's/^/report-browser: /'
 # the interactive chooser must fail its check on a page whose rule is
-# reversed (the most expensive candidate that meets the need) and on one
-# without its script (the static tables alone)
+# reversed (the most expensive candidate that meets the need), on one that
+# takes every binary16 candidate for f32 (so it answers f32 where the data
+# says f16) and on one without its script (the static tables alone)
 sed 's|a\.cost - b\.cost /\*facet-rule\*/|b.cost - a.cost /*facet-rule*/|' "$rep/index.html" > "$work/chooser-wrong.html"
+sed 's|a\[3\] /\*facet-format\*/|(a[3] === "f16" ? "f32" : a[3]) /*facet-format*/|' "$rep/index.html" > "$work/chooser-f16-as-f32.html"
 sed '/^(function () {$/,/^})();$/d' "$rep/index.html" > "$work/chooser-no-script.html"
-for c in wrong no-script; do
+for c in wrong f16-as-f32 no-script; do
     if cmp -s "$rep/index.html" "$work/chooser-$c.html"; then bad "no chooser script to break ($c)"; continue; fi
     # shellcheck disable=SC2086
     v=$(check "$work/chooser-$c.html" $chooser)
