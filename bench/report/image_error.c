@@ -21,6 +21,7 @@
 #include <string.h>
 #include "facet.h"
 #include "facet/fx.h"
+#include "facet/f16.h"
 #include "facet/oracle.h"
 #include "harness/bench.h"
 #include "image_error.h"
@@ -211,9 +212,28 @@ static void compare(img_err *e, const int (*got)[3], const int (*want)[3], long 
     free(de);
 }
 
+/* compare over the lit pixels of the spheres whose alpha is >= amin (the
+ * binary16 rows: its domain starts at 2^-7) */
+static void compare_from(img_err *e, const scene *s, const int (*got)[3], const int (*want)[3], double amin)
+{
+    int (*g)[3] = malloc((size_t)(s->n ? s->n : 1) * sizeof *g), (*w)[3] = malloc((size_t)(s->n ? s->n : 1) * sizeof *w);
+    long i, m = 0;
+    for (i = 0; i < s->n; i++)
+        if (s->a[i] >= amin) {
+            memcpy(g[m], got[i], sizeof g[m]);
+            memcpy(w[m], want[i], sizeof w[m]);
+            m++;
+        }
+    compare(e, (const int (*)[3])g, (const int (*)[3])w, m);
+    free(g);
+    free(w);
+}
+
 /* row `row` of a difference grid: per lit pixel the largest channel's
- * code difference x 32 (white from 8 codes), dark blue where identical */
-static void diff_place(pic *diff, const scene *s, const int (*got)[3], const int (*want)[3], int row)
+ * code difference x 32 (white from 8 codes), dark blue where identical;
+ * spheres with alpha below amin left as background */
+static void diff_place_from(pic *diff, const scene *s, const int (*got)[3], const int (*want)[3], int row,
+                            double amin)
 {
     long i;
     int c;
@@ -222,6 +242,8 @@ static void diff_place(pic *diff, const scene *s, const int (*got)[3], const int
         int y = IE_GAP + row * (IE_S + IE_GAP) + s->py[i], v;
         unsigned char *q = diff->rgb + ((size_t)y * (size_t)diff->w + (size_t)x) * 3;
         double d = 0;
+        if (s->a[i] < amin)
+            continue;
         for (c = 0; c < 3; c++)
             if (fabs((double)got[i][c] - want[i][c]) > d)
                 d = fabs((double)got[i][c] - want[i][c]);
@@ -230,6 +252,11 @@ static void diff_place(pic *diff, const scene *s, const int (*got)[3], const int
         if (v == 0)
             q[0] = q[1] = 0, q[2] = 70; /* lit, no difference: dark blue */
     }
+}
+
+static void diff_place(pic *diff, const scene *s, const int (*got)[3], const int (*want)[3], int row)
+{
+    diff_place_from(diff, s, got, want, row, 0.0);
 }
 
 void img_compare_rgb8(img_err *e, const unsigned char *got, const unsigned char *want, const int *idx, long n)
@@ -262,7 +289,7 @@ int img_error_run(img_err *out, int max, pic *ref, pic *diff)
     int32_t *q[6];
     uint64_t *o64;
     const facet_fx_kernel *fk = facet_fx_kernel_find("brdf_hammon");
-    int n = 0, c, k, rows_max = 16;
+    int n = 0, c, k, rows_max = IMG_ERR_MAX;
     long i;
     size_t pi;
     scene_make(&s);
@@ -334,6 +361,101 @@ int img_error_run(img_err *out, int max, pic *ref, pic *diff)
         compare(&out[n], (const int (*)[3])got, (const int (*)[3])want, s.n);
         diff_place(diff, &s, (const int (*)[3])got, (const int (*)[3])want, n);
         n++;
+    }
+    /* binary16: every f16 table this CPU runs (each once, through the first
+     * port whose line selects it), the dots rounded to binary16 as a caller
+     * must (input rounding included, as for fixed point), against the float
+     * reference, over the spheres with alpha >= 2^-7 (the f16 domain); beside
+     * them the best f32 port and both fixed-point tiers over the same spheres */
+    {
+        const double amin = FACET_F16_ALPHA_MIN;
+        const char *done[8];
+        int nd = 0, d, j;
+        facet_f16 *h[6], *ho = malloc((size_t)s.n * sizeof(facet_f16));
+        for (j = 0; j < 6; j++)
+            h[j] = malloc((size_t)s.n * sizeof(facet_f16));
+        for (pi = 0; pi < facet_port_count() && n < max && n < rows_max; pi++) {
+            int sup = 0, seen = 0;
+            const char *pn = facet_port_at(pi, &sup, NULL), *hn;
+            if (!pn || !sup || facet_set_port(pn) != 0)
+                continue;
+            hn = facet_f16_port_name();
+            for (d = 0; d < nd; d++)
+                seen |= !strcmp(done[d], hn);
+            if (seen || nd == 8)
+                continue;
+            done[nd++] = hn;
+            for (c = 0; c < 3; c++) {
+                const float *in[6] = { s.nl, s.nv, s.lv, s.a, s.f0[c], s.alb[c] };
+                for (j = 0; j < 6; j++)
+                    facet_f16_from_f32_batch(h[j], in[j], (size_t)s.n);
+                facet_brdf_hammon_f16_batch(ho, h[0], h[1], h[2], h[3], h[4], h[5], (size_t)s.n);
+                for (i = 0; i < s.n; i++)
+                    got[i][c] = code_of(facet_f32_from_f16(ho[i]), s.nl[i]);
+            }
+            snprintf(out[n].name, sizeof out[n].name, "f16 %s (binary16 dots, alpha >= 2^-7)", hn);
+            snprintf(out[n].against, sizeof out[n].against, "oracle");
+            compare_from(&out[n], &s, (const int (*)[3])got, (const int (*)[3])want, amin);
+            diff_place_from(diff, &s, (const int (*)[3])got, (const int (*)[3])want, n, amin);
+            n++;
+            /* the best table's arithmetic alone: against the oracle at the same
+             * binary16 inputs (clamped to the f16 domain), as the f32 rows */
+            if (nd == 1 && n < max && n < rows_max) {
+                int (*w16)[3] = malloc((size_t)s.n * sizeof *w16);
+                for (c = 0; c < 3; c++) {
+                    const float *in[6] = { s.nl, s.nv, s.lv, s.a, s.f0[c], s.alb[c] };
+                    for (j = 0; j < 6; j++)
+                        facet_f16_from_f32_batch(h[j], in[j], (size_t)s.n);
+                    for (i = 0; i < s.n; i++) {
+                        double x[6];
+                        for (j = 0; j < 6; j++)
+                            x[j] = facet_f32_from_f16(h[j][i]);
+                        x[0] = x[0] > FACET_F16_COS_MIN ? x[0] : FACET_F16_COS_MIN;
+                        x[1] = x[1] > FACET_F16_COS_MIN ? x[1] : FACET_F16_COS_MIN;
+                        x[3] = x[3] > FACET_F16_ALPHA_MIN ? x[3] : FACET_F16_ALPHA_MIN;
+                        w16[i][c] = code_of(facet_oracle_brdf_hammon(x[0], x[1], x[2], x[3], x[4], x[5]), s.nl[i]);
+                    }
+                }
+                snprintf(out[n].name, sizeof out[n].name, "f16 %s (alpha >= 2^-7)", hn);
+                snprintf(out[n].against, sizeof out[n].against, "oracle, binary16 inputs");
+                compare_from(&out[n], &s, (const int (*)[3])got, (const int (*)[3])w16, amin);
+                diff_place_from(diff, &s, (const int (*)[3])got, (const int (*)[3])w16, n, amin);
+                n++;
+                free(w16);
+            }
+        }
+        facet_set_port("auto");
+        if (nd && n < max && n < rows_max) {
+            for (c = 0; c < 3; c++) {
+                facet_brdf_hammon_f32_batch(o, s.nl, s.nv, s.lv, s.a, s.f0[c], s.alb[c], (size_t)s.n);
+                for (i = 0; i < s.n; i++)
+                    got[i][c] = code_of(o[i], s.nl[i]);
+            }
+            snprintf(out[n].name, sizeof out[n].name, "f32 %s (alpha >= 2^-7)", facet_port_name());
+            snprintf(out[n].against, sizeof out[n].against, "oracle");
+            compare_from(&out[n], &s, (const int (*)[3])got, (const int (*)[3])want, amin);
+            diff_place_from(diff, &s, (const int (*)[3])got, (const int (*)[3])want, n, amin);
+            n++;
+        }
+        for (k = 0; nd && fk && k < 2 && n < max && n < rows_max; k++) {
+            for (c = 0; c < 3; c++) {
+                const float *in[6] = { s.nl, s.nv, s.lv, s.a, s.f0[c], s.alb[c] };
+                for (j = 0; j < 6; j++)
+                    for (i = 0; i < s.n; i++)
+                        q[j][i] = q15_in(in[j][i], fk->lo[j], fk->hi[j]);
+                (k ? fk->fx_fast_batch : fk->fx_batch)(o64, (const int32_t *const *)q, (size_t)s.n);
+                for (i = 0; i < s.n; i++)
+                    got[i][c] = code_of(ldexp((double)o64[i], -fk->out_frac), s.nl[i]);
+            }
+            snprintf(out[n].name, sizeof out[n].name, "%s (Q15 dots, alpha >= 2^-7)", k ? "fx_fast" : "fx");
+            snprintf(out[n].against, sizeof out[n].against, "oracle");
+            compare_from(&out[n], &s, (const int (*)[3])got, (const int (*)[3])want, amin);
+            diff_place_from(diff, &s, (const int (*)[3])got, (const int (*)[3])want, n, amin);
+            n++;
+        }
+        for (j = 0; j < 6; j++)
+            free(h[j]);
+        free(ho);
     }
     if (n < max && n < rows_max) {
         snprintf(out[n].name, sizeof out[n].name, "model: exact-Vis BRDF");

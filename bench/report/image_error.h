@@ -7,6 +7,9 @@
 
 #include "pictures.h"
 
+/* the most rows img_error_run fills */
+#define IMG_ERR_MAX 20
+
 typedef struct img_err {
     char name[48];      /* "f32 avx2", "fx_fast", "model: exact Vis" */
     char against[24];   /* "oracle" or "brdf_hammon oracle" */
@@ -18,9 +21,12 @@ typedef struct img_err {
     long pixels;
 } img_err;
 
-/* Renders the scene (pictures.c's light and view; columns alpha 0.02 ..
+/* Renders the scene (pictures.c's light and view; columns alpha 0.005 ..
  * 1.0, rows a dielectric and a metal) with every candidate this machine
- * runs and fills out[] (at most max entries); returns the count.  *ref gets
+ * runs (f32 both tiers on every port, fixed point both tiers, binary16 on
+ * every f16 table, with the f32 and fixed-point rows over the same
+ * spheres, alpha >= 2^-7) and fills out[] (at most max entries); returns
+ * the count.  *ref gets
  * the oracle render and *diff a grid of the code differences, one row per
  * candidate (x 32, so 8 codes are white), both labelled (pic_axes). */
 int img_error_run(img_err *out, int max, pic *ref, pic *diff);

@@ -5,7 +5,9 @@
 #include <string.h>
 #include <time.h>
 #include "facet.h"
+#include "facet/f16.h"
 #include "image_error.h"
+#include "data.h"
 #include "report.h"
 
 static const char *img_cell(char *b, size_t n, const img_err *e)
@@ -58,13 +60,60 @@ static void section_image_variants(report *r)
 }
 
 /* what a viewer sees: brdf_hammon's formats, tiers and ports in 8-bit sRGB */
+/* the binary16 tables of the port list (src/core/ports.def's f16 column)
+ * that this run has no row for, and why; and the ports without an f16
+ * table of their own */
+static void f16_not_run(char *b, size_t cap, const img_err *e, int n)
+{
+    const char *ports[32], *tabs[32];
+    int nl = data_f16_lines(ports, tabs, 32), i, j, k;
+    size_t len = 0;
+    b[0] = 0;
+    for (i = 0; i < nl; i++) {
+        char name[64];
+        int ran = 0, dup = 0;
+        if (!strcmp(tabs[i], "scalar"))
+            continue;
+        for (j = 0; j < i; j++)
+            dup |= !strcmp(tabs[j], tabs[i]);
+        snprintf(name, sizeof name, "f16 %s ", tabs[i]);
+        for (k = 0; k < n; k++)
+            ran |= !strncmp(e[k].name, name, strlen(name));
+        if (dup || ran)
+            continue;
+        len += (size_t)snprintf(b + len, len < cap ? cap - len : 0, "%s%s (the %s line) not run here: %s", len ? "; " : "",
+                                tabs[i], ports[i],
+                                facet_f16_port_refusal(tabs[i]) ? facet_f16_port_refusal(tabs[i])
+                                : facet_f16_port_supported(tabs[i]) ? "this CPU runs it, but no port line selected it"
+                                : "not in this build (another architecture's port: the 40-arm suite runs it under qemu)");
+    }
+    {
+        int first = 1;
+        for (i = 0; i < nl; i++) {
+            int own = 0, dup = 0;
+            if (strcmp(tabs[i], "scalar") || !strcmp(ports[i], "scalar"))
+                continue;
+            for (j = 0; j < nl; j++)
+                own |= !strcmp(ports[j], ports[i]) && strcmp(tabs[j], "scalar");
+            for (j = 0; j < i; j++)
+                dup |= !strcmp(ports[j], ports[i]);
+            if (own || dup)
+                continue;
+            len += (size_t)snprintf(b + len, len < cap ? cap - len : 0, "%s%s", first ? (len ? "; no f16 table of their own (their f16 batches run the scalar one): " : "no f16 table of their own (their f16 batches run the scalar one): ") : ", ", ports[i]);
+            first = 0;
+        }
+    }
+}
+
 void section_image(report *r)
 {
-    img_err e[16];
+    img_err e[IMG_ERR_MAX];
     pic ref, diff;
     int n, i;
+    char notrun[1024];
     report_say("image-space error: spheres in every format, tier and port ...");
-    n = img_error_run(e, 16, &ref, &diff);
+    n = img_error_run(e, IMG_ERR_MAX, &ref, &diff);
+    f16_not_run(notrun, sizeof notrun, e, n);
     doc_heading(r->doc, 2, "%s", "Image-space error: what a pixel shows");
     doc_para(r->doc, "Lit spheres (two materials x six alpha) rendered with each format, tier and port of brdf_hammon and "
          "compared with the same render from the double oracle, as 8-bit sRGB codes (radiance = BRDF N.L E, so "
@@ -73,7 +122,15 @@ void section_image(report *r)
          "f32 rows: the kernel's arithmetic only (reference at the same float dots). Fixed-point rows: the dots "
          "rounded to Q15 as a caller must, against the float reference, so input rounding is included. The "
          "model row: the exact-Vis BRDF against brdf_hammon, both as oracles (Hammon's Vis approximation in "
-         "codes). Code differences: per pixel the largest of the three channels; p99 over the lit pixels.");
+         "codes). Code differences: per pixel the largest of the three channels; p99 over the lit pixels. "
+         "Binary16 rows (f16, facet_brdf_hammon_f16_batch on each f16 table this CPU runs): the dots, alpha, f0 "
+         "and albedo rounded to binary16 (facet_f16_from_f32_batch) as a caller must, against the same float "
+         "reference, so input rounding is included as for fixed point, over the spheres with alpha at or above "
+         "the f16 floor 2^-7 = %g (the pixel counts say how many); for the best f16 table also its arithmetic "
+         "alone (against the oracle at the same binary16 inputs, clamped to the f16 domain, as the f32 rows); "
+         "beside them the f32 rows of the best port and both "
+         "fixed-point tiers over the same spheres, and in the difference image the spheres below the floor are "
+         "left blank. %s.", (double)FACET_F16_ALPHA_MIN, notrun[0] ? notrun : "Every f16 table of the port list ran");
     doc_table(r->doc, 9, "candidate", "against", "max code diff", "p99 code diff", "mean code diff", "pixels off",
           "mean dE76", "p99 dE76", "max dE76");
     for (i = 0; i < n; i++) {

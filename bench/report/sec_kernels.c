@@ -18,7 +18,13 @@ void section_kernels(report *r)
          "against round-half-up(oracle 2^frac) at those Q15 inputs, the measure of tests/fx/test_fx_accuracy.c "
          "(brdf_hammon where the oracle is >= 16: relative, bound 2^-26); path batch = "
          "facet_KERNEL_fx_batch with facet_set_port(port) active (identical timings across ports mean the "
-         "build routes every port to the same fx loop), path call = facet_KERNEL_fx per sample. Throughput in %s per sample (median), est. cycles per "
+         "build routes every port to the same fx loop), path call = facet_KERNEL_fx per sample. Binary16 rows "
+         "(fmt f16, facet/f16.h): port = the f16 table that ran (avx512fp16 where the CPU has AVX-512 FP16; "
+         "scalar: the specification, binary16 emulated in portable C), facet_KERNEL_f16_batch on binary16 bit "
+         "patterns from the f16 tests' generator (tests/f16/f16_test.h: 1 in 4 cosines and alpha aimed at the "
+         "2^-7 floors); error in facet/f16.h's measure (relative to max(|value|, 2^-14), against the oracle at "
+         "the same binary16 inputs clamped to the f16 domain, saturated at 65504), bound FACET_ERR_NAME_F16 of "
+         "facet/f16.h. Throughput in %s per sample (median), est. cycles per "
          "sample, latency in est. cycles per call. mca: llvm-mca cycles per sample for the port's batch "
          "loop (modelled, not measured). size: bytes of the batch function.", D->clock.unit);
     doc_table(r->doc, 13, "kernel", "fmt", "port", "path", "max err", "argmax input", "mean err", "bound",

@@ -152,8 +152,12 @@ cp $r/report.md $r/report.md.full
   # smith_vis: f32_fast the cheapest, so the chooser check has an f32_fast
   # answer whatever this machine's timings are
   echo "f32 neon smith_vis mca-cortex-a57 9.50"; echo "f32_fast neon smith_vis mca-cortex-a57 7.25"
-  echo "fx_fast neon smith_vis mca-cortex-a57 21.00"; } > $r/arm_vec.tsv
+  echo "fx_fast neon smith_vis mca-cortex-a57 21.00"
+  # binary16: neonfp16's smith_vis the cheapest, so the chooser check has an
+  # f16 answer (at 8 bits) whatever this machine's timings are
+  echo "f16 neon smith_vis mca-cortex-a57 3.00"; echo "f16 neon smith_vis qemu-insn 6.0"; } > $r/arm_vec.tsv
 printf 'neon ok llvm-mca fixture\nhelium skipped: a 60-bench fixture reason\n' > $r/arm_vec.status
+printf 'neon-f16 ok the neonfp16 table, llvm-mca fixture\nhelium-f16 skipped: no f16 port yet (a 60-bench fixture)\n' >> $r/arm_vec.status
 # the RTL port's cost (what make rtl leaves in ports/rtl/cost.tsv): a
 # fixture with one module placed on an UP5K and one that fits no iCE40, so
 # the chooser's hardware row shows both forms of its clock
@@ -197,6 +201,7 @@ for w, h, body in figs:
 PY
 fi
 for row in '| f32 scalar | oracle |' '| fx (Q15 dots) | oracle |' '| fx_fast (Q15 dots) | oracle |' \
+           '| f16 scalar (binary16 dots, alpha >= 2^-7) | oracle |' '| fx_fast (Q15 dots, alpha >= 2^-7) | oracle |' \
            '| model: exact-Vis BRDF | brdf_hammon oracle |'; do
     grep -qF "$row" $r/bench.md && ok || bad "image-space table lacks the row '$row'"
 done
@@ -212,6 +217,18 @@ awk '/^### whole BRDF/ { f = 1 } f && /^\| Helium \(Cortex-M55\) \| 0 \| not cos
 awk '/^### whole BRDF/ { f = 1 } f && /^\| Helium \(Cortex-M55, llvm-mca-16 model\) \| 0 \| not costed: skipped: a 60-bench fixture reason \|/ { g = 1 } END { exit !g }' $r/bench.md &&
     ok || bad "chooser: no row for Helium's modelled cycles stating why it was not costed"
 grep -q 'Helium: skipped: a 60-bench fixture reason' $r/bench.md && ok || bad "chooser: the Helium status is not stated"
+# binary16 in the chooser: NEON lists its f16 table's candidates (the
+# fixture's), AVX2 says it has no binary16 arithmetic, Helium why it has no
+# f16 rows; and the f16 candidate is in the Visibility table's NEON row
+grep -qF '| NEON (aarch64, Cortex-A57 model) | listed: the neonfp16 table |' $r/bench.md && ok ||
+    bad "chooser: the NEON target does not list its f16 table"
+grep -qF '| AVX2 (this machine) | not listed: no binary16 arithmetic (' $r/bench.md && ok ||
+    bad "chooser: the AVX2 target does not say it has no binary16 arithmetic"
+grep -qF '| Helium (Cortex-M55) | not listed: no f16 port yet (a 60-bench fixture) |' $r/bench.md && ok ||
+    bad "chooser: the Helium target does not say why it has no f16 rows"
+awk '/^### visibility/ { f = 1 } f && /^\| NEON \(aarch64, Cortex-A57 model\) \|/ { print; exit }' $r/bench.md |
+    grep -q '<= 3 cyc (llvm-mca A57 model): <b>smith_vis f16</b>' && ok ||
+    bad "chooser: no f16 candidate in the visibility table's NEON row"
 # the chooser's hardware target: gate equivalents and the clock (or that it
 # fits no iCE40), from the RTL cost file; and the hardware section's table
 hw='| Hardware (ports/rtl, one sample per clock) | 1 |'
@@ -281,6 +298,12 @@ for w in avx2 avx512; do
     grep -qE "^\| brdf_hammon \| [0-9]+ / [0-9]+ \| $w \| [0-9.]+ \([0-9.]+\) \| [0-9.]+ \([0-9.]+\) \| [0-9.]+ \([0-9.]+\) \| [0-9.]+ \([0-9.]+\) \| [0-9.]+x \(>= 1\.30x: (met|\*\*missed\*\*)\) \|" $r/bench.md &&
         ok || bad "speed table: no brdf_hammon $w row with the 1.3x target"
 done
+# binary16 in the same rounds, where this CPU runs an f16 table of its own
+# (the bench rows of the same run say whether it does)
+if grep -q '^| brdf_hammon | f16 | avx512fp16 | batch |' $r/bench.md; then
+    grep -qE '^\| brdf_hammon \| avx512fp16 \(avx512\) \| [0-9.]+ \([0-9.]+\) \| [0-9.]+ \([0-9.]+\) \| [0-9.]+ \([0-9.]+\) \| [0-9.]+x \| [0-9.]+x \|' $r/bench.md &&
+        ok || bad "speed table: no brdf_hammon f16 row for avx512fp16"
+fi
 grep -qE '^\| brdf_hammon \| [0-9]+ / [0-9]+ \| 44\.5 / 43\.2 = 1\.03x \| - \| - \| met \|$' $r/bench.md && ok ||
     bad "speed table: no vector-port row for brdf_hammon from the NEON fixture"
 # the measured set: a report rendered from the set the quick run recorded
