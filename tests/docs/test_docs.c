@@ -5,9 +5,12 @@
  *     its contract in include/facet.h, its fixed-point tiers those the fx
  *     table has;
  *   - README.md's "which one" table: each bound is the header constant of
- *     its kernel and tier, each model error, AVX2 cost and Cortex-M4F cost
- *     is the one bench/snapshot/report.md (a committed full report) has,
- *     and the README states the snapshot's date;
+ *     its kernel and tier (f16: FACET_ERR_<NAME>_F16 of facet/f16.h), each
+ *     model error, AVX2 cost, AVX-512 cost (f16: the avx512fp16 table's)
+ *     and Cortex-M4F cost is the one bench/snapshot/report.md (a committed
+ *     full report) has ("-" for f16 on AVX2 and Cortex-M4F, which compute
+ *     no binary16: the snapshot must have no such row), and the README
+ *     states the snapshot's date;
  *   - every "FACET_ERR_<NAME> (2^-k)" in include/facet.h's comments and
  *     every "#define FACET_ERR_<NAME> v /" "* 2^-k" agree with the value;
  *   - every diffuse kernel's model-error lines in include/facet.h are the
@@ -26,6 +29,7 @@
 #include "../lib/harness.h"
 #include "facet.h"
 #include "facet/fx.h"
+#include "facet/f16.h"
 
 /* ---- files ---------------------------------------------------------------- */
 static char *slurp(const char *path)
@@ -379,7 +383,7 @@ static void which_one(void)
     static md_doc readme, snap;
     char *rtext = slurp("README.md"), *stext = slurp("bench/snapshot/report.md"), *rcopy, date[32] = "";
     const char *p;
-    int i, rows = 0;
+    int i, rows = 0, f16_rows = 0;
     CHECK(rtext && stext, "README.md or bench/snapshot/report.md not found (run from the source tree's top)");
     if (!rtext || !stext)
         return;
@@ -397,14 +401,17 @@ static void which_one(void)
         const md_row *r = &readme.row[i];
         int ck = col_of(r, "kernel"), ct = col_of(r, "format, tier"), cm = col_of(r, "model error (max rel., vs)"),
             cb = col_of(r, "implementation bound"), ca = col_of(r, "AVX2 batch, est. cycles/sample"),
+            c5 = col_of(r, "AVX-512 batch (f16: AVX-512 FP16), est. cycles/sample"),
             c4 = col_of(r, "Cortex-M4F, cycles/call");
         const facet_kernel *fk;
         const facet_fx_kernel *xk;
+        const facet_f16_kernel *hk;
         char name[64], want[64];
         const char *tier, *got;
-        if (ck < 0 || ct < 0 || cm < 0 || cb < 0 || ca < 0 || c4 < 0 || r->n != r->n_head)
+        if (ck < 0 || ct < 0 || cm < 0 || cb < 0 || ca < 0 || c5 < 0 || c4 < 0 || r->n != r->n_head)
             continue;
         rows++;
+        f16_rows += !strcmp(r->cell[ct], "f16");
         if (sscanf(r->cell[ck], "`%63[a-z0-9_]`", name) != 1 || !(fk = facet_kernel_find(name))) {
             CHECK(0, "README.md:%d: \"%s\" is not a kernel", r->line, r->cell[ck]);
             continue;
@@ -420,6 +427,8 @@ static void which_one(void)
             snprintf(want, sizeof want, "%g LSB", xk->err_lsb);
         else if (!strcmp(tier, "fx_fast") && xk && xk->fx_fast)
             snprintf(want, sizeof want, "2^%g rel. or 1 LSB", log2(FACET_FX_FAST_TOL_REL));
+        else if (!strcmp(tier, "f16") && (hk = facet_f16_kernel_find(name)) && hk->f16)
+            snprintf(want, sizeof want, "%.3g", hk->err_f16);
         else {
             CHECK(0, "README.md:%d: %s has no tier \"%s\"", r->line, name, tier);
             continue;
@@ -462,14 +471,28 @@ static void which_one(void)
                 CHECK(strcmp(m, "exact"), "README.md:%d: %s is an approximation in the snapshot, not exact", r->line,
                       name);
         }
-        /* AVX2: the snapshot's batch row of the kernel, tier and port */
+        /* AVX2: the snapshot's batch row of the kernel, tier and port; f16:
+         * none (the avx2 line runs the scalar f16 table: no binary16
+         * arithmetic), the cell "-" */
         {
             static const char *const k[] = { "kernel", "fmt", "port", "path" };
             const char *v[4];
             v[0] = name, v[1] = tier, v[2] = "avx2", v[3] = "batch";
             got = md_find(&snap, 4, k, v, "est. cyc/sample");
-            CHECK(got && !strcmp(r->cell[ca], got), "README.md:%d: %s %s: AVX2 \"%s\", bench/snapshot/report.md: \"%s\"",
-                  r->line, name, tier, r->cell[ca], got ? got : "(no row)");
+            if (!strcmp(tier, "f16"))
+                CHECK(!got && !strcmp(r->cell[ca], "-"),
+                      "README.md:%d: %s f16: AVX2 \"%s\" (want \"-\"), bench/snapshot/report.md: \"%s\"", r->line, name,
+                      r->cell[ca], got ? got : "(no row)");
+            else
+                CHECK(got && !strcmp(r->cell[ca], got),
+                      "README.md:%d: %s %s: AVX2 \"%s\", bench/snapshot/report.md: \"%s\"", r->line, name, tier,
+                      r->cell[ca], got ? got : "(no row)");
+            /* AVX-512: the avx512 port's row; f16 the avx512fp16 table's */
+            v[2] = !strcmp(tier, "f16") ? "avx512fp16" : "avx512";
+            got = md_find(&snap, 4, k, v, "est. cyc/sample");
+            CHECK(got && !strcmp(r->cell[c5], got),
+                  "README.md:%d: %s %s: AVX-512 \"%s\", bench/snapshot/report.md (%s): \"%s\"", r->line, name, tier,
+                  r->cell[c5], v[2], got ? got : "(no row)");
         }
         /* Cortex-M4F: f32 on the FPU, fixed point on the integer unit */
         {
@@ -492,6 +515,7 @@ static void which_one(void)
         }
     }
     CHECK(rows >= 8, "README.md: the \"which one\" table has %d rows (want at least 8)", rows);
+    CHECK(f16_rows >= 1, "README.md: the \"which one\" table has no f16 row");
 }
 
 /* ---- facet.h: the 2^-k written beside a bound is its value ---------------- */
