@@ -978,8 +978,17 @@ FACET_INLINE V_ FACET_K(diffuse_hammon_cheap)(V_ nol, V_ nov, V_ lov, V_ alpha, 
  * the precise one for 1 - L.H (times 5 in F), drops the 2^-23 of
  * alpha^2 (s^2 - p) in e and the cap of 0.5 / N.H at 0.5 (a rounding's
  * worth). */
-/* What brdf_hammon computes before f0 and albedo enter: F = f0 + (1 - f0) y5,
- * brdf = (dv2 F + albedo (single + albedo multi)) / pi.  The RGB form shares
+/* What brdf_hammon computes before f0 and albedo enter: F = f0 + (1 - f0) y^5
+ * = y^5 + f0 (1 - y^5) (two non-negative terms), brdf = D Vis F + albedo
+ * (single + albedo multi).  No intermediate is subnormal for an input in
+ * the domain: y^5 reaches 2^-130 at L.V = 1 - 2^-24, so y is carried as
+ * y5s = (2^16 y)^5 = 2^80 y^5 in [2^-50, 2^80] (or 0; the 2^-16 in the
+ * quotient's divisor, exact) and D Vis as dv2 = 2^-80 D Vis (in the 1/pi,
+ * exact; >= 2^-106, as u >= 2^-12): F D Vis = (y5s + f0 (2^80 - y5s)) dv2,
+ * the same roundings as unscaled.  A subnormal result or operand costs
+ * Intel cores a microcode assist per instruction: 1% of the benchmark's
+ * samples at that L.V made the AVX-512 loop 1.45x slower on this tree's
+ * Xeon.  The RGB form shares
  * it across channels; per channel the same operations run in the same order,
  * so each channel equals brdf_hammon to the bit. */
 /* The parts are out-parameters, not a struct: RVV's vector types are
@@ -1024,7 +1033,8 @@ FACET_INLINE V_ X_BRDF_PEAK_(V_ nl, V_ nv, V_ lv, V_ a2, V_ *big_, V_ *small_, V
  * sqrt(2) L.H: the precise quotient in both tiers (F takes its fifth power) */
 FACET_INLINE V_ X_ONE_MINUS_LH_(V_ w, V_ rt)
 {
-    return DIV_X5_(w, FMA_(C_(1.41421354f), rt, C_(2.0f)));
+    /* 2^16 (1 - L.H): the divisor 2 + sqrt(2) rt times 2^-16 */
+    return DIV_X5_(w, FMA_(C_(0x1.6a09e6p-16f), rt, C_(0x1p-15f)));
 }
 
 FACET_INLINE void X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha,
@@ -1040,15 +1050,15 @@ FACET_INLINE void X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha,
     /* sqrt(2) L.H = sqrt(t): the 1/sqrt(2) of L.H = sqrt(t/2) goes into
      * the constants, off the Fresnel tail's chain */
     V_ rt = SQRT_(t);
-    V_ y = X_ONE_MINUS_LH_(w, rt);
+    V_ y = X_ONE_MINUS_LH_(w, rt); /* 2^16 (1 - L.H) */
     V_ y2 = MUL_(y, y);
     /* u = alpha t / (e mh) <= 2^39; alpha t serves the diffuse too */
     V_ at = MUL_(a, t);
     V_ u = DIV_(at, MUL_(e, mh));
     V_ h = X_HALF_INV_NH_(rt, sh);
     *y5_ = MUL_(MUL_(y2, y2), y);
-    /* D Vis = (u mh) (u / pi), u mh = alpha t / e <= 512 */
-    *dv2_ = MUL_(MUL_(u, mh), MUL_(u, C_(FACET_INV_PI_)));
+    /* 2^-80 D Vis = (u mh) (u 2^-80 / pi), u mh = alpha t / e <= 512 */
+    *dv2_ = MUL_(MUL_(u, mh), MUL_(u, C_(0x1.45f306p-82f))); /* 2^-80 / pi */
     /* smooth / pi = p2 Q(big) (1.05/pi) Q(small): symmetric in N.L, N.V */
     *single_ = X_DIFFUSE_SINGLE_(at, t, h, a, MUL_(p2, MUL_(X_POW5_Q_(big, 1.0f), X_POW5_Q_(small, FACET_DIF_K_))),
                                  multi_);
@@ -1057,7 +1067,7 @@ FACET_INLINE void X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha,
 FACET_INLINE V_ X_BRDF_CHANNEL_(V_ y5, V_ dv2, V_ single, V_ multi, V_ f0, V_ albedo)
 {
     V_ f0c = X_UNIT_(f0), alb = X_UNIT_(albedo);
-    V_ f = FMA_(SUB_(C_(1.0f), f0c), y5, f0c);
+    V_ f = FMA_(f0c, SUB_(C_(0x1p80f), y5), y5); /* 2^80 F */
     V_ dif = MUL_(alb, FMA_(alb, multi, single));
     return FMA_(dv2, f, dif);
 }
