@@ -771,6 +771,7 @@ void facet_smith_vis_fit_f32_fast_batch(float *out, const float *nol, const floa
  *   multi  = 0.1159 alpha
  *   result = albedo (single + albedo multi)
  * 0.5 / N.H from the identity above as L.H / (N.L + N.V), L.H = sqrt(t/2)
+ * (t/2 = (1 + L.V)/2 formed directly, raised to ((N.L + N.V)/2)^2)
  * (one root, one quotient: the port's sqrt and div); 1 - (1-x)^5 as
  * x (1 + y + y^2 + y^3 + y^4), y = 1 - x, so it keeps its precision at
  * grazing angles; 1/pi folded into the constants.
@@ -787,8 +788,8 @@ void facet_smith_vis_fit_f32_fast_batch(float *out, const float *nol, const floa
  * 30 M samples) at (0.331329554, 0.331329554, 0.999999702, 0.0131228399, 0.645663142).
  * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_F32_FAST (2^-12.5); a cheaper
  * formulation: 0.5 / N.H without its floor at 1/2 (a rounding's worth).
- * Budget: clamps 10, NaN 5, peak 0, term 32; fast: clamps 10, NaN 5, peak 0, term 31.
- * Cost: 47 ops (1 rsqrt, 1 rcp). */
+ * Budget: clamps 10, NaN 5, peak 0, term 31; fast: clamps 10, NaN 5, peak 0, term 30.
+ * Cost: 46 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, float albedo);
 float facet_diffuse_hammon_f32_fast(float nol, float nov, float lov, float alpha, float albedo);
 void facet_diffuse_hammon_f32_batch(float *out, const float *nol, const float *nov,
@@ -881,8 +882,8 @@ void facet_diffuse_oren_nayar_f32_fast_batch(float *out, const float *nol, const
  * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32_FAST (2^-12.5); measured
  * 2^-13.47 (avx512, 3 M samples), 2^-13.01 with estimates at the
  * architectural bound (avx512).
- * Budget: clamps 10, NaN 5, peak 0, term 37; fast: clamps 10, NaN 5, peak 0, term 36.
- * Cost: 52 ops (1 rsqrt, 1 rcp). */
+ * Budget: clamps 10, NaN 5, peak 0, term 36; fast: clamps 10, NaN 5, peak 0, term 35.
+ * Cost: 51 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_hybrid_f32(float nol, float nov, float lov, float alpha,
                                       float albedo);
 float facet_diffuse_hammon_hybrid_f32_fast(float nol, float nov, float lov, float alpha,
@@ -909,8 +910,8 @@ void facet_diffuse_hammon_hybrid_f32_fast_batch(float *out, const float *nol, co
  * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32_FAST (2^-12.5); measured
  * 2^-13.42 (avx512, 3 M samples), 2^-13.01 with estimates at the
  * architectural bound (avx512).
- * Budget: clamps 10, NaN 5, peak 0, term 20; fast: clamps 10, NaN 5, peak 0, term 19.
- * Cost: 35 ops (1 rsqrt, 1 rcp). */
+ * Budget: clamps 10, NaN 5, peak 0, term 19; fast: clamps 10, NaN 5, peak 0, term 18.
+ * Cost: 34 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_cheap_f32(float nol, float nov, float lov, float alpha,
                                      float albedo);
 float facet_diffuse_hammon_cheap_f32_fast(float nol, float nov, float lov, float alpha,
@@ -952,26 +953,37 @@ void facet_lambert_f32_fast_batch(float *out, const float *albedo, size_t n);
  * (a BRDF value; radiance = brdf * N.L * light).  D is evaluated from the
  * dots without forming N.H (see f32_body.h: the peak for small alpha is
  * ill-conditioned in N.H, so 2 + 2 L.V - (N.L + N.V)^2 is formed exactly,
- * from the exact rounding error of (N.L + N.V)^2 and Sterbenz);
- * one square root and three quotients: alpha t / (e m / 2) serves both D
- * and Vis, (2 - t) / (2 + 2 L.H) gives 1 - L.H without cancellation for the
- * Fresnel tail, L.H / (N.L + N.V) gives 0.5 / N.H for the diffuse; the
- * 1/pi folded into the constants.  Quotients and the root are the port's
+ * in quarter units: (1 + L.V)/2 and N.L + N.V as unevaluated sums
+ * (Fast2Sum) and ((1 + L.V)/2)_hi - ((N.L + N.V)/2)^2 exact before its one
+ * rounding, the port's sqr_sub: an fnma, or the exact error of the square
+ * without FMA); one square root and three quotients: alpha t / (e m) serves
+ * both D and Vis, (1 - t/2) / (1 + L.H) gives 1 - L.H without cancellation
+ * for the Fresnel tail, L.H / (N.L + N.V) gives 0.5 / N.H for the diffuse
+ * (L.H = sqrt(t/2)); the 1/pi folded into the constants; no intermediate
+ * subnormal for an input in the domain ((1 - L.H)^5 and D Vis carried
+ * scaled by 2^80 and 2^-80: a subnormal costs Intel cores a microcode
+ * assist per instruction).  Quotients and the root are the port's
  * div and sqrt: vdivps / vsqrtps on sse2, avx2 and avx512 (the divide unit
  * runs beside the FMA pipes), a times the reciprocal estimate and its steps
- * elsewhere.  The fast tier is a cheaper formulation of the same terms:
- * e without alpha^2 times the rounding error of (N.L + N.V)^2 (2^-23 of
- * e), 0.5 / N.H without its floor at 0.5 (a rounding's worth); the quotients of D Vis and
- * of 0.5 / N.H at the tier's estimate, 1 - L.H at the precise one (F takes
- * its fifth power); on avx512 the root is x times the raw 14-bit rsqrt.
+ * elsewhere.  The fast tier is the same formulation with 0.5 / N.H
+ * without its floor at 0.5 (a rounding's worth) and the quotients of
+ * D Vis and of 0.5 / N.H at the tier's estimate, 1 - L.H at the precise
+ * one (F takes its fifth power); on avx512 the root is x times the raw
+ * 14-bit rsqrt.  No cheaper formulation within 2^-12 was found: of its 77
+ * operations 12 are clamps, 5 the NaN rule and 22 the exact peak (what
+ * keeps alpha = 2^-10 at the peak inside the bound; the fast-math shader
+ * peer, without it, is off by 0.4 to 0.66 there), and the terms' 38 are
+ * the formula's own (bench/README.md, the operation budget).
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, f0, albedo.
- * Error: <= FACET_ERR_BRDF_HAMMON_F32 (2^-18.5); measured max 2^-19.46 (scalar; 2^-19.92
- * avx2 and avx512; 300 k samples) at (0.69504112, 0.694875121, -0.0340664648, 0.00720804883, 0, 0.568871677).
+ * Error: <= FACET_ERR_BRDF_HAMMON_F32 (2^-18.5); measured max 2^-19.78 (scalar and sse2;
+ * 2^-19.92 avx2 and avx512; 300 k samples) at (0.129665449, 0.706130326, 0.417927355, 0.390637547,
+ * 2.52674479e-11, 0).
  * f32_fast: <= FACET_ERR_BRDF_HAMMON_F32_FAST (2^-12.5); the Fresnel tail's
  * 1 - L.H, raised to the fifth power, is refined fully in both tiers;
- * measured worst 2^-13.15 (avx512, 300 k samples).
- * Budget: clamps 12, NaN 5, peak 27, term 41; fast: clamps 12, NaN 5, peak 26, term 40.
- * Cost: 85 ops (1 rsqrt, 3 rcp). */
+ * measured worst 2^-12.99 (avx512, 300 k samples), 2^-12.69 with estimates
+ * at the architectural bound (avx512, 30 k samples).
+ * Budget: clamps 12, NaN 5, peak 22, term 39; fast: clamps 12, NaN 5, peak 22, term 38.
+ * Cost: 78 ops (1 rsqrt, 3 rcp). */
 float facet_brdf_hammon_f32(float nol, float nov, float lov, float alpha,
                             float f0, float albedo);
 float facet_brdf_hammon_f32_fast(float nol, float nov, float lov, float alpha,
