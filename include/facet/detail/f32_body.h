@@ -1036,7 +1036,7 @@ FACET_INLINE V_ X_BRDF_PEAK_(V_ nl, V_ nv, V_ lv, V_ a2, V_ *big_, V_ *small_, V
  * it, the divisor times 2^-16 (exact) */
 FACET_INLINE V_ X_ONE_MINUS_LH_(V_ w, V_ lh)
 {
-    return DIV_X5_(w, FMA_(C_(0x1p-16f), lh, C_(0x1p-16f)));
+    return DIV_X5_(w, FMA_(C_(1.52587891e-05f), lh, C_(1.52587891e-05f)));
 }
 
 FACET_INLINE void X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha,
@@ -1059,7 +1059,7 @@ FACET_INLINE void X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha,
     V_ h = X_HALF_INV_NH_(lh, sh);
     *y5_ = MUL_(MUL_(y2, y2), y);
     /* 2^-80 D Vis = (u mh) (u 2^-82 / pi), u mh <= 1024 */
-    *dv2_ = MUL_(MUL_(u, mh), MUL_(u, C_(0x1.45f306p-84f))); /* 2^-82 / pi */
+    *dv2_ = MUL_(MUL_(u, mh), MUL_(u, C_(6.5824939e-26f))); /* 2^-82 / pi, the float 1/pi times 2^-82 */
     /* smooth / pi = p2 Q(big) (1.05/pi) Q(small): symmetric in N.L, N.V */
     *single_ = X_DIFFUSE_SINGLE_(at, tau, h, a,
                                  MUL_(p2, MUL_(X_POW5_Q_(big, 1.0f), X_POW5_Q_(small, FACET_DIF_K_))), multi_);
@@ -1068,7 +1068,7 @@ FACET_INLINE void X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha,
 FACET_INLINE V_ X_BRDF_CHANNEL_(V_ y5, V_ dv2, V_ single, V_ multi, V_ f0, V_ albedo)
 {
     V_ f0c = X_UNIT_(f0), alb = X_UNIT_(albedo);
-    V_ f = FMA_(f0c, SUB_(C_(0x1p80f), y5), y5); /* 2^80 F */
+    V_ f = FMA_(f0c, SUB_(C_(1.20892582e+24f), y5), y5); /* 2^80 F (2^80 exactly) */
     V_ dif = MUL_(alb, FMA_(alb, multi, single));
     return FMA_(dv2, f, dif);
 }
