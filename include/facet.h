@@ -785,9 +785,20 @@ void facet_smith_vis_fit_f32_fast_batch(float *out, const float *nol, const floa
  * (bench/microsurface/hammon_refit.md): none lowers both the max and the
  * mean, so no refitted variant is offered.
  * Error: <= FACET_ERR_DIFFUSE_HAMMON_F32 (2^-20); measured max 2^-20.59 (worst port,
- * 30 M samples) at (0.331329554, 0.331329554, 0.999999702, 0.0131228399, 0.645663142).
+ * 30 M samples) at (0.331329554, 0.331329554, 0.999999702, 0.0131228399, 0.645663142)
+ * before L.H = sqrt(t/2) was formed directly (2026-12-07); since, 2^-20.77
+ * (sse2 and scalar, 3 M samples) at (0.478820592, 0.478820592, -0.541461647,
+ * 0.00103950372, 1).
  * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_F32_FAST (2^-12.5); a cheaper
- * formulation: 0.5 / N.H without its floor at 1/2 (a rounding's worth).
+ * formulation: 0.5 / N.H without its floor at 1/2 (a rounding's worth);
+ * measured 2^-14.06 (avx512, 3 M samples), 2^-14.01 with estimates at the
+ * architectural bound (avx512).  No cheaper one within the bound was
+ * found: the smooth term's two quartics are the formula itself (a cubic in
+ * their place is 2^-7 off), and 0.5 / N.H needs its root and quotient to
+ * about 2^-13; so the tiers differ by 1 of 46 operations and the port's
+ * estimates (on x86: the avx512 root as x rsqrt14, the quotient vdivps in
+ * both), measured 1.02-1.07x (bench/README.md), not 1.15x.  The same holds
+ * for the hybrid and cheap variants below.
  * Budget: clamps 10, NaN 5, peak 0, term 31; fast: clamps 10, NaN 5, peak 0, term 30.
  * Cost: 46 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, float albedo);
@@ -877,10 +888,10 @@ void facet_diffuse_oren_nayar_f32_fast_batch(float *out, const float *nol, const
  * N.L, N.V in [0.02, 1]: max 5952.7% (+- 69.7%) at alpha 0.015625, N.L 0.02, N.V 0.02,
  * phi 180, albedo 0.25, mean 51.8% (noise 0.25%); N.L, N.V in [0.2, 1]: max 280.8% (+- 0.84%),
  * mean 15.6%; absolute, in units of albedo / pi: max 773.9% (+- 1.68%).
- * Error: <= FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32 (2^-20.5); measured max 2^-20.88 (worst port,
- * 3 M samples) at (0.000297121675, 2.25166241e-06, 0.855512679, 0.0379198343, 0.816826582).
+ * Error: <= FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32 (2^-20.5); measured max 2^-20.80 (every port,
+ * 3 M samples) at (0.0105562946, 0.0105562946, -0.999777138, 0.00521175098, 0.465762138).
  * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32_FAST (2^-12.5); measured
- * 2^-13.47 (avx512, 3 M samples), 2^-13.01 with estimates at the
+ * 2^-14.06 (avx512, 3 M samples), 2^-14.01 with estimates at the
  * architectural bound (avx512).
  * Budget: clamps 10, NaN 5, peak 0, term 36; fast: clamps 10, NaN 5, peak 0, term 35.
  * Cost: 51 ops (1 rsqrt, 1 rcp). */
@@ -905,10 +916,10 @@ void facet_diffuse_hammon_hybrid_f32_fast_batch(float *out, const float *nol, co
  * N.L, N.V in [0.02, 1]: max 19984.4% (+- 231.4%) at alpha 0.015625, N.L 0.02, N.V 0.02,
  * phi 180, albedo 0.25, mean 115.0% (noise 0.56%); N.L, N.V in [0.2, 1]: max 426.6% (+- 1.17%),
  * mean 21.2%; absolute, in units of albedo / pi: max 738.9% (+- 1.68%).
- * Error: <= FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32 (2^-20.5); measured max 2^-20.86 (worst port,
- * 3 M samples) at (9.97556413e-07, 2.99169169e-05, -0.263197154, 0.189148799, 0.589178443).
+ * Error: <= FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32 (2^-20.5); measured max 2^-21.09 (sse2 and
+ * scalar, 3 M samples) at (0.0100785885, 0.000585997652, 0.977368951, 0.722906172, 0.763459802).
  * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32_FAST (2^-12.5); measured
- * 2^-13.42 (avx512, 3 M samples), 2^-13.01 with estimates at the
+ * 2^-14.09 (avx512, 3 M samples), 2^-14.01 with estimates at the
  * architectural bound (avx512).
  * Budget: clamps 10, NaN 5, peak 0, term 19; fast: clamps 10, NaN 5, peak 0, term 18.
  * Cost: 34 ops (1 rsqrt, 1 rcp). */
