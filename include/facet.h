@@ -771,6 +771,7 @@ void facet_smith_vis_fit_f32_fast_batch(float *out, const float *nol, const floa
  *   multi  = 0.1159 alpha
  *   result = albedo (single + albedo multi)
  * 0.5 / N.H from the identity above as L.H / (N.L + N.V), L.H = sqrt(t/2)
+ * (t/2 = (1 + L.V)/2 formed directly, raised to ((N.L + N.V)/2)^2)
  * (one root, one quotient: the port's sqrt and div); 1 - (1-x)^5 as
  * x (1 + y + y^2 + y^3 + y^4), y = 1 - x, so it keeps its precision at
  * grazing angles; 1/pi folded into the constants.
@@ -784,11 +785,22 @@ void facet_smith_vis_fit_f32_fast_batch(float *out, const float *nol, const floa
  * (bench/microsurface/hammon_refit.md): none lowers both the max and the
  * mean, so no refitted variant is offered.
  * Error: <= FACET_ERR_DIFFUSE_HAMMON_F32 (2^-20); measured max 2^-20.59 (worst port,
- * 30 M samples) at (0.331329554, 0.331329554, 0.999999702, 0.0131228399, 0.645663142).
+ * 30 M samples) at (0.331329554, 0.331329554, 0.999999702, 0.0131228399, 0.645663142)
+ * before L.H = sqrt(t/2) was formed directly (2026-12-07); since, 2^-20.77
+ * (sse2 and scalar, 3 M samples) at (0.478820592, 0.478820592, -0.541461647,
+ * 0.00103950372, 1).
  * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_F32_FAST (2^-12.5); a cheaper
- * formulation: 0.5 / N.H without its floor at 1/2 (a rounding's worth).
- * Budget: clamps 10, NaN 5, peak 0, term 32; fast: clamps 10, NaN 5, peak 0, term 31.
- * Cost: 47 ops (1 rsqrt, 1 rcp). */
+ * formulation: 0.5 / N.H without its floor at 1/2 (a rounding's worth);
+ * measured 2^-14.06 (avx512, 3 M samples), 2^-14.01 with estimates at the
+ * architectural bound (avx512).  No cheaper one within the bound was
+ * found: the smooth term's two quartics are the formula itself (a cubic in
+ * their place is 2^-7 off), and 0.5 / N.H needs its root and quotient to
+ * about 2^-13; so the tiers differ by 1 of 46 operations and the port's
+ * estimates (on x86: the avx512 root as x rsqrt14, the quotient vdivps in
+ * both), measured 1.02-1.07x (bench/README.md), not 1.15x.  The same holds
+ * for the hybrid and cheap variants below.
+ * Budget: clamps 10, NaN 5, peak 0, term 31; fast: clamps 10, NaN 5, peak 0, term 30.
+ * Cost: 46 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_f32(float nol, float nov, float lov, float alpha, float albedo);
 float facet_diffuse_hammon_f32_fast(float nol, float nov, float lov, float alpha, float albedo);
 void facet_diffuse_hammon_f32_batch(float *out, const float *nol, const float *nov,
@@ -876,13 +888,13 @@ void facet_diffuse_oren_nayar_f32_fast_batch(float *out, const float *nol, const
  * N.L, N.V in [0.02, 1]: max 5952.7% (+- 69.7%) at alpha 0.015625, N.L 0.02, N.V 0.02,
  * phi 180, albedo 0.25, mean 51.8% (noise 0.25%); N.L, N.V in [0.2, 1]: max 280.8% (+- 0.84%),
  * mean 15.6%; absolute, in units of albedo / pi: max 773.9% (+- 1.68%).
- * Error: <= FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32 (2^-20.5); measured max 2^-20.88 (worst port,
- * 3 M samples) at (0.000297121675, 2.25166241e-06, 0.855512679, 0.0379198343, 0.816826582).
+ * Error: <= FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32 (2^-20.5); measured max 2^-20.80 (every port,
+ * 3 M samples) at (0.0105562946, 0.0105562946, -0.999777138, 0.00521175098, 0.465762138).
  * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_HYBRID_F32_FAST (2^-12.5); measured
- * 2^-13.47 (avx512, 3 M samples), 2^-13.01 with estimates at the
+ * 2^-14.06 (avx512, 3 M samples), 2^-14.01 with estimates at the
  * architectural bound (avx512).
- * Budget: clamps 10, NaN 5, peak 0, term 37; fast: clamps 10, NaN 5, peak 0, term 36.
- * Cost: 52 ops (1 rsqrt, 1 rcp). */
+ * Budget: clamps 10, NaN 5, peak 0, term 36; fast: clamps 10, NaN 5, peak 0, term 35.
+ * Cost: 51 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_hybrid_f32(float nol, float nov, float lov, float alpha,
                                       float albedo);
 float facet_diffuse_hammon_hybrid_f32_fast(float nol, float nov, float lov, float alpha,
@@ -904,13 +916,13 @@ void facet_diffuse_hammon_hybrid_f32_fast_batch(float *out, const float *nol, co
  * N.L, N.V in [0.02, 1]: max 19984.4% (+- 231.4%) at alpha 0.015625, N.L 0.02, N.V 0.02,
  * phi 180, albedo 0.25, mean 115.0% (noise 0.56%); N.L, N.V in [0.2, 1]: max 426.6% (+- 1.17%),
  * mean 21.2%; absolute, in units of albedo / pi: max 738.9% (+- 1.68%).
- * Error: <= FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32 (2^-20.5); measured max 2^-20.86 (worst port,
- * 3 M samples) at (9.97556413e-07, 2.99169169e-05, -0.263197154, 0.189148799, 0.589178443).
+ * Error: <= FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32 (2^-20.5); measured max 2^-21.09 (sse2 and
+ * scalar, 3 M samples) at (0.0100785885, 0.000585997652, 0.977368951, 0.722906172, 0.763459802).
  * f32_fast: <= FACET_ERR_DIFFUSE_HAMMON_CHEAP_F32_FAST (2^-12.5); measured
- * 2^-13.42 (avx512, 3 M samples), 2^-13.01 with estimates at the
+ * 2^-14.09 (avx512, 3 M samples), 2^-14.01 with estimates at the
  * architectural bound (avx512).
- * Budget: clamps 10, NaN 5, peak 0, term 20; fast: clamps 10, NaN 5, peak 0, term 19.
- * Cost: 35 ops (1 rsqrt, 1 rcp). */
+ * Budget: clamps 10, NaN 5, peak 0, term 19; fast: clamps 10, NaN 5, peak 0, term 18.
+ * Cost: 34 ops (1 rsqrt, 1 rcp). */
 float facet_diffuse_hammon_cheap_f32(float nol, float nov, float lov, float alpha,
                                      float albedo);
 float facet_diffuse_hammon_cheap_f32_fast(float nol, float nov, float lov, float alpha,
@@ -952,26 +964,37 @@ void facet_lambert_f32_fast_batch(float *out, const float *albedo, size_t n);
  * (a BRDF value; radiance = brdf * N.L * light).  D is evaluated from the
  * dots without forming N.H (see f32_body.h: the peak for small alpha is
  * ill-conditioned in N.H, so 2 + 2 L.V - (N.L + N.V)^2 is formed exactly,
- * from the exact rounding error of (N.L + N.V)^2 and Sterbenz);
- * one square root and three quotients: alpha t / (e m / 2) serves both D
- * and Vis, (2 - t) / (2 + 2 L.H) gives 1 - L.H without cancellation for the
- * Fresnel tail, L.H / (N.L + N.V) gives 0.5 / N.H for the diffuse; the
- * 1/pi folded into the constants.  Quotients and the root are the port's
+ * in quarter units: (1 + L.V)/2 and N.L + N.V as unevaluated sums
+ * (Fast2Sum) and ((1 + L.V)/2)_hi - ((N.L + N.V)/2)^2 exact before its one
+ * rounding, the port's sqr_sub: an fnma, or the exact error of the square
+ * without FMA); one square root and three quotients: alpha t / (e m) serves
+ * both D and Vis, (1 - t/2) / (1 + L.H) gives 1 - L.H without cancellation
+ * for the Fresnel tail, L.H / (N.L + N.V) gives 0.5 / N.H for the diffuse
+ * (L.H = sqrt(t/2)); the 1/pi folded into the constants; no intermediate
+ * subnormal for an input in the domain ((1 - L.H)^5 and D Vis carried
+ * scaled by 2^80 and 2^-80: a subnormal costs Intel cores a microcode
+ * assist per instruction).  Quotients and the root are the port's
  * div and sqrt: vdivps / vsqrtps on sse2, avx2 and avx512 (the divide unit
  * runs beside the FMA pipes), a times the reciprocal estimate and its steps
- * elsewhere.  The fast tier is a cheaper formulation of the same terms:
- * e without alpha^2 times the rounding error of (N.L + N.V)^2 (2^-23 of
- * e), 0.5 / N.H without its floor at 0.5 (a rounding's worth); the quotients of D Vis and
- * of 0.5 / N.H at the tier's estimate, 1 - L.H at the precise one (F takes
- * its fifth power); on avx512 the root is x times the raw 14-bit rsqrt.
+ * elsewhere.  The fast tier is the same formulation with 0.5 / N.H
+ * without its floor at 0.5 (a rounding's worth) and the quotients of
+ * D Vis and of 0.5 / N.H at the tier's estimate, 1 - L.H at the precise
+ * one (F takes its fifth power); on avx512 the root is x times the raw
+ * 14-bit rsqrt.  No cheaper formulation within 2^-12 was found: of its 77
+ * operations 12 are clamps, 5 the NaN rule and 22 the exact peak (what
+ * keeps alpha = 2^-10 at the peak inside the bound; the fast-math shader
+ * peer, without it, is off by 0.4 to 0.66 there), and the terms' 38 are
+ * the formula's own (bench/README.md, the operation budget).
  * Domain: N.L, N.V in [FACET_COS_MIN, 1], L.V in [-1, 1], alpha, f0, albedo.
- * Error: <= FACET_ERR_BRDF_HAMMON_F32 (2^-18.5); measured max 2^-19.46 (scalar; 2^-19.92
- * avx2 and avx512; 300 k samples) at (0.69504112, 0.694875121, -0.0340664648, 0.00720804883, 0, 0.568871677).
+ * Error: <= FACET_ERR_BRDF_HAMMON_F32 (2^-18.5); measured max 2^-19.78 (scalar and sse2;
+ * 2^-19.92 avx2 and avx512; 300 k samples) at (0.129665449, 0.706130326, 0.417927355, 0.390637547,
+ * 2.52674479e-11, 0).
  * f32_fast: <= FACET_ERR_BRDF_HAMMON_F32_FAST (2^-12.5); the Fresnel tail's
  * 1 - L.H, raised to the fifth power, is refined fully in both tiers;
- * measured worst 2^-13.15 (avx512, 300 k samples).
- * Budget: clamps 12, NaN 5, peak 27, term 41; fast: clamps 12, NaN 5, peak 26, term 40.
- * Cost: 85 ops (1 rsqrt, 3 rcp). */
+ * measured worst 2^-12.99 (avx512, 300 k samples), 2^-12.69 with estimates
+ * at the architectural bound (avx512, 30 k samples).
+ * Budget: clamps 12, NaN 5, peak 22, term 39; fast: clamps 12, NaN 5, peak 22, term 38.
+ * Cost: 78 ops (1 rsqrt, 3 rcp). */
 float facet_brdf_hammon_f32(float nol, float nov, float lov, float alpha,
                             float f0, float albedo);
 float facet_brdf_hammon_f32_fast(float nol, float nov, float lov, float alpha,

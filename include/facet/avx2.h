@@ -81,6 +81,8 @@ FACET_INLINE __m256 facet_avx2_rsqrt(__m256 x)
     return _mm256_fmadd_ps(_mm256_mul_ps(e, p), y, y);
 }
 FACET_INLINE __m256 facet_avx2_sqr_err(__m256 a, __m256 p) { return _mm256_fmsub_ps(a, a, p); }
+/* c - a*a, one rounding of the exact value (the kernels' exact peak) */
+FACET_INLINE __m256 facet_avx2_sqr_sub(__m256 a, __m256 c) { return _mm256_fnmadd_ps(a, a, c); }
 
 /* The fast tier (f32_fast): the estimates and one Newton step each
  * (r + r e; y + y e / 2), leaving about 1.5 e^2 < 2^-21 of an estimate at

@@ -76,6 +76,8 @@ FACET_INLINE __m512 facet_avx512_rsqrt(__m512 x)
     return _mm512_fmadd_ps(_mm512_mul_ps(_mm512_set1_ps(0.5f), y), e, y);
 }
 FACET_INLINE __m512 facet_avx512_sqr_err(__m512 a, __m512 p) { return _mm512_fmsub_ps(a, a, p); }
+/* c - a*a, one rounding of the exact value (the kernels' exact peak) */
+FACET_INLINE __m512 facet_avx512_sqr_sub(__m512 a, __m512 c) { return _mm512_fnmadd_ps(a, a, c); }
 
 /* The fast tier (f32_fast): the 14-bit estimates as they are (relative
  * error < 2^-14 each). */

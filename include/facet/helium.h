@@ -101,6 +101,8 @@ FACET_INLINE float32x4_t facet_helium_sqr_err(float32x4_t a, float32x4_t p)
 {
     return vfmsq_f32(vnegq_f32(p), a, vnegq_f32(a)); /* a*a - p, one rounding */
 }
+/* c - a*a, one rounding of the exact value (the kernels' exact peak) */
+FACET_INLINE float32x4_t facet_helium_sqr_sub(float32x4_t a, float32x4_t c) { return vfmsq_f32(c, a, a); }
 /* The fast tier (f32_fast): two steps each. */
 FACET_INLINE float32x4_t facet_helium_rcp_fast(float32x4_t x) { return facet_helium_rcp_steps_(x, 2); }
 FACET_INLINE float32x4_t facet_helium_rsqrt_fast(float32x4_t x) { return facet_helium_rsqrt_steps_(x, 2); }

@@ -75,6 +75,8 @@ FACET_INLINE float32x4_t facet_neon_sqr_err(float32x4_t a, float32x4_t p)
 {
     return vfmsq_f32(vnegq_f32(p), a, vnegq_f32(a)); /* a*a - p, one rounding */
 }
+/* c - a*a, one rounding of the exact value (the kernels' exact peak) */
+FACET_INLINE float32x4_t facet_neon_sqr_sub(float32x4_t a, float32x4_t c) { return vfmsq_f32(c, a, a); }
 
 /* The fast tier (f32_fast): two steps instead of three (2^-8 -> 2^-16 ->
  * 2^-32 before rounding; the second fused). */

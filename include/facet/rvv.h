@@ -167,6 +167,11 @@ FACET_INLINE facet_rvv_v facet_rvv_sqr_err(facet_rvv_v a, facet_rvv_v p)
 {
     return FACET_RVV_F_(vfmsac_vv)(p, a, a, FACET_RVV_VL_);
 }
+/* c - a*a, one rounding of the exact value (the kernels' exact peak) */
+FACET_INLINE facet_rvv_v facet_rvv_sqr_sub(facet_rvv_v a, facet_rvv_v c)
+{
+    return FACET_RVV_F_(vfnmsac_vv)(c, a, a, FACET_RVV_VL_);
+}
 
 /* Exponent-bit ops (exp2/log2 of f32_body.h and the samplers):
  *   exp2i(k)    2^k for an integral-valued k in [-126, 127] (exponent bits)

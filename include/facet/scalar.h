@@ -198,6 +198,19 @@ FACET_INLINE float facet_scalar_sqr_err(float a, float p)
 #endif
 }
 
+/* c - a*a: one rounding of the exact value with FMA; without, (c - p) -
+ * (a*a - p), p = a*a rounded and its exact error, one rounding where c - p
+ * cancels (Sterbenz, exact) and two elsewhere (the kernels' exact peak). */
+FACET_INLINE float facet_scalar_sqr_sub(float a, float c)
+{
+#if FACET_SCALAR_HAS_FMA
+    return __builtin_fmaf(-a, a, c);
+#else
+    float p = a * a;
+    return (c - p) - facet_scalar_sqr_err(a, p);
+#endif
+}
+
 
 /* Exponent-bit ops (exp2/log2 of f32_body.h and the samplers):
  *   exp2i(k)    2^k for an integral-valued k in [-126, 127] (exponent bits)

@@ -56,6 +56,15 @@ FACET_INLINE __m128 facet_sse2_sqr_err(__m128 a, __m128 p)
     t = _mm_add_ps(t, _mm_mul_ps(_mm_add_ps(hi, hi), lo));
     return _mm_add_ps(t, _mm_mul_ps(lo, lo));
 }
+/* c - a*a without an FMA: (c - p) - (a*a - p), p = a*a rounded and its
+ * exact error; c - p is exact where it cancels (Sterbenz), so the result is
+ * one rounding of the exact value there and two elsewhere (the kernels'
+ * exact peak) */
+FACET_INLINE __m128 facet_sse2_sqr_sub(__m128 a, __m128 c)
+{
+    __m128 p = _mm_mul_ps(a, a);
+    return _mm_sub_ps(_mm_sub_ps(c, p), facet_sse2_sqr_err(a, p));
+}
 
 /* The fast tier (f32_fast): rcpps / rsqrtps (relative error <= 1.5 * 2^-12)
  * and one Newton step each, leaving about 1.5 (1.5 * 2^-12)^2 < 2^-21 plus

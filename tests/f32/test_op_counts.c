@@ -141,12 +141,14 @@ int main(int argc, char **argv)
     /* the exact peak, counted apart (only brdf_hammon has it) */
     for (i = 0; i < n; i++)
         if (!strcmp(c[i].name, "brdf_hammon")) {
-            float big, small, sh, t, w;
+            float big, small, sh, hs, tau, w;
             opc_reset();
-            (void)count_x_one_minus_lh(count_x_brdf_peak(0.5f, 0.5f, 0.5f, 0.25f, &big, &small, &sh, &t, &w), 0.5f);
+            (void)count_x_one_minus_lh(count_x_brdf_peak(0.5f, 0.5f, 0.5f, 0.25f, &big, &small, &sh, &hs, &tau, &w),
+                                       0.5f);
             c[i].t[0].peak = n_ops;
             opc_reset();
-            (void)countf_x_one_minus_lh(countf_x_brdf_peak(0.5f, 0.5f, 0.5f, 0.25f, &big, &small, &sh, &t, &w), 0.5f);
+            (void)countf_x_one_minus_lh(countf_x_brdf_peak(0.5f, 0.5f, 0.5f, 0.25f, &big, &small, &sh, &hs, &tau, &w),
+                                        0.5f);
             c[i].t[1].peak = n_ops;
         }
     opc_reset();

@@ -6,7 +6,7 @@
  * test_op_counts.c, tests/sample/test_sample_prims.c): count_<name> is the
  * precise tier and the samplers, countf_<name> the fast tier (f32_fast).
  * Counting rules, as a port with FMA executes them:
- * add, sub, mul, fma, fnma, min, max, sqr_err = 1; clamp = 2 (max, min);
+ * add, sub, mul, fma, fnma, min, max, sqr_err, sqr_sub = 1; clamp = 2 (max, min);
  * sel_lt = 2 (compare, blend); keep_ord = 2 (ordered compare, mask: the NaN
  * rule), keep_ord4 = 3 (two compares, the second under the first one's mask
  * as on avx512, and the mask); the exponent-bit ops exp2i, getexp, getmant
@@ -66,6 +66,7 @@ static inline float cnt_rsqrt_fast(float x) { return cnt_rsqrt(x); }
 static inline float cnt_div_fast(float a, float b) { return cnt_div(a, b); }
 static inline float cnt_sqrt_fast(float x) { return cnt_sqrt(x); }
 static inline float cnt_sqr_err(float a, float p) { n_ops++; return (float)((double)a * a - p); }
+static inline float cnt_sqr_sub(float a, float c) { n_ops++; return (float)(c - (double)a * a); }
 static inline float cnt_exp2i(float k) { n_ops++; return (float)ldexp(1.0, (int)k); }
 static inline float cnt_getexp(float x) { int e; n_ops++; frexp(x, &e); return (float)(e - 1); }
 static inline float cnt_getmant(float x) { int e; n_ops++; return 2.0f * (float)frexp(x, &e); }

@@ -5,7 +5,7 @@
  * FACET_K from the port's name), after defining
  *   FACET_V        the vector (or scalar) type,
  *   FACET_OP(op)   the name of the port's op `op` (set add sub mul fma fnma
- *                  min max sel_lt clamp keep_ord rcp rsqrt sqr_err, and the
+ *                  min max sel_lt clamp keep_ord rcp rsqrt sqr_err sqr_sub, and the
  *                  exponent-bit ops exp2i getexp getmant, see facet/scalar.h),
  *   FACET_K(k)     the name to give kernel `k` in this port and tier,
  * and optionally FACET_TIER_FAST 1 for the fast tier (f32_fast): the port's
@@ -823,12 +823,14 @@ FACET_INLINE V_ FACET_K(smith_vis_fit)(V_ nol, V_ nov, V_ alpha)
  *   diffuse = albedo (single + albedo multi)
  * the 1/pi folded into the constants (the caller passes smooth / pi). */
 #define FACET_DIF_K_ 0.334225380f /* 1.05 / pi */
-FACET_INLINE V_ X_DIFFUSE_SINGLE_(V_ at, V_ t, V_ h, V_ a, V_ smooth, V_ *multi)
+FACET_INLINE V_ X_DIFFUSE_SINGLE_(V_ at, V_ tau, V_ h, V_ a, V_ smooth, V_ *multi)
 {
-    /* alpha rough = ar (1 + h), ar = (alpha t) (0.45 - 0.1 t) / pi (alpha t
-     * the caller's, brdf_hammon's D numerator too): h, the last quotient to
-     * arrive, enters by one fma at the end of the chain */
-    V_ ar = MUL_(at, FNMA_(C_(0.0318309886f), t, C_(0.143239449f)));
+    /* alpha rough = ar (1 + h), ar = (alpha t) (0.45 - 0.1 t) / pi
+     * = (alpha tau) (0.9 - 0.4 tau) / pi with tau = t/2 (alpha tau the
+     * caller's, brdf_hammon's D numerator too; the constants are the t form's
+     * times 2 and 4, exact): h, the last quotient to arrive, enters by one
+     * fma at the end of the chain */
+    V_ ar = MUL_(at, FNMA_(C_(0.127323955f), tau, C_(0.286478907f)));
     /* 1 - alpha is exact for alpha >= 1/2 */
     *multi = MUL_(C_(0.1159f), a);
     return FMA_(ar, h, FMA_(SUB_(C_(1.0f), a), smooth, ar));
@@ -836,21 +838,20 @@ FACET_INLINE V_ X_DIFFUSE_SINGLE_(V_ at, V_ t, V_ h, V_ a, V_ smooth, V_ *multi)
 
 /* the diffuse, smooth from N.L and N.V: the product of the two Q is formed
  * first, so that swapping N.L and N.V gives the same bits */
-FACET_INLINE V_ X_DIFFUSE_PI_(V_ nl, V_ nv, V_ t, V_ h, V_ a, V_ alb)
+FACET_INLINE V_ X_DIFFUSE_PI_(V_ nl, V_ nv, V_ tau, V_ h, V_ a, V_ alb)
 {
     V_ smooth = MUL_(C_(FACET_DIF_K_), MUL_(MUL_(nl, nv), MUL_(X_POW5_Q_(nl, 1.0f), X_POW5_Q_(nv, 1.0f))));
-    V_ multi, single = X_DIFFUSE_SINGLE_(MUL_(a, t), t, h, a, smooth, &multi);
+    V_ multi, single = X_DIFFUSE_SINGLE_(MUL_(a, tau), tau, h, a, smooth, &multi);
     return MUL_(alb, FMA_(alb, multi, single));
 }
 
-/* h = 0.5 / N.H = L.H / s = sqrt(t) / (sqrt(2) s) (N.H = s / (2 L.H),
- * L.H = sqrt(t/2)), from rt = sqrt(t): one quotient and the root, no
- * reciprocal of N.H.  t >= s^2/2 caps N.H at 1, so h >= 1/2 but for
- * roundings: the precise tier floors it there, the fast tier takes the
- * rounding's worth. */
-FACET_INLINE V_ X_HALF_INV_NH_(V_ rt, V_ s)
+/* h = 0.5 / N.H = L.H / s (N.H = s / (2 L.H)), from L.H = sqrt(tau),
+ * tau = t/2 = (1 + L.V)/2: one quotient and the root, no reciprocal of
+ * N.H.  tau >= s^2/4 caps N.H at 1, so h >= 1/2 but for roundings: the
+ * precise tier floors it there, the fast tier takes the rounding's worth. */
+FACET_INLINE V_ X_HALF_INV_NH_(V_ lh, V_ s)
 {
-    V_ h = DIV_(rt, MUL_(C_(1.41421354f), s));
+    V_ h = DIV_(lh, s);
 #if FAST_
     return h;
 #else
@@ -861,9 +862,10 @@ FACET_INLINE V_ X_HALF_INV_NH_(V_ rt, V_ s)
 FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
 {
     V_ nl = X_COS_(nol), nv = X_COS_(nov);
-    V_ s = ADD_(nl, nv);
-    V_ t = MAX_(ADD_(C_(1.0f), X_LOV_(lov)), MUL_(C_(0.5f), MUL_(s, s)));
-    V_ d = X_DIFFUSE_PI_(nl, nv, t, X_HALF_INV_NH_(SQRT_(t), s), X_ALPHA_(alpha), X_UNIT_(albedo));
+    V_ s = ADD_(nl, nv), hs = MUL_(C_(0.5f), s);
+    /* tau = t/2 = max((1 + L.V)/2, s^2/4), exactly the halves of t's roundings */
+    V_ tau = MAX_(FMA_(C_(0.5f), X_LOV_(lov), C_(0.5f)), MUL_(hs, hs));
+    V_ d = X_DIFFUSE_PI_(nl, nv, tau, X_HALF_INV_NH_(SQRT_(tau), s), X_ALPHA_(alpha), X_UNIT_(albedo));
     return NAN0_(d, nol, nov, lov, alpha, albedo);
 }
 
@@ -917,13 +919,14 @@ FACET_INLINE V_ FACET_K(diffuse_oren_nayar)(V_ nol, V_ nov, V_ lov, V_ alpha, V_
 
 /* Hammon's diffuse with another smooth term S (times 1 - alpha here):
  *   pi result = albedo ((1 - alpha) S + alpha rough + albedo 0.1159 pi alpha),
- * rough, t and 0.5 / N.H as diffuse_hammon (the raised t, 1 sqrt, 1 quotient). */
+ * rough, tau = t/2 and 0.5 / N.H as diffuse_hammon (the raised t, 1 sqrt,
+ * 1 quotient); t (0.45 - 0.1 t) = tau (0.9 - 0.4 tau). */
 FACET_INLINE V_ X_DIFFUSE_VARIANT_(V_ nl, V_ nv, V_ lov, V_ a, V_ albedo, V_ smooth)
 {
-    V_ s = ADD_(nl, nv);
-    V_ t = MAX_(ADD_(C_(1.0f), X_LOV_(lov)), MUL_(C_(0.5f), MUL_(s, s)));
-    V_ h = X_HALF_INV_NH_(SQRT_(t), s);
-    V_ rough = MUL_(MUL_(t, FNMA_(C_(0.1f), t, C_(0.45f))), ADD_(C_(1.0f), h));
+    V_ s = ADD_(nl, nv), hs = MUL_(C_(0.5f), s);
+    V_ tau = MAX_(FMA_(C_(0.5f), X_LOV_(lov), C_(0.5f)), MUL_(hs, hs));
+    V_ h = X_HALF_INV_NH_(SQRT_(tau), s);
+    V_ rough = MUL_(MUL_(tau, FNMA_(C_(0.4f), tau, C_(0.9f))), ADD_(C_(1.0f), h));
     V_ single = FMA_(a, rough, MUL_(SUB_(C_(1.0f), a), smooth));
     V_ alb = X_UNIT_(albedo);
     V_ d = MUL_(alb, FMA_(alb, MUL_(C_(0.364110589f), a), single)); /* 0.1159 pi */
@@ -961,70 +964,79 @@ FACET_INLINE V_ FACET_K(diffuse_hammon_cheap)(V_ nol, V_ nov, V_ lov, V_ alpha, 
  *   1 - N.H^2 = num / 2t,  num = 2t - s^2  (= |tangential part of L+V|^2)
  *   d = (1 - N.H^2) + alpha^2 N.H^2 = e / 2t,  e = num + alpha^2 s^2
  *   D = alpha^2 / (pi d^2) = (4/pi) (alpha t / e)^2.
- * num cancels at the peak, so it is formed exactly: s and t as unevaluated
- * sums (Fast2Sum), s^2 as p + pe with pe the exact rounding error (sqr_err:
- * exact on every port, FMA or not); 2 th - p is exact near the peak
- * (Sterbenz), the rest is tiny.  Likewise 1 - L.H, which F raises to the
- * fifth power, is formed without cancellation as
- * (1 - L.H^2) / (1 + L.H) = (2 - t) / (2 + 2 L.H).
- * With Vis = 0.5/m (m = Hammon's lerp), mh = m/2 and L.H = sqrt(t/2):
- *   pi D Vis = 2 (alpha t)^2 / (e^2 m) = (u mh) u,  u = alpha t / (e mh),
+ * num cancels at the peak, so it is formed exactly, in quarter units
+ * (X_BRDF_PEAK_: s and tau = t/2 as unevaluated sums, Fast2Sum, and one
+ * fnma exact before its rounding).  Likewise 1 - L.H, which F raises to
+ * the fifth power, is formed without cancellation as
+ * (1 - L.H^2) / (1 + L.H) = (1 - tau) / (1 + L.H), L.H = sqrt(tau).
+ * With Vis = 0.5/m (m = Hammon's lerp), mh = m/2:
+ *   pi D Vis = 2 (alpha t)^2 / (e^2 m) = (u mh) u / 4,
+ *   u = alpha tau / (e/4 mh) = 2 alpha t / (e mh),
  * ordered so that no intermediate overflows at the grazing corner.
- * Quotients: alpha t / (e mh), (2 - t) / (2 + 2 L.H), L.H / s (= 0.5 / N.H,
- * for the diffuse), one square root: the port's div and sqrt (a divide/sqrt
- * unit where it runs beside the FMA pipes, else a reciprocal estimate and
- * steps).  The fast tier takes its cheaper quotient for the first and the
- * last (errors 2x and 1x its estimate's, the 14-bit one on avx512: 2^-13),
- * the precise one for 1 - L.H (times 5 in F), drops the 2^-23 of
- * alpha^2 (s^2 - p) in e and the cap of 0.5 / N.H at 0.5 (a rounding's
- * worth). */
-/* What brdf_hammon computes before f0 and albedo enter: F = f0 + (1 - f0) y5,
- * brdf = (dv2 F + albedo (single + albedo multi)) / pi.  The RGB form shares
+ * Quotients: alpha tau / (e/4 mh), (1 - tau) / (1 + L.H), L.H / s
+ * (= 0.5 / N.H, for the diffuse), one square root: the port's div and sqrt
+ * (a divide/sqrt unit where it runs beside the FMA pipes, else a
+ * reciprocal estimate and steps).  The fast tier takes its cheaper quotient
+ * for the first and the last (errors 2x and 1x its estimate's), the
+ * precise one for 1 - L.H (times 5 in F), and drops the cap of 0.5 / N.H
+ * at 0.5 (a rounding's worth). */
+/* What brdf_hammon computes before f0 and albedo enter: F = f0 + (1 - f0) y^5
+ * = y^5 + f0 (1 - y^5) (two non-negative terms), brdf = D Vis F + albedo
+ * (single + albedo multi).  No intermediate is subnormal for an input in
+ * the domain: y^5 reaches 2^-130 at L.V = 1 - 2^-24, so y is carried as
+ * y5s = (2^16 y)^5 = 2^80 y^5 in [2^-50, 2^80] (or 0; the 2^-16 in the
+ * quotient's divisor, exact) and D Vis as dv2 = 2^-80 D Vis (in the 1/pi,
+ * exact; >= 2^-106, as u >= 2^-11): F D Vis = (y5s + f0 (2^80 - y5s)) dv2,
+ * the same roundings as unscaled.  A subnormal result or operand costs
+ * Intel cores a microcode assist per instruction: 1% of the benchmark's
+ * samples at that L.V made the AVX-512 loop 1.45x slower on this tree's
+ * Xeon.  The RGB form shares
  * it across channels; per channel the same operations run in the same order,
  * so each channel equals brdf_hammon to the bit. */
 /* The parts are out-parameters, not a struct: RVV's vector types are
  * sizeless (no struct members, no arrays), and one body serves every port. */
-/* The exact peak: e = num + alpha^2 s^2 with num = 2t - s^2 formed without
- * cancellation, and what it leaves the rest: the ordered pair big >= small,
- * s rounded (sh), t (raised where the triple is inconsistent) and
- * 2 - t = min(1 - L.V, 2 - s^2/2), each side without cancellation (2 - p/2
- * is exact for p >= 2, Sterbenz).  Its own function so that
- * tests/f32/test_op_counts.c can count it apart (the "peak" of the budget,
- * with X_ONE_MINUS_LH_ below). */
-FACET_INLINE V_ X_BRDF_PEAK_(V_ nl, V_ nv, V_ lv, V_ a2, V_ *big_, V_ *small_, V_ *sh_, V_ *t_, V_ *w_)
+/* The exact peak, in quarter units: e/4 = max(num/4, 0) + alpha^2 s^2/4 with
+ * num/4 = tau - (s/2)^2 (tau = t/2) formed without cancellation, and what
+ * it leaves the rest: the ordered pair big >= small, s rounded (sh) and
+ * halved (hs, exact), tau (raised to (s/2)^2 where the triple is
+ * inconsistent) and 1 - tau = min((1 - L.V)/2, 1 - (s/2)^2), each side
+ * without cancellation.  With s = sh + sl and tau = th + tl (Fast2Sum, both
+ * exact; th = (1 + L.V)/2 rounded, the half of 1 + L.V's rounding):
+ *   num/4 = (th - hs^2) + (tl - hs sl) - sl^2/4,
+ * the first exact before its one rounding and small near the peak (the
+ * port's sqr_sub: one fnma, or without FMA the exact error of hs^2 and
+ * Sterbenz), the second of the size of the roundings (sl^2/4 < 2^-50 s^2
+ * dropped): a few 2^-24 of e, where the squared sum and its exact error
+ * (sqr_err) in full units took five operations more.  Its own function so that tests/f32/test_op_counts.c
+ * can count it apart (the "peak" of the budget, with X_ONE_MINUS_LH_
+ * below). */
+FACET_INLINE V_ X_BRDF_PEAK_(V_ nl, V_ nv, V_ lv, V_ a2, V_ *big_, V_ *small_, V_ *sh_, V_ *hs_, V_ *tau_,
+                             V_ *w_)
 {
     V_ big = MAX_(nl, nv), small = MIN_(nl, nv);
     V_ sh = ADD_(nl, nv); /* = big + small, without waiting for them */
     V_ sl = SUB_(small, SUB_(sh, big));
-    V_ th = ADD_(C_(1.0f), lv);
-    V_ tl = SUB_(lv, SUB_(th, C_(1.0f)));
-    V_ p = MUL_(sh, sh);
-    V_ pe = FACET_OP(sqr_err)(sh, p);
-    /* num = (2th - p) - (s^2 - p - 2tl), s^2 - p = pe + 2 sh sl (+ sl^2 < 2^-48 s^2);
-     * 2th - p is exact near the peak (Sterbenz) */
-    V_ s2lo = FMA_(sl, ADD_(sh, sh), pe);
-    /* e = max(num, 0) + alpha^2 s^2 = max(k - x1 - x2, k), k = alpha^2 s^2,
-     * x1 = p - 2th, x2 = s^2 - p - 2tl: the exact x1 meets k before the
-     * small x2 arrives (k - x1 keeps its rounding below 2^-24 e); the fast
-     * tier leaves alpha^2 (s^2 - p) out of k (2^-23 of it) */
-#if FAST_
-    V_ k = MUL_(a2, p);
-#else
-    V_ k = FMA_(a2, p, MUL_(a2, s2lo));
-#endif
+    V_ hs = MUL_(C_(0.5f), sh);
+    V_ th = FMA_(C_(0.5f), lv, C_(0.5f));
+    /* 0.5 - th is exact (Sterbenz for th >= 1/4, else th itself is exact) */
+    V_ tl = FMA_(C_(0.5f), lv, SUB_(C_(0.5f), th));
+    V_ q = MUL_(hs, hs);
+    V_ numq = ADD_(FACET_OP(sqr_sub)(hs, th), FNMA_(hs, sl, tl));
     *big_ = big;
     *small_ = small;
     *sh_ = sh;
-    *t_ = MAX_(th, MUL_(C_(0.5f), p));
-    *w_ = MIN_(SUB_(C_(1.0f), lv), FNMA_(C_(0.5f), s2lo, FNMA_(C_(0.5f), p, C_(2.0f))));
-    return MAX_(SUB_(SUB_(k, FNMA_(C_(2.0f), th, p)), FNMA_(C_(2.0f), tl, s2lo)), k);
+    *hs_ = hs;
+    *tau_ = MAX_(th, q);
+    *w_ = MIN_(FNMA_(C_(0.5f), lv, C_(0.5f)), FNMA_(hs, sl, FACET_OP(sqr_sub)(hs, C_(1.0f))));
+    return FMA_(a2, q, MAX_(numq, C_(0.0f)));
 }
 
-/* 1 - L.H = (2 - t) / (2 + 2 L.H), from w = 2 - t and rt = sqrt(t) =
- * sqrt(2) L.H: the precise quotient in both tiers (F takes its fifth power) */
-FACET_INLINE V_ X_ONE_MINUS_LH_(V_ w, V_ rt)
+/* 1 - L.H = (1 - tau) / (1 + L.H), from w = 1 - tau and L.H = sqrt(tau):
+ * the precise quotient in both tiers (F takes its fifth power); 2^16 times
+ * it, the divisor times 2^-16 (exact) */
+FACET_INLINE V_ X_ONE_MINUS_LH_(V_ w, V_ lh)
 {
-    return DIV_X5_(w, FMA_(C_(1.41421354f), rt, C_(2.0f)));
+    return DIV_X5_(w, FMA_(C_(1.52587891e-05f), lh, C_(1.52587891e-05f)));
 }
 
 FACET_INLINE void X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha,
@@ -1032,32 +1044,31 @@ FACET_INLINE void X_BRDF_GEOMETRY_(V_ nol, V_ nov, V_ lov, V_ alpha,
 {
     V_ nl = X_COS_(nol), nv = X_COS_(nov);
     V_ a = X_ALPHA_(alpha);
-    V_ big, small, sh, t, w;
-    V_ e = X_BRDF_PEAK_(nl, nv, X_LOV_(lov), MUL_(a, a), &big, &small, &sh, &t, &w);
+    V_ big, small, sh, hs, tau, w;
+    V_ eq = X_BRDF_PEAK_(nl, nv, X_LOV_(lov), MUL_(a, a), &big, &small, &sh, &hs, &tau, &w); /* e/4 */
     V_ p2 = MUL_(nl, nv);
     /* m/2 = (1 - alpha) nl nv + alpha s/2; s/2 - nl nv >= 0 */
-    V_ mh = FMA_(a, SUB_(MUL_(C_(0.5f), sh), p2), p2);
-    /* sqrt(2) L.H = sqrt(t): the 1/sqrt(2) of L.H = sqrt(t/2) goes into
-     * the constants, off the Fresnel tail's chain */
-    V_ rt = SQRT_(t);
-    V_ y = X_ONE_MINUS_LH_(w, rt);
+    V_ mh = FMA_(a, SUB_(hs, p2), p2);
+    V_ lh = SQRT_(tau); /* L.H */
+    V_ y = X_ONE_MINUS_LH_(w, lh); /* 2^16 (1 - L.H) */
     V_ y2 = MUL_(y, y);
-    /* u = alpha t / (e mh) <= 2^39; alpha t serves the diffuse too */
-    V_ at = MUL_(a, t);
-    V_ u = DIV_(at, MUL_(e, mh));
-    V_ h = X_HALF_INV_NH_(rt, sh);
+    /* u = alpha tau / (e/4 mh) = 2 alpha t / (e mh) <= 2^40; alpha tau
+     * serves the diffuse too */
+    V_ at = MUL_(a, tau);
+    V_ u = DIV_(at, MUL_(eq, mh));
+    V_ h = X_HALF_INV_NH_(lh, sh);
     *y5_ = MUL_(MUL_(y2, y2), y);
-    /* D Vis = (u mh) (u / pi), u mh = alpha t / e <= 512 */
-    *dv2_ = MUL_(MUL_(u, mh), MUL_(u, C_(FACET_INV_PI_)));
+    /* 2^-80 D Vis = (u mh) (u 2^-82 / pi), u mh <= 1024 */
+    *dv2_ = MUL_(MUL_(u, mh), MUL_(u, C_(6.5824939e-26f))); /* 2^-82 / pi, the float 1/pi times 2^-82 */
     /* smooth / pi = p2 Q(big) (1.05/pi) Q(small): symmetric in N.L, N.V */
-    *single_ = X_DIFFUSE_SINGLE_(at, t, h, a, MUL_(p2, MUL_(X_POW5_Q_(big, 1.0f), X_POW5_Q_(small, FACET_DIF_K_))),
-                                 multi_);
+    *single_ = X_DIFFUSE_SINGLE_(at, tau, h, a,
+                                 MUL_(p2, MUL_(X_POW5_Q_(big, 1.0f), X_POW5_Q_(small, FACET_DIF_K_))), multi_);
 }
 
 FACET_INLINE V_ X_BRDF_CHANNEL_(V_ y5, V_ dv2, V_ single, V_ multi, V_ f0, V_ albedo)
 {
     V_ f0c = X_UNIT_(f0), alb = X_UNIT_(albedo);
-    V_ f = FMA_(SUB_(C_(1.0f), f0c), y5, f0c);
+    V_ f = FMA_(f0c, SUB_(C_(1.20892582e+24f), y5), y5); /* 2^80 F (2^80 exactly) */
     V_ dif = MUL_(alb, FMA_(alb, multi, single));
     return FMA_(dv2, f, dif);
 }
