@@ -37,8 +37,8 @@ count() {
     e=$($NM "$1" 2>/dev/null | awk '$3 == "qcount_end" { print $1 }')
     awk -v b="$b" -v e="$e" -v core="$3" -v mca="${5:-}" '
         BEGIN { k = 0 }
-        FILENAME == dis { if ($0 !~ /^ +[0-9a-f]+:\t/) next
-            ad = $0; sub(/^ +/, "", ad); sub(/:.*$/, "", ad); t = $0; sub(/^ +[0-9a-f]+:\t/, "", t)
+        FILENAME == dis { if ($0 !~ /^ *[0-9a-f]+:\t/) next
+            ad = $0; sub(/^ +/, "", ad); sub(/:.*$/, "", ad); t = $0; sub(/^ *[0-9a-f]+:\t/, "", t)
             while (length(ad) < 8) ad = "0" ad
             text[ad] = t; next }
         { split($4, a, "/"); pc = a[2]

@@ -54,7 +54,7 @@ counts() {
         function hex(s,   i, n, c) { n = 0; s = tolower(s); sub(/^0x/, "", s)
             for (i = 1; i <= length(s); i++) { c = index("0123456789abcdef", substr(s, i, 1)); if (!c) break; n = n * 16 + c - 1 }
             return n }
-        FILENAME == ARGV[1] { if ($0 !~ /^ +[0-9a-f]+:\t/) next
+        FILENAME == ARGV[1] { if ($0 !~ /^ *[0-9a-f]+:\t/) next
             n = split($0, f, "\t"); a = f[1]; sub(/^ +/, "", a); sub(/:$/, "", a)
             t = f[2]; for (i = 3; i <= n; i++) t = t "\t" f[i]
             if (raw) { text[hex(a)] = t; next }

@@ -11,6 +11,13 @@
 #   test_fx_hash       the pinned hashes of the scalar kernels on the M55
 #   test_sample_ports, test_f32_bad_input  the samplers' and the bad-input contracts
 #   test_f32_rgb, test_fx_rgb  the RGB batches (every layout, tail, alias) and RGB fixed point
+#   test_f16_accuracy  every f16 kernel on heliumfp16 (MVE binary16 lanes),
+#                      the scalar table and the per-sample entry at the
+#                      facet/f16.h bounds (30000 random samples a kernel)
+#   test_f16_ports     the f16 bad-input, saturation, tail and alias
+#                      contracts on heliumfp16, and the port choice
+#   test_f16_estimates heliumfp16's seeded rcp and rsqrt (binary16 and f32
+#                      lanes) exhaustively against their stated errors
 # helium-cycles: brdf_hammon's executed instructions and llvm-mca-16's
 # Cortex-M55 cycles per sample (bench/qcount/qcount.sh m55, both builds)
 # must be ports/README.md's Helium table (qemu's counts and the model are
@@ -31,8 +38,8 @@ if ! have qemu-system-arm; then
     echo "helium: 0 passed, 0 failed, 1 skipped"
     exit 0
 fi
-# build/m55: everything with arm-none-eabi-gcc; build/m55-clang: the two
-# helium objects with clang (HELIUM_CC, ports/helium/port.mk; the README's
+# build/m55: everything with arm-none-eabi-gcc; build/m55-clang: the three
+# helium objects (f32, fx, f16) with clang (HELIUM_CC, ports/helium/port.mk; the README's
 # instruction counts), its port tests only.  Skipped without clang.
 m55() { # m55 DIR LABEL HELIUM_CC TESTS...
     dir=$1 label=$2 hcc=$3
@@ -52,9 +59,11 @@ m55() { # m55 DIR LABEL HELIUM_CC TESTS...
     done
 }
 m55 build/m55 helium arm-none-eabi-gcc test_f32_ports test_f32_accuracy test_fx_ports test_fx_hash \
-    test_sample_ports test_sample_small test_f32_bad_input test_f32_rgb test_fx_rgb test_tails
+    test_sample_ports test_sample_small test_f32_bad_input test_f32_rgb test_fx_rgb test_tails \
+    test_f16_accuracy test_f16_ports test_f16_estimates
 if have clang; then
-    m55 build/m55-clang helium-clang clang test_f32_ports test_f32_accuracy test_fx_ports test_sample_ports
+    m55 build/m55-clang helium-clang clang test_f32_ports test_f32_accuracy test_fx_ports test_sample_ports \
+        test_f16_accuracy test_f16_ports test_f16_estimates
 else
     echo "SKIP helium-clang: clang missing (apt-get install clang)"
     echo "helium-clang: 0 passed, 0 failed, 1 skipped"
