@@ -3,10 +3,16 @@
 # vector ports, which this machine cannot time (called by report.sh):
 #   neon    aarch64 (build/aarch64, the 40-arm suite's cross build):
 #           llvm-mca (LLVM's cortex-a57 model) on the EXECUTED instruction
-#           trace of one batch call (qemu-aarch64 -singlestep -d
+#           trace of one batch call (qemu-aarch64 -cpu max -singlestep -d
 #           exec,nochain), callees and the tail included, / samples: MODELLED
 #           cycles per sample (one pass over the 64-sample trace: 4 passes
-#           changed brdf_hammon's figures by under 1.5 %)
+#           changed brdf_hammon's figures by under 1.5 %); and every call,
+#           the binary16 table neonfp16's too (format f16), on LLVM's
+#           cortex-a55 model (mca-cortex-a55): an ARMv8.2-A core with FP16
+#           whose model has its own entries for the binary16 vector forms
+#           (a .8h fadd or fmla costs what a .4s one does); the A57 model
+#           has no FP16 (cortex-a76 and neoverse-n1 map to it in LLVM 14
+#           and 16, and it charges a .8h op as a 64-bit one)
 #   helium  Cortex-M55 (build/m55-clang, the helium objects from clang 14,
 #           as the README's Helium table): instructions executed per sample
 #           under qemu-system-arm -M mps3-an547 (MEASURED instruction
@@ -20,7 +26,9 @@
 #           under qemu-riscv64 -cpu rv64,v=true,vlen=128: MEASURED
 #           instruction counts, not cycles (the speed table's RVV column)
 # for every kernel and every tier the port runs (f32, f32_fast, fx,
-# fx_fast), from one image per target (bench/report/armcount_main.c).
+# fx_fast), and on neon and helium the binary16 batches of every kernel
+# with an f16 form (neonfp16, heliumfp16: format f16), from one image per
+# target (bench/report/armcount_main.c).
 # Writes OUT_DIR/arm_vec.tsv ("format port kernel measure value") and
 # OUT_DIR/arm_vec.status (per target "PORT ok HOW" or "PORT skipped WHY",
 # which the report prints).  A missing tool or a failed build skips that
@@ -73,20 +81,20 @@ counts() {
 samples=64
 
 # ---- NEON (aarch64): llvm-mca on the executed trace -------------------------
-cpu=cortex-a57
+cpu=cortex-a57 cpu16=cortex-a55
 if ! have aarch64-linux-gnu-gcc || ! have qemu-aarch64 || ! have llvm-mca; then
     status "neon skipped: not installed: $(missing aarch64-linux-gnu-gcc qemu-aarch64 llvm-mca)"
 elif ! $MAKE -s BUILD=build/aarch64 CC=aarch64-linux-gnu-gcc CFLAGS="-O2 -g" build/aarch64/libfacet.a > "$dir/aarch64.build.log" 2>&1; then
     status "neon skipped: the aarch64 cross build of the library failed ($dir/aarch64.build.log)"
 elif fresh "$dir/neon.tsv" build/aarch64/libfacet.a bench/report/armcount_main.c bench/report/arm_targets.sh; then
     cat "$dir/neon.tsv" >> "$out/arm_vec.tsv"
-    status "neon ok llvm-mca -mcpu=$cpu on the executed trace (cached)"
+    status "neon ok llvm-mca -mcpu=$cpu on the executed trace, f16 and every tier also -mcpu=$cpu16 (cached)"
 else
     NM=aarch64-linux-gnu-nm
     rm -rf "$dir/neon.d" && mkdir -p "$dir/neon.d"
-    if aarch64-linux-gnu-gcc -O2 -std=c99 -static -Iinclude -DARMCOUNT_PORT=neon -DN=$samples \
+    if aarch64-linux-gnu-gcc -O2 -std=c99 -static -Iinclude -DARMCOUNT_PORT=neon -DARMCOUNT_F16=neonfp16 -DN=$samples \
             bench/report/armcount_main.c build/aarch64/libfacet.a -lm -o "$dir/neon.elf" 2> "$dir/neon.log" &&
-       qemu-aarch64 -singlestep -d exec,nochain -D "$dir/neon.trace" "$dir/neon.elf" > "$dir/neon.labels" 2>> "$dir/neon.log"; then
+       qemu-aarch64 -cpu max -singlestep -d exec,nochain -D "$dir/neon.trace" "$dir/neon.elf" > "$dir/neon.labels" 2>> "$dir/neon.log"; then
         aarch64-linux-gnu-objdump -d --no-show-raw-insn "$dir/neon.elf" > "$dir/neon.dis"
         grep -v '^armcount:' "$dir/neon.labels" > "$dir/neon.lab"
         counts "$dir/neon.elf" "$dir/neon.dis" "$dir/neon.trace" "$dir/neon.lab" "$dir/neon.d" > "$dir/neon.calls"
@@ -94,9 +102,14 @@ else
         i=0
         : > "$dir/neon.tsv.tmp"
         while read -r fmt k insns; do
-            c=$(llvm-mca -mtriple=aarch64 -mcpu=$cpu -iterations=1 "$dir/neon.d/$i.s" 2>> "$dir/neon.log" |
+            if [ "$fmt" != f16 ]; then # the A57 has no FP16
+                c=$(llvm-mca -mtriple=aarch64 -mcpu=$cpu -iterations=1 "$dir/neon.d/$i.s" 2>> "$dir/neon.log" |
+                    awk -v n=$samples '/^Iterations:/ {it = $2} /^Total Cycles:/ {c = $3} END { if (it) printf "%.2f", c / it / n }')
+                [ -n "$c" ] && echo "$fmt neon $k mca-$cpu $c" >> "$dir/neon.tsv.tmp"
+            fi
+            c=$(llvm-mca -mtriple=aarch64 -mcpu=$cpu16 -iterations=1 "$dir/neon.d/$i.s" 2>> "$dir/neon.log" |
                 awk -v n=$samples '/^Iterations:/ {it = $2} /^Total Cycles:/ {c = $3} END { if (it) printf "%.2f", c / it / n }')
-            [ -n "$c" ] && echo "$fmt neon $k mca-$cpu $c" >> "$dir/neon.tsv.tmp"
+            [ -n "$c" ] && echo "$fmt neon $k mca-$cpu16 $c" >> "$dir/neon.tsv.tmp"
             echo "$fmt neon $k qemu-insn $(awk -v i="$insns" -v n=$samples 'BEGIN { printf "%.1f", i / n }')" >> "$dir/neon.tsv.tmp"
             i=$((i + 1))
         done < "$dir/neon.calls"
@@ -104,7 +117,7 @@ else
         if [ -s "$dir/neon.tsv.tmp" ]; then
             mv "$dir/neon.tsv.tmp" "$dir/neon.tsv"
             cat "$dir/neon.tsv" >> "$out/arm_vec.tsv"
-            status "neon ok llvm-mca -mcpu=$cpu on the executed trace"
+            status "neon ok llvm-mca -mcpu=$cpu on the executed trace, f16 and every tier also -mcpu=$cpu16"
         else
             status "neon skipped: no call was traced ($dir/neon.log)"
         fi
@@ -128,7 +141,7 @@ else
     NM=arm-none-eabi-nm
     m55mca="llvm-mca-16 -mtriple=thumbv8.1m.main -mcpu=cortex-m55 -mattr=+mve.fp"
     if arm-none-eabi-gcc -mcpu=cortex-m55 -mfloat-abi=hard -mthumb -O2 -std=c99 -Iinclude -DARMCOUNT_PORT=helium \
-            -DN=$samples --specs=rdimon.specs -nostartfiles -T tests/cortexm/an547.ld tests/cortexm/startup_m55.c \
+            -DARMCOUNT_F16=heliumfp16 -DN=$samples --specs=rdimon.specs -nostartfiles -T tests/cortexm/an547.ld tests/cortexm/startup_m55.c \
             bench/report/armcount_main.c $lib -lm -o "$dir/m55.elf" 2> "$dir/m55.log" &&
        timeout 300 qemu-system-arm -M mps3-an547 -nographic -semihosting-config enable=on,target=native \
             -kernel "$dir/m55.elf" -singlestep -d exec,nochain -D "$dir/m55.trace" > "$dir/m55.labels" 2>> "$dir/m55.log"; then

@@ -4,12 +4,21 @@
  * under qemu (bench/report/arm_targets.sh cuts the trace at the markers).
  * The port's tables are called directly (src/core/port.h), so the dispatcher's
  * pointer load is not counted.  Prints one "FORMAT KERNEL" line per counted
- * call, in call order.  ARMCOUNT_PORT names the port (helium). */
+ * call, in call order.  ARMCOUNT_PORT names the port (helium).
+ * ARMCOUNT_F16 (optional) names the port's binary16 table (heliumfp16,
+ * neonfp16): then every kernel with an f16 form is also counted as format
+ * f16, on the same inputs rounded to binary16 (inside facet/f16.h's
+ * domain).  ARMCOUNT_F16_ONLY: only the kernels with an f16 form, in f32,
+ * f32_fast and f16 (bench/qcount/qcount.sh m55-f16). */
 #include <stdint.h>
 #include <stdio.h>
 #include "facet.h"
 #include "facet/fx.h"
 #include "../../src/core/port.h"
+#ifdef ARMCOUNT_F16
+#include "facet/f16.h"
+#include "../../src/core/f16_port.h"
+#endif
 
 #ifndef N
 #define N 64
@@ -38,6 +47,30 @@ static int id;
 #define F_ARG_(input, domain) fin[D_##domain]
 #define Q_ARG_(input, domain) qin[D_##domain]
 
+#ifdef ARMCOUNT_F16
+#define F16 CAT(facet_f16_port_, ARMCOUNT_F16)
+static facet_f16 hin_[D_N][N], hout[N];
+static const facet_f16 *hin[6];
+/* each kernel's input domains, from kernels.def */
+#define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...) \
+    static const int dom_##name[] = { FACET_MAP_INPUTS(n, CLASS_, __VA_ARGS__) };
+#include "../../src/core/kernels.def"
+#undef FACET_KERNEL
+#define H_ARG_(q) hin[q]
+static int has_f16(const char *name)
+{
+    const facet_f16_kernel *h = facet_f16_kernel_find(name);
+    return h && h->f16;
+}
+#endif
+#ifdef ARMCOUNT_F16_ONLY
+#define WANT_(name) has_f16(#name)
+#define FX_WANT_ 0
+#else
+#define WANT_(name) 1
+#define FX_WANT_ 1
+#endif
+
 int main(void)
 {
     uint32_t s = 12345;
@@ -50,6 +83,9 @@ int main(void)
             fin[d][i] = d == D_LOV ? 2.0f * u - 1.0f : d == D_GAMMA ? 0.5f + 3.0f * u
                       : d == D_ALPHA ? 0.02f + 0.98f * u : 0.05f + 0.95f * u;
             qin[d][i] = (int32_t)(fin[d][i] * 32768.0f);
+#ifdef ARMCOUNT_F16
+            hin_[d][i] = facet_f16_from_f32(fin[d][i]);
+#endif
         }
 /* a kernel the port's table leaves NULL runs the tier's scalar loop (the
  * dispatcher's rule, src/core/dispatch.c): that is what the port executes */
@@ -57,12 +93,28 @@ int main(void)
     armcount_begin(id); (tab.name ? tab.name : fb.name)(outp, __VA_ARGS__, N); armcount_end(id++); \
     printf("%s %s\n", fmt, #name);
 #define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...) \
+    if (WANT_(name)) { \
     CALL_(F32, facet_port_scalar_f32, "f32", name, out, FACET_MAP_INPUTS(n, F_ARG_, __VA_ARGS__)) \
-    CALL_(F32_FAST, facet_port_scalar_f32_fast, "f32_fast", name, out, FACET_MAP_INPUTS(n, F_ARG_, __VA_ARGS__)) \
+    CALL_(F32_FAST, facet_port_scalar_f32_fast, "f32_fast", name, out, FACET_MAP_INPUTS(n, F_ARG_, __VA_ARGS__)) } \
+    if (FX_WANT_) { \
     FACET_IF_PRECISE(fx_code, CALL_(FX, facet_fx_port_scalar, "fx", name, (fx_type *)(void *)qout, FACET_MAP_INPUTS(n, Q_ARG_, __VA_ARGS__))) \
-    FACET_IF_FX(fx_type, CALL_(FX_FAST, facet_fx_fast_port_scalar, "fx_fast", name, (fx_type *)(void *)qout, FACET_MAP_INPUTS(n, Q_ARG_, __VA_ARGS__)))
+    FACET_IF_FX(fx_type, CALL_(FX_FAST, facet_fx_fast_port_scalar, "fx_fast", name, (fx_type *)(void *)qout, FACET_MAP_INPUTS(n, Q_ARG_, __VA_ARGS__))) }
 #include "../../src/core/kernels.def"
 #undef FACET_KERNEL
+#ifdef ARMCOUNT_F16
+    /* the binary16 table: its own (no scalar fallback: every f16 kernel has
+     * a batch in every f16 table) */
+#define FACET_F16(name, NAME, n, form, why)                                   \
+    FACET_IF_F16(form, for (i = 0; i < n; i++) hin[i] = hin_[dom_##name[i]]; \
+                 armcount_begin(id); F16.name(hout, FACET_EACH_INPUT(n, H_ARG_), N); armcount_end(id++); \
+                 printf("f16 %s\n", #name);)
+#include "../../src/core/f16_kernels.def"
+#undef FACET_F16
+#endif
+#ifdef ARMCOUNT_F16
+    printf("armcount: %g %llu %u\n", (double)out[0], (unsigned long long)qout[0], (unsigned)hout[0]);
+#else
     printf("armcount: %g %llu\n", (double)out[0], (unsigned long long)qout[0]);
+#endif
     return 0;
 }

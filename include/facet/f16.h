@@ -62,7 +62,22 @@
  * over 1,000,000 under qemu-aarch64 (Arm's frecpe/frsqrte are defined bit
  * for bit by the architecture, so the emulator computes what the hardware
  * does); neonfp16's 8-bit estimates plus one step make noh, loh and the
- * Smith terms its largest.
+ * Smith terms its largest.  heliumfp16 (MVE: no estimate instruction; bit
+ * seeds and two Newton steps, facet/heliumfp16.h) over 2,000,000 under
+ * qemu-system-arm -M mps3-an547 (Cortex-M55), within every bound: noh
+ * 1.55e-3, loh 9.77e-4, fresnel_schlick 2.13e-3, ggx_d 1.41e-3, smith_vis
+ * 1.93e-3, smith_vis_hammon 1.53e-3, diffuse_hammon 3.82e-3, brdf_hammon
+ * 3.58e-3, lambert 6.28e-4.  avx512fp16 also holds them with vrcpph /
+ * vrsqrtph replaced by values off by just under their architectural bound
+ * 2^-11 + 2^-14 (tests/suites/15-worst-estimates.sh).
+ *
+ * Speed on the Arm ports (ports/README.md, "Binary16"): f16 against f32
+ * 1.8x to 2.4x on Helium (Cortex-M55: qemu instructions, llvm-mca-16
+ * cycles) and 2.3x to 3.6x on NEON (llvm-mca's Cortex-A55 model) for the
+ * binary16-only kernels, but brdf_hammon 1.01x / 1.09x on Helium and 1.51x
+ * on NEON (target 1.7x: missed; its f32-lane part costs what it saves, and
+ * on MVE's 8 Q registers the f32 lanes spill).  No RISC-V Zvfh port:
+ * nothing here can detect Zvfh at run time (ports/README.md).
  *
  * Ways in: facet_<kernel>_f16 (one sample, the scalar port),
  * facet_<kernel>_f16_batch (any count, any alignment, out may be an input:
