@@ -9,6 +9,11 @@
 #                           LIBDIR/libfacet.a (default build/m55; build/m55-clang
 #                           has the helium objects from clang; both made by
 #                           tests/suites/52-helium.sh)
+#   qcount.sh m55-f16 [LIBDIR]  the same core and counting, every kernel
+#                           with a binary16 form: helium f32 and f32_fast
+#                           against heliumfp16 f16 (lines "cortex-m55
+#                           <kernel> <format> ..."; ports/README.md's f16
+#                           table, suite 52)
 #   qcount.sh rv64 [LIBDIR] [VLEN...]  RV64GC + V under qemu-riscv64 (-cpu
 #                           rv64,v=true,vlen=N; VLEN default 128 256 512):
 #                           scalar code (riscv64-linux-gnu-gcc -O2) vs rvv
@@ -29,16 +34,20 @@ what=${1:-m55}
 libdir=${2:-}
 dir=build/qcount
 mkdir -p "$dir"
-# count ELF TRACE LABEL [DIS MCADIR]: the per-sample counts of the six
-# marked calls; with DIS (objdump -d --no-show-raw-insn of ELF) and MCADIR,
-# the executed instruction texts of call i go to MCADIR/i.s
+# count ELF TRACE LABEL [DIS MCADIR [NAMES [BEGIN END]]]: the per-sample
+# counts of the six marked calls; with DIS (objdump -d --no-show-raw-insn
+# of ELF) and MCADIR, the executed instruction texts of call i go to
+# MCADIR/i.s; with NAMES (a file, "FORMAT KERNEL" per call in call order:
+# bench/report/armcount_main.c's output), every call is named by it
+# ("<core> <kernel> <format>") and BEGIN, END are the marker functions
 count() {
-    b=$($NM "$1" 2>/dev/null | awk '$3 == "qcount_begin" { print $1 }')
-    e=$($NM "$1" 2>/dev/null | awk '$3 == "qcount_end" { print $1 }')
-    awk -v b="$b" -v e="$e" -v core="$3" -v mca="${5:-}" '
-        BEGIN { k = 0 }
-        FILENAME == dis { if ($0 !~ /^ +[0-9a-f]+:\t/) next
-            ad = $0; sub(/^ +/, "", ad); sub(/:.*$/, "", ad); t = $0; sub(/^ +[0-9a-f]+:\t/, "", t)
+    b=$($NM "$1" 2>/dev/null | awk -v m="${7:-qcount_begin}" '$3 == m { print $1 }')
+    e=$($NM "$1" 2>/dev/null | awk -v m="${8:-qcount_end}" '$3 == m { print $1 }')
+    awk -v b="$b" -v e="$e" -v core="$3" -v mca="${5:-}" -v names="${6:-}" '
+        BEGIN { k = 0; nn = 0
+                if (names != "") while ((getline l < names) > 0) { split(l, w, " "); nf[nn] = w[1]; nk[nn++] = w[2] } }
+        FILENAME == dis { if ($0 !~ /^ *[0-9a-f]+:\t/) next
+            ad = $0; sub(/^ +/, "", ad); sub(/:.*$/, "", ad); t = $0; sub(/^ *[0-9a-f]+:\t/, "", t)
             while (length(ad) < 8) ad = "0" ad
             text[ad] = t; next }
         { split($4, a, "/"); pc = a[2]
@@ -48,7 +57,9 @@ count() {
         on { n++; if (mca) { p = pc; while (length(p) < 8) p = "0" p; print text[p] > (mca "/" k ".s") } }
         END {
             split("scalar f32|scalar f32_fast|scalar fx_fast|vector f32|vector f32_fast|vector fx_fast", nm, "|")
-            for (i = 0; i < k; i++) printf "%s %s %.1f\n", core, nm[i + 1], c[i] / 64.0
+            for (i = 0; i < k; i++)
+                if (names != "") printf "%s %s %s %.1f\n", core, nk[i], nf[i], c[i] / 64.0
+                else printf "%s %s %.1f\n", core, nm[i + 1], c[i] / 64.0
         }' dis="${4:-}" ${4:+"$4"} "$2"
 }
 # mca LINES MCADIR: appends llvm-mca-16's Cortex-M55 cycles per sample of
@@ -88,6 +99,28 @@ m55)
     rm -f "$dir/m55.trace"
     mca "$dir/m55.calls" "$dir/m55.d"
     [ -n "${QCOUNT_KEEP:-}" ] || rm -rf "$dir/m55.d"
+    ;;
+m55-f16)
+    # every kernel with a binary16 form: helium f32, f32_fast and heliumfp16
+    # f16 batches (bench/report/armcount_main.c, ARMCOUNT_F16_ONLY), the
+    # same trace and model as m55; lines "cortex-m55 <kernel> <format> ..."
+    NM=arm-none-eabi-nm
+    lib=${libdir:-build/m55}/libfacet.a
+    [ -f "$lib" ] || { echo "qcount: $lib missing (run the 52-helium suite first)"; exit 1; }
+    arm-none-eabi-gcc -mcpu=cortex-m55 -mfloat-abi=hard -mthumb -O2 -std=c99 -Iinclude -DARMCOUNT_PORT=helium \
+        -DARMCOUNT_F16_ONLY -DN=64 --specs=rdimon.specs -nostartfiles \
+        -T tests/cortexm/an547.ld tests/cortexm/startup_m55.c bench/report/armcount_main.c "$lib" -lm \
+        -o "$dir/m55f16.elf" || exit 1
+    timeout 300 qemu-system-arm -M mps3-an547 -nographic -semihosting-config enable=on,target=native \
+        -kernel "$dir/m55f16.elf" -singlestep -d exec,nochain -D "$dir/m55f16.trace" |
+        tr -d '\r' | grep -v '^armcount' > "$dir/m55f16.names" || exit 1
+    arm-none-eabi-objdump -d --no-show-raw-insn -m armv8.1-m.main "$dir/m55f16.elf" > "$dir/m55f16.dis"
+    rm -rf "$dir/m55f16.d" && mkdir -p "$dir/m55f16.d"
+    count "$dir/m55f16.elf" "$dir/m55f16.trace" cortex-m55 "$dir/m55f16.dis" "$dir/m55f16.d" "$dir/m55f16.names" \
+        armcount_begin armcount_end > "$dir/m55f16.calls"
+    rm -f "$dir/m55f16.trace"
+    mca "$dir/m55f16.calls" "$dir/m55f16.d"
+    [ -n "${QCOUNT_KEEP:-}" ] || rm -rf "$dir/m55f16.d"
     ;;
 rv64)
     NM=riscv64-linux-gnu-nm

@@ -6,7 +6,8 @@
 # objects from clang, ports/rvv/port.mk) if needed and counts brdf_hammon's
 # executed instructions per sample with bench/qcount/qcount.sh (on the M55
 # also llvm-mca-16's modelled cycles on the executed trace; the cycle
-# columns say why where llvm-mca-16 is missing).  Each section skipped,
+# columns say why where llvm-mca-16 is missing), and on the M55 every
+# kernel's binary16 batch against the f32 tiers (qcount.sh m55-f16).  Each section skipped,
 # with the reason, without its tools.
 set -u
 MAKE=${MAKE:-make}
@@ -71,6 +72,17 @@ for t in f32 f32_fast fx_fast; do
             printf "| %s | %s | %s | %s | %s | %s | %s | %.2fx | %s | %s |\n", t, s, sc, g, gc, c, cc, r, rc,
                    (r >= 3) ? "met" : "missed" }' build/qcount/gcc.txt build/qcount/clang.txt
 done
+echo
+echo "Binary16 (heliumfp16) against the helium f32 tiers, every kernel with an f16 form (bench/qcount/qcount.sh m55-f16; instr / cyc per sample as above, clang 14; ratios instructions / cycles; the last column heliumfp16 from gcc 12). Target (issue 22): brdf_hammon f16 >= 1.7x f32."
+echo
+echo "| kernel | f32 | f32_fast | f16 | f16 vs f32 | f16 vs f32_fast | f16 (gcc 12) |"
+echo "|---|---|---|---|---|---|---|"
+if sh bench/qcount/qcount.sh m55-f16 build/m55 2>/dev/null > build/qcount/f16-gcc.txt &&
+   sh bench/qcount/qcount.sh m55-f16 build/m55-clang 2>/dev/null > build/qcount/f16-clang.txt; then
+    sh bench/qcount/f16_rows.sh build/qcount/f16-gcc.txt build/qcount/f16-clang.txt
+else
+    echo "| (the count failed) | | | | | | |"
+fi
 echo
 awk '$6 + 0 > 0 { d = d (d ? ", " : "") $2 " " $3 " " $6 } END {
     if (d) printf "The cycles leave out the executed VMRS APSR_nzcv, FPSCR (the FP compare'"'"'s flags to the core; LLVM 16'"'"'s M55 model has no data for it), per sample: %s.\n\n", d }' \

@@ -3,10 +3,16 @@
 # vector ports, which this machine cannot time (called by report.sh):
 #   neon    aarch64 (build/aarch64, the 40-arm suite's cross build):
 #           llvm-mca (LLVM's cortex-a57 model) on the EXECUTED instruction
-#           trace of one batch call (qemu-aarch64 -singlestep -d
+#           trace of one batch call (qemu-aarch64 -cpu max -singlestep -d
 #           exec,nochain), callees and the tail included, / samples: MODELLED
 #           cycles per sample (one pass over the 64-sample trace: 4 passes
-#           changed brdf_hammon's figures by under 1.5 %)
+#           changed brdf_hammon's figures by under 1.5 %); and every call,
+#           the binary16 table neonfp16's too (format f16), on LLVM's
+#           cortex-a55 model (mca-cortex-a55): an ARMv8.2-A core with FP16
+#           whose model has its own entries for the binary16 vector forms
+#           (a .8h fadd or fmla costs what a .4s one does); the A57 model
+#           has no FP16 (cortex-a76 and neoverse-n1 map to it in LLVM 14
+#           and 16, and it charges a .8h op as a 64-bit one)
 #   helium  Cortex-M55 (build/m55-clang, the helium objects from clang 14,
 #           as the README's Helium table): instructions executed per sample
 #           under qemu-system-arm -M mps3-an547 (MEASURED instruction
@@ -23,9 +29,14 @@
 # fx_fast), from one image per target (bench/report/armcount_main.c); and
 # format f16 where the port's line of src/core/ports.def names an f16
 # table of its own (armcount_main.c finds it in the port list: the neon
-# line's neonfp16 on aarch64, ARMv8.2-A FP16 arithmetic, costed by the same
-# llvm-mca model with -mattr=+fullfp16; a port whose line runs the scalar
-# f16 table has "no f16 port yet", and picks one up when its line names one).
+# line's neonfp16 on aarch64, the helium line's heliumfp16 on the M55; a
+# port whose line runs the scalar f16 table has "no f16 port yet", and
+# picks one up when its line names one).  NEON is modelled twice: by the
+# A57 model for every format (one axis for the chooser; f16 with
+# -mattr=+fullfp16, though the A57 itself is ARMv8.0 without FP16
+# arithmetic), and by the A55 model (an FP16 core, which LLVM costs for
+# .8h like .4s) for every format too: the f16 / f32 ratios of the speed
+# section come from that one.
 # Writes OUT_DIR/arm_vec.tsv ("format port kernel measure value") and
 # OUT_DIR/arm_vec.status (per target "PORT ok HOW" or "PORT skipped WHY",
 # and "PORT-f16 ok HOW" or "PORT-f16 skipped WHY" for its binary16 table,
@@ -60,7 +71,7 @@ counts() {
         function hex(s,   i, n, c) { n = 0; s = tolower(s); sub(/^0x/, "", s)
             for (i = 1; i <= length(s); i++) { c = index("0123456789abcdef", substr(s, i, 1)); if (!c) break; n = n * 16 + c - 1 }
             return n }
-        FILENAME == ARGV[1] { if ($0 !~ /^ +[0-9a-f]+:\t/) next
+        FILENAME == ARGV[1] { if ($0 !~ /^ *[0-9a-f]+:\t/) next
             n = split($0, f, "\t"); a = f[1]; sub(/^ +/, "", a); sub(/:$/, "", a)
             t = f[2]; for (i = 3; i <= n; i++) t = t "\t" f[i]
             if (raw) { text[hex(a)] = t; next }
@@ -90,8 +101,8 @@ f16status() {
 }
 
 # ---- NEON (aarch64): llvm-mca on the executed trace -------------------------
-cpu=cortex-a57
-neon_f16_how="llvm-mca -mcpu=$cpu -mattr=+fullfp16 on the executed trace (the A57 itself is ARMv8.0, without FP16 arithmetic: LLVM 14 schedules A72, A76 and Neoverse N1 with the same model)"
+cpu=cortex-a57 cpu16=cortex-a55
+neon_f16_how="llvm-mca -mcpu=$cpu -mattr=+fullfp16 on the executed trace (the A57 itself is ARMv8.0, without FP16 arithmetic: LLVM 14 schedules A72, A76 and Neoverse N1 with the same model), and -mcpu=$cpu16 (an FP16 core) for the f16 / f32 ratios"
 if ! have aarch64-linux-gnu-gcc || ! have qemu-aarch64 || ! have llvm-mca; then
     status "neon skipped: not installed: $(missing aarch64-linux-gnu-gcc qemu-aarch64 llvm-mca)"
     status "neon-f16 skipped: not installed: $(missing aarch64-linux-gnu-gcc qemu-aarch64 llvm-mca)"
@@ -101,14 +112,14 @@ elif ! $MAKE -s BUILD=build/aarch64 CC=aarch64-linux-gnu-gcc CFLAGS="-O2 -g" bui
 elif fresh "$dir/neon.tsv" build/aarch64/libfacet.a bench/report/armcount_main.c bench/report/arm_targets.sh &&
      [ -s "$dir/neon.f16" ]; then
     cat "$dir/neon.tsv" >> "$out/arm_vec.tsv"
-    status "neon ok llvm-mca -mcpu=$cpu on the executed trace (cached)"
+    status "neon ok llvm-mca -mcpu=$cpu on the executed trace, every tier also -mcpu=$cpu16 (cached)"
     f16status neon - "$neon_f16_how (cached)"
 else
     NM=aarch64-linux-gnu-nm
     rm -rf "$dir/neon.d" && mkdir -p "$dir/neon.d"
     if aarch64-linux-gnu-gcc -O2 -std=c99 -static -Iinclude -DARMCOUNT_PORT=neon -DN=$samples \
             bench/report/armcount_main.c build/aarch64/libfacet.a -lm -o "$dir/neon.elf" 2> "$dir/neon.log" &&
-       qemu-aarch64 -singlestep -d exec,nochain -D "$dir/neon.trace" "$dir/neon.elf" > "$dir/neon.labels" 2>> "$dir/neon.log"; then
+       qemu-aarch64 -cpu max -singlestep -d exec,nochain -D "$dir/neon.trace" "$dir/neon.elf" > "$dir/neon.labels" 2>> "$dir/neon.log"; then
         aarch64-linux-gnu-objdump -d --no-show-raw-insn "$dir/neon.elf" > "$dir/neon.dis"
         grep -v '^armcount' "$dir/neon.labels" > "$dir/neon.lab"
         counts "$dir/neon.elf" "$dir/neon.dis" "$dir/neon.trace" "$dir/neon.lab" "$dir/neon.d" > "$dir/neon.calls"
@@ -120,6 +131,9 @@ else
             c=$(llvm-mca -mtriple=aarch64 -mcpu=$cpu $attr -iterations=1 "$dir/neon.d/$i.s" 2>> "$dir/neon.log" |
                 awk -v n=$samples '/^Iterations:/ {it = $2} /^Total Cycles:/ {c = $3} END { if (it) printf "%.2f", c / it / n }')
             [ -n "$c" ] && echo "$fmt neon $k mca-$cpu $c" >> "$dir/neon.tsv.tmp"
+            c=$(llvm-mca -mtriple=aarch64 -mcpu=$cpu16 -iterations=1 "$dir/neon.d/$i.s" 2>> "$dir/neon.log" |
+                awk -v n=$samples '/^Iterations:/ {it = $2} /^Total Cycles:/ {c = $3} END { if (it) printf "%.2f", c / it / n }')
+            [ -n "$c" ] && echo "$fmt neon $k mca-$cpu16 $c" >> "$dir/neon.tsv.tmp"
             echo "$fmt neon $k qemu-insn $(awk -v i="$insns" -v n=$samples 'BEGIN { printf "%.1f", i / n }')" >> "$dir/neon.tsv.tmp"
             i=$((i + 1))
         done < "$dir/neon.calls"
@@ -127,7 +141,7 @@ else
         if [ -s "$dir/neon.tsv.tmp" ]; then
             mv "$dir/neon.tsv.tmp" "$dir/neon.tsv"
             cat "$dir/neon.tsv" >> "$out/arm_vec.tsv"
-            status "neon ok llvm-mca -mcpu=$cpu on the executed trace"
+            status "neon ok llvm-mca -mcpu=$cpu on the executed trace, every tier also -mcpu=$cpu16"
             f16status neon "$dir/neon.labels" "$neon_f16_how"
         else
             status "neon skipped: no call was traced ($dir/neon.log)"

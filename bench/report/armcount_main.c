@@ -12,7 +12,9 @@
  * an f16 table is counted with no change here; the line
  * "armcount-f16: TABLE" says which ("none": the line runs the scalar f16
  * table, i.e. the port has no f16 code of its own, and nothing is
- * counted).  Inputs: the same values as binary16 bits. */
+ * counted).  Inputs: the same values as binary16 bits.
+ * ARMCOUNT_F16_ONLY: only the kernels with an f16 form, in f32, f32_fast
+ * and f16 (bench/qcount/qcount.sh m55-f16). */
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
@@ -21,6 +23,7 @@
 #include "../../src/core/port.h"
 #include "../../src/core/platform.h"
 #include "../../src/core/f16_port.h"
+#include "facet/f16.h"
 
 #ifndef N
 #define N 64
@@ -85,6 +88,19 @@ static uint16_t h_of(float x)
 #define F_ARG_(input, domain) fin[D_##domain]
 #define Q_ARG_(input, domain) qin[D_##domain]
 
+#ifdef ARMCOUNT_F16_ONLY
+static int has_f16(const char *name)
+{
+    const facet_f16_kernel *k = facet_f16_kernel_find(name);
+    return k && k->f16;
+}
+#define WANT_(name) has_f16(#name)
+#define FX_WANT_ 0
+#else
+#define WANT_(name) 1
+#define FX_WANT_ 1
+#endif
+
 int main(void)
 {
     uint32_t s = 12345;
@@ -104,10 +120,12 @@ int main(void)
     armcount_begin(id); (tab.name ? tab.name : fb.name)(outp, __VA_ARGS__, N); armcount_end(id++); \
     printf("%s %s\n", fmt, #name);
 #define FACET_KERNEL(name, NAME, n, fx_type, fx_frac, fx_max, fx_format, fx_code, ...) \
+    if (WANT_(name)) { \
     CALL_(F32, facet_port_scalar_f32, "f32", name, out, FACET_MAP_INPUTS(n, F_ARG_, __VA_ARGS__)) \
-    CALL_(F32_FAST, facet_port_scalar_f32_fast, "f32_fast", name, out, FACET_MAP_INPUTS(n, F_ARG_, __VA_ARGS__)) \
+    CALL_(F32_FAST, facet_port_scalar_f32_fast, "f32_fast", name, out, FACET_MAP_INPUTS(n, F_ARG_, __VA_ARGS__)) } \
+    if (FX_WANT_) { \
     FACET_IF_PRECISE(fx_code, CALL_(FX, facet_fx_port_scalar, "fx", name, (fx_type *)(void *)qout, FACET_MAP_INPUTS(n, Q_ARG_, __VA_ARGS__))) \
-    FACET_IF_FX(fx_type, CALL_(FX_FAST, facet_fx_fast_port_scalar, "fx_fast", name, (fx_type *)(void *)qout, FACET_MAP_INPUTS(n, Q_ARG_, __VA_ARGS__)))
+    FACET_IF_FX(fx_type, CALL_(FX_FAST, facet_fx_fast_port_scalar, "fx_fast", name, (fx_type *)(void *)qout, FACET_MAP_INPUTS(n, Q_ARG_, __VA_ARGS__))) }
 #include "../../src/core/kernels.def"
 #undef FACET_KERNEL
     {

@@ -237,6 +237,61 @@ static void vector_table(report *r, report_data *D)
         doc_para(r->doc, "No vector-port costs in this build (arm_vec.tsv empty: see the status above).");
 }
 
+/* binary16 against f32 on the Arm ports (issue 22): the f16 table of neon
+ * (neonfp16, llvm-mca's Cortex-A55 model: the A57 has no FP16) and helium
+ * (heliumfp16, instructions and llvm-mca-16's Cortex-M55 cycles) */
+static const char *f16_cell(char *b, size_t n, report_data *D, const char *kn, const char *port, const char *measure,
+                            double *ratio)
+{
+    double p = data_armvec(D, "f32", port, kn, measure), f = data_armvec(D, "f32_fast", port, kn, measure);
+    double h = data_armvec(D, "f16", port, kn, measure);
+    *ratio = -1;
+    if (p <= 0 || f <= 0 || h <= 0)
+        return "-";
+    *ratio = p / h;
+    return report_fmt(b, n, "%.1f / %.1f / %.1f = %.2fx / %.2fx", p, f, h, p / h, f / h);
+}
+
+static void f16_arm_table(report *r, report_data *D)
+{
+    static const struct { const char *port, *measure; } v[] = {
+        { "neon", "mca-cortex-a55" }, { "helium", "qemu-insn" }, { "helium", "mca-cortex-m55" },
+    };
+    size_t ki, i;
+    int any = 0;
+    doc_para(r->doc, "Binary16 (f16) against f32 on the Arm ports (bench/report/arm_targets.sh, the same traces): "
+             "<b>NEON</b> neonfp16 in cycles per sample MODELLED by llvm-mca's Cortex-A55 model (an ARMv8.2-A "
+             "core with FP16; the A57 model has none), <b>Helium</b> heliumfp16 in executed instructions "
+             "MEASURED under qemu and cycles MODELLED by llvm-mca-16's Cortex-M55 model. Cells: f32 / f32_fast / "
+             "f16 = f16 against f32 / against f32_fast. Target (issue 22): brdf_hammon f16 >= 1.7x f32 on each.");
+    doc_table(r->doc, 5, "kernel", "NEON, A55 model cycles", "Helium, instructions", "Helium, M55 model cycles",
+              "brdf_hammon >= 1.7x f32");
+    for (ki = 0; ki < facet_kernel_count(); ki++) {
+        const char *kn = facet_kernel_at(ki)->name;
+        char b[5][96];
+        const char *cells[5];
+        double ratio[3];
+        int have = 0, met = 1;
+        cells[0] = kn;
+        for (i = 0; i < 3; i++) {
+            cells[1 + i] = f16_cell(b[1 + i], sizeof b[1 + i], D, kn, v[i].port, v[i].measure, &ratio[i]);
+            if (ratio[i] > 0) {
+                have++;
+                if (ratio[i] < 1.695) /* two decimals, as printed */
+                    met = 0;
+            }
+        }
+        if (!have)
+            continue;
+        cells[4] = strcmp(kn, "brdf_hammon") ? "" : met ? "met" : "**missed**";
+        doc_row(r->doc, cells);
+        any = 1;
+    }
+    doc_table_end(r->doc);
+    if (!any)
+        doc_para(r->doc, "No f16 costs on the Arm ports in this build (arm_vec.tsv has no f16 rows: see the status above).");
+}
+
 void section_speed(report *r)
 {
     report_data *D = r->data;
@@ -246,6 +301,7 @@ void section_speed(report *r)
     if (!D->n_speed) {
         doc_para(r->doc, "No speed run in this measured set (a set recorded before the speed table existed).");
         vector_table(r, D);
+        f16_arm_table(r, D);
         return;
     }
     doc_para(r->doc, "Method (bench/harness/speed_bench.c, the same engine as <code>facet-bench speed</code>; this "
@@ -272,4 +328,5 @@ void section_speed(report *r)
     x86_table(r, D);
     f16_table(r, D);
     vector_table(r, D);
+    f16_arm_table(r, D);
 }

@@ -7,9 +7,11 @@
  *
  * Binary16 ops: vaddph, vmulph, vfmadd...ph, vminph/vmaxph, vcmpph into
  * mask registers.  Reciprocal and rsqrt: vrcpph / vrsqrtph (relative error
- * < 1.5 * 2^-12 by the architecture) and one Newton step each in binary16,
- * which leaves the step's own rounding; quotients a rcp(b), roots
- * x rsqrt(x).  The f32 lanes (FACET_W: two __m512, the low and the high 16
+ * < 2^-11 + 2^-14 by the architecture: Intel SDM, VRCPPH and VRSQRTPH; the
+ * Intrinsics Guide says 1.5 * 2^-12) and one Newton step each in binary16,
+ * which takes it to 2^-21 before the step's own rounding; quotients
+ * a rcp(b), roots x rsqrt(x).  Checked with this CPU's estimates and with
+ * estimates at the bound (FACET_AVX512FP16_TEST_WORST_ESTIMATES).  The f32 lanes (FACET_W: two __m512, the low and the high 16
  * lanes) use vcvtph2psx / vcvtps2phx and the AVX-512F estimates
  * vrcp14ps / vrsqrt14ps (2^-14) unrefined: what they feed is narrowed to
  * binary16 (2^-11) afterwards. */
@@ -55,14 +57,47 @@ FACET_INLINE __m512h facet_avx512fp16_h_keep_ord4(__m512h r, __m512h a, __m512h 
     return _mm512_mask_blend_ph(_mm512_mask_cmp_ph_mask(_mm512_cmp_ph_mask(a, b, _CMP_ORD_Q), c, d, _CMP_ORD_Q),
                                 _mm512_setzero_ph(), r);
 }
+#ifdef FACET_AVX512FP16_TEST_WORST_ESTIMATES
+/* Test builds only (tests/suites/15-worst-estimates.sh): per lane the
+ * binary16 value farthest from the exact 1/x (rs = 0) or 1/sqrt(x) (rs = 1)
+ * whose relative error is still below the SDM's bound 2^-11 + 2^-14: the
+ * nearest one, or one or two steps of the last bit away from it, on the
+ * side bit 2 of x picks (so that it varies).  x: 16 positive normals. */
+FACET_INLINE __m256h facet_avx512fp16_worst16_(__m256h x, int rs)
+{
+    const __m512 one = _mm512_set1_ps(1.0f), bound = _mm512_set1_ps(5.4931640625e-04f); /* 2^-11 + 2^-14 */
+    __m512 xf = _mm512_cvtxph_ps(x), root = _mm512_sqrt_ps(xf);
+    __m512 exact = _mm512_div_ps(one, rs ? root : xf), scale = rs ? root : xf;
+    __m256i xb = _mm256_castph_si256(x), r0 = _mm256_castph_si256(_mm512_cvtxps_ph(exact));
+    __m256i s = _mm256_sub_epi16(_mm256_slli_epi16(_mm256_and_si256(_mm256_srli_epi16(xb, 2), _mm256_set1_epi16(1)), 1),
+                                 _mm256_set1_epi16(1));
+    __m256i r1 = _mm256_add_epi16(r0, s), r2 = _mm256_add_epi16(r1, s);
+    __m512 e1 = _mm512_abs_ps(_mm512_fmsub_ps(_mm512_cvtxph_ps(_mm256_castsi256_ph(r1)), scale, one));
+    __m512 e2 = _mm512_abs_ps(_mm512_fmsub_ps(_mm512_cvtxph_ps(_mm256_castsi256_ph(r2)), scale, one));
+    __m256i r = _mm256_mask_blend_epi16(_mm512_cmp_ps_mask(e1, bound, _CMP_LT_OQ), r0, r1);
+    return _mm256_castsi256_ph(_mm256_mask_blend_epi16(_mm512_cmp_ps_mask(e2, bound, _CMP_LT_OQ), r, r2));
+}
+FACET_INLINE __m512h facet_avx512fp16_worst_(__m512h x, int rs)
+{
+    __m512i b = _mm512_castph_si512(x);
+    __m256i lo = _mm256_castph_si256(facet_avx512fp16_worst16_(_mm256_castsi256_ph(_mm512_castsi512_si256(b)), rs));
+    __m256i hi = _mm256_castph_si256(facet_avx512fp16_worst16_(_mm256_castsi256_ph(_mm512_extracti64x4_epi64(b, 1)), rs));
+    return _mm512_castsi512_ph(_mm512_inserti64x4(_mm512_castsi256_si512(lo), hi, 1));
+}
+#define facet_avx512fp16_rcp_est_(x) facet_avx512fp16_worst_((x), 0)
+#define facet_avx512fp16_rsqrt_est_(x) facet_avx512fp16_worst_((x), 1)
+#else
+#define facet_avx512fp16_rcp_est_(x) _mm512_rcp_ph(x)
+#define facet_avx512fp16_rsqrt_est_(x) _mm512_rsqrt_ph(x)
+#endif
 FACET_INLINE __m512h facet_avx512fp16_h_rcp(__m512h x)
 {
-    __m512h r = _mm512_rcp_ph(x);
+    __m512h r = facet_avx512fp16_rcp_est_(x);
     return _mm512_fmadd_ph(r, _mm512_fnmadd_ph(x, r, FACET_AVX512FP16_C_(1.0f)), r);
 }
 FACET_INLINE __m512h facet_avx512fp16_h_rsqrt(__m512h x)
 {
-    __m512h y = _mm512_rsqrt_ph(x);
+    __m512h y = facet_avx512fp16_rsqrt_est_(x);
     __m512h e = _mm512_fnmadd_ph(_mm512_mul_ph(x, y), y, FACET_AVX512FP16_C_(1.0f));
     return _mm512_fmadd_ph(_mm512_mul_ph(FACET_AVX512FP16_C_(0.5f), y), e, y);
 }

@@ -8,9 +8,9 @@
  * compiler, and carries the bits through untouched.  facet_f32_from_f16 and
  * facet_f16_from_f32 convert (exactly, and rounded to nearest even).
  *
- * Computation: in binary16 lanes (AVX-512 FP16: 32 per zmm register; the
- * scalar port, the specification, emulates binary16 in portable C:
- * facet/f16_scalar.h), except the few operations binary16 cannot hold,
+ * Computation: in binary16 lanes (AVX-512 FP16: 32 per zmm register; ARMv8.2
+ * FP16 NEON and Helium MVE: 8 per q register; the scalar port, the
+ * specification, emulates binary16 in portable C: facet/f16_scalar.h), except the few operations binary16 cannot hold,
  * which run in f32 lanes from the exact binary16 inputs: ggx_d's
  * d = 1 - N.H^2 + alpha^2 N.H^2 and its quotient, and brdf_hammon's
  * specular factor D Vis and Fresnel power (the peak 2 + 2 L.V - (N.L + N.V)^2
@@ -62,13 +62,28 @@
  * over 1,000,000 under qemu-aarch64 (Arm's frecpe/frsqrte are defined bit
  * for bit by the architecture, so the emulator computes what the hardware
  * does); neonfp16's 8-bit estimates plus one step make noh, loh and the
- * Smith terms its largest.
+ * Smith terms its largest.  heliumfp16 (MVE: no estimate instruction; bit
+ * seeds and two Newton steps, facet/heliumfp16.h) over 2,000,000 under
+ * qemu-system-arm -M mps3-an547 (Cortex-M55), within every bound: noh
+ * 1.55e-3, loh 9.77e-4, fresnel_schlick 2.13e-3, ggx_d 1.41e-3, smith_vis
+ * 1.93e-3, smith_vis_hammon 1.53e-3, diffuse_hammon 3.82e-3, brdf_hammon
+ * 3.58e-3, lambert 6.28e-4.  avx512fp16 also holds them with vrcpph /
+ * vrsqrtph replaced by values off by just under their architectural bound
+ * 2^-11 + 2^-14 (tests/suites/15-worst-estimates.sh).
+ *
+ * Speed on the Arm ports (ports/README.md, "Binary16"): f16 against f32
+ * 1.8x to 2.4x on Helium (Cortex-M55: qemu instructions, llvm-mca-16
+ * cycles) and 2.3x to 3.6x on NEON (llvm-mca's Cortex-A55 model) for the
+ * binary16-only kernels, but brdf_hammon 1.01x / 1.09x on Helium and 1.51x
+ * on NEON (target 1.7x: missed; its f32-lane part costs what it saves, and
+ * on MVE's 8 Q registers the f32 lanes spill).  No RISC-V Zvfh port:
+ * nothing here can detect Zvfh at run time (ports/README.md).
  *
  * Ways in: facet_<kernel>_f16 (one sample, the scalar port),
  * facet_<kernel>_f16_batch (any count, any alignment, out may be an input:
  * the best f16 port for this CPU), inline facet_<kernel>_f16_<port>
  * (facet/f16_scalar.h on float-held binary16 values, facet/avx512fp16.h on
- * __m512h, facet/neonfp16.h on float16x8_t).  Which kernels have an f16 form, and why the others do not:
+ * __m512h, facet/neonfp16.h and facet/heliumfp16.h on float16x8_t).  Which kernels have an f16 form, and why the others do not:
  * src/core/f16_kernels.def (`facet list --formats`). */
 #ifndef FACET_F16_H
 #define FACET_F16_H
@@ -97,8 +112,9 @@ void facet_f32_from_f16_batch(float *out, const facet_f16 *in, size_t n);
 /* The f16 port running the batches: "avx512fp16" where the CPU has
  * AVX-512 FP16 (CPUID.(EAX=7,ECX=0):EDX[23], with AVX-512 BW and VL, and
  * the OS saving ZMM state) and the active port (facet_set_port) is
- * avx512; "neonfp16" on aarch64 where HWCAP has FPHP and ASIMDHP; else
- * "scalar".  facet_f16_port_supported(name): 1 where this CPU
+ * avx512; "neonfp16" on aarch64 where HWCAP has FPHP and ASIMDHP;
+ * "heliumfp16" on Armv8.1-M where MVFR1.MVE is 2 (MVE with floating point:
+ * Cortex-M55, M85) and the active port is helium; else "scalar".  facet_f16_port_supported(name): 1 where this CPU
  * runs it; facet_f16_port_refusal(name): why not (NULL where it does, or
  * for an unknown name). */
 const char *facet_f16_port_name(void);

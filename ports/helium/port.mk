@@ -3,7 +3,8 @@
 # with e.g. CFLAGS="-mcpu=cortex-m55 -mfloat-abi=hard -mthumb"; the
 # dispatcher asks MVFR1 at run time, src/core/cpu.c).  tests/ports/helium.mk links the
 # test images; tests/suites/52-helium.sh runs them on qemu's mps3-an547.
-# HELIUM_CC: the compiler of the two port objects alone (default $(CC));
+# HELIUM_CC: the compiler of the port objects alone (these two and
+# ports/heliumfp16/f16_heliumfp16.o; default $(CC));
 # HELIUM_CC=clang builds them with clang 14 for the same core
 # (--target=arm-none-eabi, newlib's headers, gcc's short enums), which
 # spills far fewer Q registers than gcc 12 (README "Helium").

@@ -10,9 +10,11 @@
 #include "../lib/sample.h"
 
 /* the f16 tables are reached through the f32 port that carries them
- * (src/core/ports.def's f16 column): scalar, and avx512 for avx512fp16 */
+ * (src/core/ports.def's f16 column): scalar, avx512 for avx512fp16, neon
+ * for neonfp16, helium for heliumfp16 */
 typedef struct { const char *f16, *via; } f16t_port;
-static const f16t_port f16t_ports[] = { { "scalar", "scalar" }, { "avx512fp16", "avx512" }, { "neonfp16", "neon" } };
+static const f16t_port f16t_ports[] = { { "scalar", "scalar" }, { "avx512fp16", "avx512" }, { "neonfp16", "neon" },
+                                        { "heliumfp16", "helium" } };
 #define F16T_N_PORTS (sizeof f16t_ports / sizeof f16t_ports[0])
 
 /* select port j for the f16 batches; 0 if this build or CPU cannot */

@@ -6,8 +6,9 @@
 # and pcc (non-GNU C compilers), and g++ as C++11 and C++17 (-pedantic
 # -Wall -Wextra -Werror; C++11 has no hex-float literals, so the headers
 # spell their powers of two as exact decimals).  The port headers that need ISA flags get them (x86 only; the
-# ARM and RISC-V headers are compiled by their suites).  A compiler that is
-# missing is named and its checks skipped.
+# NEON and RISC-V headers are compiled by their suites; the Helium ones,
+# f32 and binary16, also here with the Cortex-M55's gcc, clang and g++).  A
+# compiler that is missing is named and its checks skipped.
 pass=0 fail=0 skip=0
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAIL headers: $*"; }
@@ -23,7 +24,7 @@ isa() {
     facet/avx2.h) [ -n "$x86" ] && echo "-mavx2 -mfma" || echo skip ;;
     facet/avx512.h) [ -n "$x86" ] && echo "-mavx512f -mavx2 -mfma" || echo skip ;;
     facet/avx512fp16.h) [ -n "$x86" ] && echo "-mavx512fp16 -mavx512bw -mavx512vl -mavx512f" || echo skip ;;
-    facet/neon.h | facet/neonfp16.h | facet/helium.h | facet/rvv.h) echo skip ;;
+    facet/neon.h | facet/neonfp16.h | facet/helium.h | facet/heliumfp16.h | facet/rvv.h) echo skip ;;
     *) echo "" ;;
     esac
 }
@@ -63,11 +64,31 @@ for h in $headers; do
     if have g++; then try c++17-old-style-cast $h g++ -std=c++17 -Wall -Wextra -Wold-style-cast -Werror $f; fi
 done
 if have arm-none-eabi-g++; then
-    try c++17-old-style-cast facet/helium.h arm-none-eabi-g++ -std=c++17 -Wall -Wextra -Wold-style-cast -Werror \
-        -mcpu=cortex-m55 -mfloat-abi=hard -mthumb
+    for h in facet/helium.h facet/heliumfp16.h; do
+        try c++17-old-style-cast $h arm-none-eabi-g++ -std=c++17 -Wall -Wextra -Wold-style-cast -Werror \
+            -mcpu=cortex-m55 -mfloat-abi=hard -mthumb
+    done
     try c++17-old-style-cast facet/neon.h arm-none-eabi-g++ -std=c++17 -Wall -Wextra -Wold-style-cast -Werror \
         -mcpu=cortex-a53 -mfpu=neon-fp-armv8 -mfloat-abi=hard -marm
 fi
+# the Helium headers (f32 and binary16) with the Cortex-M55's compilers:
+# arm-none-eabi-gcc and clang as strict C99, arm-none-eabi-g++ as C++11 and
+# C++17 (-pedantic); the generic compilers cannot take MVE intrinsics
+m55="-mcpu=cortex-m55 -mfloat-abi=hard -mthumb"
+for h in facet/helium.h facet/heliumfp16.h; do
+    if have arm-none-eabi-gcc; then
+        try gcc-c99-m55 $h arm-none-eabi-gcc -std=c99 -pedantic -Wall -Wextra -Werror $m55
+        if have clang; then
+            try clang-c99-m55 $h clang --target=arm-none-eabi -fshort-enums \
+                -isystem "$(dirname "$(arm-none-eabi-gcc -print-file-name=libc.a)")/../include" \
+                -std=c99 -pedantic -Wall -Wextra -Werror $m55
+        fi
+    fi
+    if have arm-none-eabi-g++; then
+        try c++11-m55 $h arm-none-eabi-g++ -std=c++11 -pedantic -Wall -Wextra -Werror $m55
+        try c++17-m55 $h arm-none-eabi-g++ -std=c++17 -pedantic -Wall -Wextra -Werror $m55
+    fi
+done
 for c in clang g++ tcc pcc; do
     if ! have $c; then
         echo "SKIP headers: $c not installed (apt-get install $c)"

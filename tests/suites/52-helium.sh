@@ -11,12 +11,23 @@
 #   test_fx_hash       the pinned hashes of the scalar kernels on the M55
 #   test_sample_ports, test_f32_bad_input  the samplers' and the bad-input contracts
 #   test_f32_rgb, test_fx_rgb  the RGB batches (every layout, tail, alias) and RGB fixed point
+#   test_f16_accuracy  every f16 kernel on heliumfp16 (MVE binary16 lanes),
+#                      the scalar table and the per-sample entry at the
+#                      facet/f16.h bounds (30000 random samples a kernel)
+#   test_f16_ports     the f16 bad-input, saturation, tail and alias
+#                      contracts on heliumfp16, and the port choice
+#   test_f16_estimates heliumfp16's seeded rcp and rsqrt (binary16 and f32
+#                      lanes) exhaustively against their stated errors
 # helium-cycles: brdf_hammon's executed instructions and llvm-mca-16's
 # Cortex-M55 cycles per sample (bench/qcount/qcount.sh m55, both builds)
 # must be ports/README.md's Helium table (qemu's counts and the model are
 # deterministic; compared with the gcc 12 / clang 14 the table names, shown
 # otherwise), every call modelled (no instruction llvm-mca-16 rejects), and
 # a copy of the table with one figure changed must fail the comparison.
+# helium-f16-cycles: the same count for every kernel with a binary16 form
+# (bench/qcount/qcount.sh m55-f16: helium f32, f32_fast and heliumfp16
+# f16, both builds) must be ports/README.md's Helium binary16 table
+# (bench/qcount/f16_rows.sh), with the same self-test.
 # Skipped, with the reason, where the toolchain or qemu is missing.
 # lane: emulators
 . tests/lib/suite_lib.sh
@@ -31,8 +42,8 @@ if ! have qemu-system-arm; then
     echo "helium: 0 passed, 0 failed, 1 skipped"
     exit 0
 fi
-# build/m55: everything with arm-none-eabi-gcc; build/m55-clang: the two
-# helium objects with clang (HELIUM_CC, ports/helium/port.mk; the README's
+# build/m55: everything with arm-none-eabi-gcc; build/m55-clang: the three
+# helium objects (f32, fx, f16) with clang (HELIUM_CC, ports/helium/port.mk; the README's
 # instruction counts), its port tests only.  Skipped without clang.
 m55() { # m55 DIR LABEL HELIUM_CC TESTS...
     dir=$1 label=$2 hcc=$3
@@ -52,9 +63,11 @@ m55() { # m55 DIR LABEL HELIUM_CC TESTS...
     done
 }
 m55 build/m55 helium arm-none-eabi-gcc test_f32_ports test_f32_accuracy test_fx_ports test_fx_hash \
-    test_sample_ports test_sample_small test_f32_bad_input test_f32_rgb test_fx_rgb test_tails
+    test_sample_ports test_sample_small test_f32_bad_input test_f32_rgb test_fx_rgb test_tails \
+    test_f16_accuracy test_f16_ports test_f16_estimates
 if have clang; then
-    m55 build/m55-clang helium-clang clang test_f32_ports test_f32_accuracy test_fx_ports test_sample_ports
+    m55 build/m55-clang helium-clang clang test_f32_ports test_f32_accuracy test_fx_ports test_sample_ports \
+        test_f16_accuracy test_f16_ports test_f16_estimates
 else
     echo "SKIP helium-clang: clang missing (apt-get install clang)"
     echo "helium-clang: 0 passed, 0 failed, 1 skipped"
@@ -107,4 +120,30 @@ else
         fi
     fi
     echo "helium-cycles: $cp passed, $cf failed, 0 skipped"
+    # helium-f16-cycles (above)
+    fp=0 ff=0 gv=$(arm-none-eabi-gcc -dumpversion) clv=$(clang -dumpversion)
+    fbad() { ff=$((ff + 1)); echo "FAIL helium-f16-cycles: $*"; }
+    if ! sh bench/qcount/qcount.sh m55-f16 build/m55 > build/qcount/m55f16-gcc.txt 2> build/qcount/m55f16.log ||
+       ! sh bench/qcount/qcount.sh m55-f16 build/m55-clang > build/qcount/m55f16-clang.txt 2>> build/qcount/m55f16.log ||
+       ! sh bench/qcount/f16_rows.sh build/qcount/m55f16-gcc.txt build/qcount/m55f16-clang.txt > build/qcount/m55f16.rows ||
+       [ "$(grep -c . build/qcount/m55f16.rows)" -ne "$(grep -c ', f16, ' src/core/f16_kernels.def)" ]; then
+        fbad "the count did not run or missed a kernel (build/qcount/m55f16.log, build/qcount/m55f16.rows)"
+    else
+        sed 's/^/helium-f16-cycles: /' build/qcount/m55f16.rows
+        if awk '$5 == "-" { exit 1 }' build/qcount/m55f16-gcc.txt build/qcount/m55f16-clang.txt; then fp=$((fp + 1))
+        else fbad "a call without modelled cycles (llvm-mca-16 rejected its trace: QCOUNT_KEEP=1 keeps build/qcount/m55f16.d)"; fi
+        # fcompare README: every row present (prints the first miss)
+        fcompare() { while IFS= read -r r; do grep -qF -- "$r" "$1" || { echo "$r"; return 1; }; done < build/qcount/m55f16.rows; }
+        if [ "${gv%%.*}" = 12 ] && [ "${clv%%.*}" = 14 ]; then
+            if miss=$(fcompare ports/README.md); then fp=$((fp + 1))
+            else fbad "ports/README.md's Helium binary16 table lacks the measured row: $miss"; fi
+            sed 's/^| brdf_hammon | \([0-9.]*\) \/ \([0-9]\)/| brdf_hammon | \1 \/ 9\2/' ports/README.md > build/qcount/README.f16broken.md
+            if cmp -s ports/README.md build/qcount/README.f16broken.md; then fbad "self-test: no brdf_hammon row to break"
+            elif fcompare build/qcount/README.f16broken.md > /dev/null; then fbad "self-test: a changed figure passes the comparison"
+            else fp=$((fp + 1)); fi
+        else
+            echo "helium-f16-cycles: arm-none-eabi-gcc $gv, clang $clv: the figures are shown, not compared (ports/README.md: gcc 12, clang 14)"
+        fi
+    fi
+    echo "helium-f16-cycles: $fp passed, $ff failed, 0 skipped"
 fi
