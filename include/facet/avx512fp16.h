@@ -176,13 +176,12 @@ FACET_INLINE facet_avx512fp16_w facet_avx512fp16_h_widen(__m512h v)
     r.hi = _mm512_cvtxph_ps(_mm256_castsi256_ph(_mm512_extracti64x4_epi64(b, 1)));
     return r;
 }
-/* min(x, 65504) rounded to binary16 (vcvtps2phx: the MXCSR rounding, to
- * nearest even) */
+/* x rounded to binary16 (vcvtps2phx: the MXCSR rounding, to nearest even;
+ * from 65520 on +Inf) */
 FACET_INLINE __m512h facet_avx512fp16_h_narrow(facet_avx512fp16_w x)
 {
-    __m512 m = _mm512_set1_ps(65504.0f);
-    __m256i lo = _mm256_castph_si256(_mm512_cvtxps_ph(_mm512_min_ps(x.lo, m)));
-    __m256i hi = _mm256_castph_si256(_mm512_cvtxps_ph(_mm512_min_ps(x.hi, m)));
+    __m256i lo = _mm256_castph_si256(_mm512_cvtxps_ph(x.lo));
+    __m256i hi = _mm256_castph_si256(_mm512_cvtxps_ph(x.hi));
     return _mm512_castsi512_ph(_mm512_inserti64x4(_mm512_castsi256_si512(lo), hi, 1));
 }
 
