@@ -159,11 +159,8 @@ FACET_INLINE float facet_scalar_h_w_sqr_err(float a, float p) { return facet_sca
 FACET_INLINE float facet_scalar_h_w_rcp(float x) { return 1.0f / x; }
 FACET_INLINE float facet_scalar_h_w_rsqrt(float x) { return facet_scalar_rsqrt(x); }
 FACET_INLINE float facet_scalar_h_widen(float x) { return x; }
-/* x >= 0 (or NaN-free): min(x, 65504), rounded to binary16 */
-FACET_INLINE float facet_scalar_h_narrow(float x)
-{
-    return facet_f16_scalar_r_(x < 65504.0f ? x : 65504.0f);
-}
+/* x >= 0, rounded to binary16 (from 65520 on: +Inf, as IEEE converts) */
+FACET_INLINE float facet_scalar_h_narrow(float x) { return facet_f16_scalar_r_(x); }
 
 #define FACET_V float
 #define FACET_W float

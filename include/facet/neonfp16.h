@@ -136,10 +136,10 @@ FACET_INLINE facet_neonfp16_w facet_neonfp16_h_widen(float16x8_t v)
     r.hi = vcvt_high_f32_f16(v);
     return r;
 }
+/* rounded to binary16 by the FPCR (to nearest even; from 65520 on +Inf) */
 FACET_INLINE float16x8_t facet_neonfp16_h_narrow(facet_neonfp16_w x)
 {
-    float32x4_t m = vdupq_n_f32(65504.0f);
-    return vcvt_high_f16_f32(vcvt_f16_f32(vminq_f32(x.lo, m)), vminq_f32(x.hi, m));
+    return vcvt_high_f16_f32(vcvt_f16_f32(x.lo), x.hi);
 }
 
 /* whole vectors and tails (the tail staged through 8 values, 0.5 in the

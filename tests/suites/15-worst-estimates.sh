@@ -2,11 +2,11 @@
 # FMA) with their rcp/rsqrt estimates replaced by values off by the
 # architectural error bound (1.5 * 2^-12, 2^-14): the Newton steps must keep every
 # kernel inside its bound whatever a vendor's tables return.  And the
-# binary16 port avx512fp16 with vrcpph / vrsqrtph replaced by the binary16
-# value farthest from the exact result within their bound (2^-11 + 2^-14,
-# Intel SDM), every f16 kernel within facet/f16.h's bounds
-# (test_f16_accuracy, 400000 samples a kernel); on a CPU without AVX-512
-# FP16 that part is skipped and says so.
+# binary16 port avx512fp16 with its unrefined vrcpph / vrsqrtph replaced by
+# the binary16 value farthest from the exact result within their bound
+# (2^-11 + 2^-14, Intel SDM) and its f32-lane estimates off by 2^-14, every
+# f16 kernel within facet/f16.h's bounds (test_f16_accuracy, 400000 samples
+# a kernel); on a CPU without AVX-512 FP16 that part is skipped and says so.
 . tests/lib/suite_lib.sh
 case "$(${CC:-cc} -dumpmachine)" in
 x86_64*|i?86*)

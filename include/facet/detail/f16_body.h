@@ -9,9 +9,12 @@
  *   FACET_OP(op)   the name of the port's op `op`: on V set add sub mul fma
  *                  fnma min max clamp keep_ord keep_ord4 rcp rsqrt div sqrt;
  *                  on W w_set w_add w_sub w_mul w_fma w_fnma w_min w_max
- *                  w_sqr_err w_rcp w_rsqrt; widen (V to W, exact) and
- *                  narrow (W to V for values >= 0: saturated at 65504, then
- *                  rounded to nearest even),
+ *                  w_sqr_err (unused now) w_rcp w_rsqrt; widen (V to W,
+ *                  exact) and
+ *                  narrow (W to V for values >= 0, rounded to nearest
+ *                  even; above 65504 the port may give 65504 or +Inf: the
+ *                  body narrows only values below it or a term whose sum
+ *                  it saturates),
  *   FACET_K(k)     the name to give kernel `k` (facet_<k>_f16_<port>).
  * There is one tier: binary16's rounding (2^-11) is already the cost the
  * format buys; the estimates are refined to it (see the port headers).
@@ -116,16 +119,17 @@ FACET_INLINE V_ FACET_K(fresnel_schlick)(V_ f0, V_ cos)
 }
 
 /* ---- GGX D -----------------------------------------------------------------
- * D = (alpha / (sqrt(pi) d))^2, d = (1 - n)(1 + n) + (n alpha)^2.  D goes as
- * d^-2, and d's binary16 roundings (about 4 u) would double to 8 u, so d and
- * k = alpha / (sqrt(pi) d) (<= 73) are formed in f32 lanes (the port's
- * 2^-14 reciprocal estimate is enough there) and k is narrowed once:
- * D = k^2 has 3 u (2 from k's rounding, 1 from the square). */
+ * D = (alpha / (sqrt(pi) d))^2, d = (1 - n^2) + (n alpha)^2.  D goes as
+ * d^-2, and d's binary16 roundings (about 3 u) would double to 6 u, so d and
+ * k = alpha / (sqrt(pi) d) (<= 73) are formed in f32 lanes, 1 - n^2 in one
+ * fnma (exact for n >= 1/2), with the port's f32 reciprocal estimate (2^-14
+ * on avx512fp16), and k is narrowed once: D = k^2 has 3 u (2 from k's
+ * rounding, 1 from the square). */
 FACET_INLINE V_ FACET_K(ggx_d)(V_ noh, V_ alpha)
 {
     W_ n = WIDEN_(X16_UNIT_(noh)), a = WIDEN_(X16_ALPHA_(alpha));
     W_ na = WMUL_(n, a);
-    W_ d = WFMA_(WSUB_(WC_(1.0f), n), WADD_(WC_(1.0f), n), WMUL_(na, na));
+    W_ d = WFMA_(na, na, WFNMA_(n, n, WC_(1.0f)));
     V_ k = NARROW_(WMUL_(WMUL_(a, WC_(0.564189584f)), WRCP_(d)));
     return NAN0_(MUL_(k, k), noh, alpha);
 }
@@ -158,7 +162,8 @@ FACET_INLINE V_ FACET_K(smith_vis)(V_ nol, V_ nov, V_ alpha)
 /* ---- Hammon's diffuse --------------------------------------------------------
  * As f32_body.h: Q(x) = 1 + y + y^2 + y^3 + y^4 (y = 1 - x) by Horner (positive
  * terms), smooth / pi = (1.05 / pi) nl nv Q(nl) Q(nv), rough from
- * t = max(1 + L.V, s^2 / 2) and h = 0.5 / N.H = sqrt(t) / (sqrt(2) s) >= 1/2,
+ * t = max(1 + L.V, s^2 / 2) and h = 0.5 / N.H = 1 / (s rsqrt(t / 2)) >= 1/2
+ * (three roundings: the rsqrt, the product, the reciprocal),
  * single = ((1 - alpha) smooth + alpha rough) / pi, multi = 0.1159 alpha,
  * diffuse = albedo (single + albedo multi): every sum of positive terms. */
 /* k Q(x), the constant folded into the Horner coefficients (one rounding
@@ -174,7 +179,7 @@ FACET_INLINE V_ X16_POW5_Q_(V_ x, V_ k)
 
 FACET_INLINE V_ X16_DIFFUSE_(V_ nl, V_ nv, V_ t, V_ s, V_ a, V_ alb)
 {
-    V_ h = MAX_(DIV_(SQRT_(t), MUL_(C_(1.41421354f), s)), C_(0.5f));
+    V_ h = MAX_(RCP_(MUL_(s, RSQRT_(MUL_(C_(0.5f), t)))), C_(0.5f));
     V_ smooth = MUL_(MUL_(nl, nv), MUL_(X16_POW5_Q_(nl, C_(1.0f)), X16_POW5_Q_(nv, C_(0.334225380f))));
     V_ ar = MUL_(MUL_(a, t), FNMA_(C_(0.0318309886f), t, C_(0.143239449f)));
     V_ single = FMA_(ar, h, FMA_(SUB_(C_(1.0f), a), smooth, ar));
@@ -194,46 +199,55 @@ FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ alb
  * D(N.H) Vis_hammon F(f0, L.H) + diffuse_hammon, from the three dots (the
  * algebra of f32_body.h's brdf_hammon).  The specular factor is where
  * binary16 cannot hold the bound: the peak e = (2t - s^2) + alpha^2 s^2
- * cancels (its 2t - s^2 needs s^2 exactly: 36 bits for binary16 inputs), and
- * F's (1 - L.H)^5 raises one rounding of 1 - L.H five times.  So these run
- * in f32 lanes, from the exact binary16 inputs: s = N.L + N.V is exact in
- * f32 (at most 18 significant bits above the cosine floor 2^-7), s^2 as
- * p + pe (sqr_err), t = 1 + L.V as th + tl (Fast2Sum), e without
- * cancellation as in f32; then
- *   D Vis = (1/pi) g^2 / mh,  g = alpha t / e,  mh = nl nv + alpha (s/2 - nl nv)
- *   y = 1 - L.H = (2 - t) / (2 + sqrt(2t)),  y^5
- * with the port's f32 estimates (2^-14: their error stays below 2^-12 after
- * the fifth power), and so is F = f0 + (1 - f0) y^5 and the specular term
- * D Vis F, narrowed once (saturated at 65504: narrowing D Vis alone would
- * saturate terms that F brings back below 65504, and would lose y^5 into
- * binary16's subnormals where f0 = 0).  The rest is binary16: the diffuse
- * (the roughness term takes t narrowed) and the sum, saturated at 65504
- * (never Inf). */
+ * cancels (2t - s^2 needs s^2 exactly: 36 bits for binary16 inputs), F's
+ * (1 - L.H)^5 raises one rounding of 1 - L.H five times, and D Vis F spans
+ * 2^-18 .. 2^24 (F takes D Vis above 65504 back below it, and binary16's
+ * subnormals would keep too few bits of a small F that D Vis raises).  So
+ * the specular term runs in f32 lanes, from the exact binary16 inputs, with
+ * as few operations as its bound needs:
+ *   s = N.L + N.V        exact in f32 (at most 18 significant bits above the
+ *                        cosine floor 2^-7)
+ *   2t = 2 + 2 L.V       rounded, and its rounding error t2l exactly (it is
+ *                        non-zero only for 0 < L.V < 2^-13)
+ *   num = 2t - s^2       fnma(s, s, 2t) + t2l: one rounding of the exact
+ *                        2t - s^2 and one of the sum, each relative to num
+ *                        itself; negative (no unit vectors have these dots)
+ *                        to 0, and 2t then raised to s^2 (the contract's
+ *                        extension), as f32_body.h
+ *   e = num + alpha^2 s^2 (alpha^2 exact in f32)
+ *   D Vis = (u mh) (u / (4 pi)),  u = alpha 2t / (e mh),
+ *                        mh = nl nv + alpha (s/2 - nl nv) (positive terms)
+ *   y = 1 - L.H = w / (2 + sqrt(2t)),  w = 2 - t = min(1 - L.V, 2 - s^2/2)
+ *                        (each side without cancellation)
+ *   spec = D Vis (f0 + (1 - f0) y^5)
+ * with the port's f32 estimates (2^-14 on avx512fp16: 5 (1.5 2^-14) in y^5,
+ * 2^-14 in u^2), narrowed once (above 65504 it may give +Inf, which the
+ * final min turns into 65504).  The rest is binary16 and is diffuse_hammon's
+ * body itself (so brdf_hammon - spec is diffuse_hammon to the bit): the
+ * diffuse and the sum, saturated at 65504 (never Inf). */
 FACET_INLINE V_ FACET_K(brdf_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ f0, V_ albedo)
 {
     V_ nl = X16_COS_(nol), nv = X16_COS_(nov), lv = X16_LOV_(lov), a = X16_ALPHA_(alpha);
-    W_ nlw = WIDEN_(nl), nvw = WIDEN_(nv), lvw = WIDEN_(lv), aw = WIDEN_(a);
-    W_ sh = WADD_(nlw, nvw);                                 /* exact */
-    W_ th = WADD_(WC_(1.0f), lvw);
-    W_ tl = WSUB_(lvw, WSUB_(th, WC_(1.0f)));                /* t = th + tl exactly */
-    W_ p = WMUL_(sh, sh);
-    W_ pe = FACET_OP(w_sqr_err)(sh, p);                      /* s^2 = p + pe exactly */
-    W_ a2 = WMUL_(aw, aw);                                   /* exact */
-    W_ k = WFMA_(a2, p, WMUL_(a2, pe));
-    W_ e = WMAX_(WSUB_(WSUB_(k, WFNMA_(WC_(2.0f), th, p)), WFNMA_(WC_(2.0f), tl, pe)), k);
-    W_ t = WMAX_(th, WMUL_(WC_(0.5f), p));
-    W_ w = WMIN_(WSUB_(WC_(1.0f), lvw), WFNMA_(WC_(0.5f), pe, WFNMA_(WC_(0.5f), p, WC_(2.0f))));
+    V_ f = X16_UNIT_(f0);
+    W_ nlw = WIDEN_(nl), nvw = WIDEN_(nv), lvw = WIDEN_(lv), aw = WIDEN_(a), fw = WIDEN_(f);
+    W_ sw = WADD_(nlw, nvw);                                             /* exact */
+    W_ t2 = WFMA_(lvw, WC_(2.0f), WC_(2.0f));                            /* 2t, rounded */
+    W_ t2l = WFMA_(lvw, WC_(2.0f), WSUB_(WC_(2.0f), t2));                /* 2t = t2 + t2l */
+    W_ p = WMUL_(sw, sw);
+    W_ num = WMAX_(WADD_(WFNMA_(sw, sw, t2), t2l), WC_(0.0f));
+    W_ e = WFMA_(WMUL_(aw, aw), p, num);
+    W_ tt = WMAX_(t2, p);                                                /* 2t, raised */
     W_ p2 = WMUL_(nlw, nvw);
-    W_ mh = WFMA_(aw, WSUB_(WMUL_(WC_(0.5f), sh), p2), p2);
-    W_ g = WMUL_(WMUL_(aw, t), WRCP_(e));
-    W_ dvw = WMUL_(WMUL_(g, g), WMUL_(WC_(0.318309886f), WRCP_(mh)));
-    W_ rt = WMUL_(t, WRSQRT_(t));                            /* sqrt(t) = sqrt(2) L.H */
-    W_ y = WMUL_(w, WRCP_(WFMA_(WC_(1.41421354f), rt, WC_(2.0f))));
+    W_ mh = WFMA_(aw, WFNMA_(nlw, nvw, WMUL_(WC_(0.5f), sw)), p2);
+    W_ u = WMUL_(WMUL_(aw, tt), WRCP_(WMUL_(e, mh)));
+    W_ dv = WMUL_(WMUL_(u, mh), WMUL_(u, WC_(0.0795774715f)));          /* 1 / (4 pi) */
+    W_ w = WMIN_(WSUB_(WC_(1.0f), lvw), WFNMA_(WC_(0.5f), p, WC_(2.0f)));
+    W_ y = WMUL_(w, WRCP_(WADD_(WMUL_(tt, WRSQRT_(tt)), WC_(2.0f))));
     W_ y2 = WMUL_(y, y);
-    W_ fw = WIDEN_(X16_UNIT_(f0));
-    W_ spec = WMUL_(dvw, WFMA_(WSUB_(WC_(1.0f), fw), WMUL_(WMUL_(y2, y2), y), fw));
+    W_ spec = WMUL_(dv, WFMA_(WSUB_(WC_(1.0f), fw), WMUL_(WMUL_(y2, y2), y), fw));
     V_ s = ADD_(nl, nv);
-    V_ dif = X16_DIFFUSE_(nl, nv, NARROW_(t), s, a, X16_UNIT_(albedo));
+    V_ t = MAX_(ADD_(C_(1.0f), lv), MUL_(C_(0.5f), MUL_(s, s)));
+    V_ dif = X16_DIFFUSE_(nl, nv, t, s, a, X16_UNIT_(albedo));
     V_ r = MIN_(ADD_(NARROW_(spec), dif), C_(65504.0f));
     return NAN0_(r, nol, nov, lov, alpha, f0, albedo);
 }
