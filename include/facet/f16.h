@@ -89,9 +89,10 @@
  * Speed on the Arm ports (ports/README.md, "Binary16"): f16 against f32
  * 1.8x to 2.4x on Helium (Cortex-M55: qemu instructions, llvm-mca-16
  * cycles) and 2.3x to 3.6x on NEON (llvm-mca's Cortex-A55 model) for the
- * binary16-only kernels, but brdf_hammon 1.01x / 1.09x on Helium and 1.51x
- * on NEON (target 1.7x: missed; its f32-lane part costs what it saves, and
- * on MVE's 8 Q registers the f32 lanes spill).  No RISC-V Zvfh port:
+ * binary16-only kernels; brdf_hammon 1.79x on NEON (target 1.7x: met on the
+ * A55 model) but 1.14x / 1.21x on Helium (target missed: its f32-lane part
+ * costs what binary16 saves, and on MVE's 8 Q registers the f32 lanes
+ * spill).  No RISC-V Zvfh port:
  * nothing here can detect Zvfh at run time (ports/README.md).
  *
  * Ways in: facet_<kernel>_f16 (one sample, the scalar port),
