@@ -22,7 +22,24 @@
 int facet_cpu_always(void) { return 1; }
 
 #if FACET_ON_X86
-int facet_cpu_avx2_fma(void) /* AVX2 + FMA, and the OS saves YMM state */
+/* Each x86 test reads CPUID once and keeps the answer (0: not yet read, 1:
+ * no, 2: yes; a relaxed load of an int, racing first calls compute the
+ * same value): CPUID traps to the hypervisor in a VM, and after that exit
+ * the next AVX-512 batch was measured up to 2.6x slower on a Xeon VM, so
+ * facet_set_port() and the f16 batches, which ask on every call, must not
+ * execute it again. */
+#define FACET_CPU_ONCE_(name, test)                                \
+    int name(void)                                                 \
+    {                                                              \
+        static int known;                                          \
+        int k = __atomic_load_n(&known, __ATOMIC_RELAXED);         \
+        if (!k) {                                                  \
+            k = test() ? 2 : 1;                                    \
+            __atomic_store_n(&known, k, __ATOMIC_RELAXED);         \
+        }                                                          \
+        return k == 2;                                             \
+    }
+static int avx2_fma_(void) /* AVX2 + FMA, and the OS saves YMM state */
 {
     unsigned a, b, c, d, xlo, xhi;
     if (!__get_cpuid(1, &a, &b, &c, &d))
@@ -36,6 +53,7 @@ int facet_cpu_avx2_fma(void) /* AVX2 + FMA, and the OS saves YMM state */
         return 0;
     return (b >> 5) & 1u; /* AVX2 */
 }
+FACET_CPU_ONCE_(facet_cpu_avx2_fma, avx2_fma_)
 #if FACET_ON_X86_64
 /* AVX-512F, and the OS saves ZMM and opmask state */
 static int avx512f(void)
@@ -51,12 +69,11 @@ static int avx512f(void)
     return (b >> 16) & 1u; /* AVX512F */
 }
 /* the avx512 port also runs the AVX2 fx code (src/core/ports.def): both */
-int facet_cpu_avx512(void) { return avx512f() && facet_cpu_avx2_fma(); }
+static int avx512_(void) { return avx512f() && avx2_fma_(); }
+FACET_CPU_ONCE_(facet_cpu_avx512, avx512_)
 /* the f16 table of the avx512 line (src/core/ports.def): AVX-512 FP16
  * (CPUID.(EAX=7,ECX=0):EDX[23]) with AVX-512 BW and VL (EBX[30], EBX[31]),
- * on top of AVX-512F and the OS's ZMM state.  Read once: the f16 batches
- * ask on every call (a relaxed load of an int; racing first calls compute
- * the same value) */
+ * on top of AVX-512F and the OS's ZMM state */
 static int avx512fp16_(void)
 {
     unsigned a, b, c, d;
@@ -64,16 +81,7 @@ static int avx512fp16_(void)
         return 0;
     return ((d >> 23) & 1u) && ((b >> 30) & 1u) && ((b >> 31) & 1u);
 }
-int facet_cpu_avx512fp16(void)
-{
-    static int known; /* 0: not yet read, 1: no, 2: yes */
-    int k = __atomic_load_n(&known, __ATOMIC_RELAXED);
-    if (!k) {
-        k = avx512fp16_() ? 2 : 1;
-        __atomic_store_n(&known, k, __ATOMIC_RELAXED);
-    }
-    return k == 2;
-}
+FACET_CPU_ONCE_(facet_cpu_avx512fp16, avx512fp16_)
 #endif
 int facet_cpu_sse2(void)
 {
