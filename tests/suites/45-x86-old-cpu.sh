@@ -2,7 +2,14 @@
 # no AVX): the dispatcher must pick sse2, refuse avx2/avx512 (and the f16
 # table avx512fp16) with a clear error, and nothing outside the AVX objects may execute an AVX instruction
 # (qemu would stop the test with SIGILL); the same for the bench's SIMD
-# loops and rasterizer paths.  Skipped off x86 or without qemu.
+# loops and rasterizer paths.  Then on Haswell (AVX2 and FMA, no AVX-512,
+# so no AVX-512 FP16): the dispatcher picks avx2, refuses avx512 and
+# avx512fp16, and the f32 and f16 tests pass there.  And, since no emulator
+# here offers an AVX-512 CPU without FP16 (Zen 4 and 5), a build whose CPU
+# test reports no AVX-512 FP16 (FACET_TEST_CPU_WITHOUT_AVX512FP16, src/core/
+# cpu.c) runs the f16 tests natively: on an AVX-512 CPU the avx512 port with
+# the scalar f16 table and avx512fp16 refused with its reason.  Skipped off
+# x86 or without qemu.
 . tests/lib/suite_lib.sh
 case "$(${CC:-cc} -dumpmachine)" in
 x86_64*) ;;
@@ -67,4 +74,40 @@ out=$($q build/facet-bench bench lambert --quick --no-peers --format f32 2>&1); 
 if [ $rc -eq 0 ] && printf '%s\n' "$out" | grep -qE '^lambert +f32 +sse2 +inline' &&
     ! printf '%s\n' "$out" | grep -qE '^lambert +f32 +avx'; then ok; else
     printf '%s\n' "$out" | tail -n 5; bad "facet-bench bench under Nehalem (exit $rc)"; fi
+# ---- Haswell: AVX2 and FMA, no AVX-512 (TCG runs AVX2 since qemu 7.2) ----
+h="qemu-x86_64 -cpu Haswell"
+[ "$($h build/facet ports 2>/dev/null | awk '/ auto$/ { print $1 }')" = avx2 ] && ok ||
+    bad "Haswell: auto is not avx2: $($h build/facet ports 2>/dev/null)"
+for t in test_f32_ports test_f32_accuracy test_f32_bad_input test_f16_ports test_f16_accuracy; do
+    level=1
+    [ $t = test_f32_accuracy ] && level=2
+    res=$(FACET_TEST_QUICK=$level $h build/tests/$t 2> build/old-cpu.haswell.err)
+    rc=$?
+    summary=$(printf '%s\n' "$res" | tail -n 1)
+    if [ $rc -eq 0 ] && printf '%s' "$summary" | grep -q ' 0 failed'; then ok; else
+        { printf '%s\n' "$res"; cat build/old-cpu.haswell.err; } | grep -E 'FAIL|Illegal' | head -5
+        bad "$t under Haswell: $summary (exit $rc)"; fi
+done
+res=$(FACET_TEST_QUICK=1 $h build/tests/test_f16_ports 2>/dev/null)
+printf '%s' "$res" | grep -q "port avx512fp16: not run here: AVX-512 FP16 (CPUID" && ok || bad "Haswell: avx512fp16 not refused with its reason"
+printf '%s' "$res" | grep -q "f16 batches on scalar (port avx2)" && ok || bad "Haswell: f16 batches not on scalar with avx2: $(printf '%s' "$res" | tail -n 2)"
+# ---- an AVX-512 CPU without FP16, by a build whose CPU test says so -------
+dir=build/no-fp16
+if $MAKE -s -j"$JOBS" BUILD=$dir CFLAGS="-O2 -g -DFACET_TEST_CPU_WITHOUT_AVX512FP16" \
+        $dir/tests/test_f16_ports $dir/tests/test_f16_accuracy > $dir.build.log 2>&1; then
+    for t in test_f16_ports test_f16_accuracy; do
+        res=$(FACET_TEST_QUICK=1 $dir/tests/$t 2>&1)
+        rc=$?
+        summary=$(printf '%s\n' "$res" | tail -n 1)
+        if [ $rc -eq 0 ] && printf '%s' "$summary" | grep -q ' 0 failed'; then ok; else
+            printf '%s\n' "$res" | grep FAIL | head -5; bad "$t without AVX-512 FP16: $summary (exit $rc)"; fi
+    done
+    res=$(FACET_TEST_QUICK=1 $dir/tests/test_f16_ports 2>&1)
+    printf '%s' "$res" | grep -q "port avx512fp16: not run here: AVX-512 FP16 (CPUID" && ok ||
+        bad "without AVX-512 FP16: avx512fp16 not refused with its reason"
+    printf '%s' "$res" | grep -q "f16 batches on scalar (port " && ok ||
+        bad "without AVX-512 FP16: f16 batches not on scalar: $(printf '%s' "$res" | tail -n 2)"
+else
+    cat $dir.build.log; bad "the build without AVX-512 FP16 failed"
+fi
 echo "old-cpu: $pass passed, $fail failed, 0 skipped"
