@@ -81,8 +81,7 @@
  * plus one step make noh and loh their largest.  heliumfp16 (MVE: no
  * estimate instruction; bit seeds and two Newton steps, facet/heliumfp16.h)
  * over 2,000,000 under qemu-system-arm -M mps3-an547 (Cortex-M55), within
- * every bound (measured on the formulation before the last f16 speed step:
- * noh 1.55e-3, loh 9.77e-4, fresnel_schlick 2.13e-3, ggx_d 1.41e-3,
+ * every bound (clang 14's objects, 2026-12-07: noh 1.55e-3, loh 9.77e-4, fresnel_schlick 2.13e-3, ggx_d 1.41e-3,
  * smith_vis 1.93e-3, smith_vis_hammon 1.53e-3, diffuse_hammon 3.82e-3,
  * brdf_hammon 3.58e-3, lambert 6.28e-4).
  *
