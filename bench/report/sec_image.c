@@ -85,7 +85,7 @@ static void f16_not_run(char *b, size_t cap, const img_err *e, int n)
                                 tabs[i], ports[i],
                                 facet_f16_port_refusal(tabs[i]) ? facet_f16_port_refusal(tabs[i])
                                 : facet_f16_port_supported(tabs[i]) ? "this CPU runs it, but no port line selected it"
-                                : "not in this build (another architecture's port: the 40-arm suite runs it under qemu)");
+                                : "not in this build (another architecture's port: its suite runs it under qemu, tests/README.md)");
     }
     {
         int first = 1;
