@@ -50,7 +50,7 @@ typedef vfloat32m2_t facet_rvvfp16_w; /* the same lanes in f32 (LMUL 2) */
 typedef vbool16_t facet_rvvfp16_mask;
 
 /* the ops' vl: all ones, read as VLMAX (facet/rvv.h) */
-#define FACET_RVVFP16_VL_ ((size_t)-1)
+#define FACET_RVVFP16_VL_ FACET_CAST(size_t, -1)
 #define facet_rvvfp16_vlmax() vsetvlmax_e16m1()
 #ifndef FACET_RVVFP16_STEPS
 #define FACET_RVVFP16_STEPS 1 /* Newton steps after vfrec7 / vfrsqrt7, binary16 */
