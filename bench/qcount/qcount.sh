@@ -151,7 +151,12 @@ rv64-f16)
     lib=${libdir:-build/rv64}/libfacet.a
     [ -f "$lib" ] || { echo "qcount: $lib missing (run the 54-rvv suite first)"; exit 1; }
     shift $(($# < 2 ? $# : 2))
-    riscv64-linux-gnu-gcc -O2 -std=c99 -Iinclude -static -DARMCOUNT_PORT=rvv -DARMCOUNT_F16_ONLY -DN=64 \
+    # the ports the library holds, as its build told src/core/platform.h
+    # (the RISC-V rungs follow the build's flags, not the compiler's target)
+    pf=$(riscv64-linux-gnu-nm "$lib" | awk '$3 == "facet_port_rvv_f32" { print "-DFACET_PORT_RVV=1" }
+                                          $3 == "facet_f16_port_rvvfp16" { print "-DFACET_PORT_RVVFP16=1" }' | sort -u)
+    # shellcheck disable=SC2086
+    riscv64-linux-gnu-gcc -O2 -std=c99 -Iinclude -static $pf -DARMCOUNT_PORT=rvv -DARMCOUNT_F16_ONLY -DN=64 \
         bench/report/armcount_main.c "$lib" -lm -o "$dir/rv64f16.elf" || exit 1
     for v in ${*:-128 256 512}; do
         timeout 300 qemu-riscv64 -cpu rv64,v=true,vext_spec=v1.0,Zfh=true,vlen=$v -singlestep -d exec,nochain \

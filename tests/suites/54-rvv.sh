@@ -38,6 +38,13 @@
 #                      facet/f16.h, the estimates exhaustively; at every VLEN
 #                      (the lanes, the tails and the f32 lanes' LMUL 2 groups
 #                      depend on it)
+#   rvvfp16-count      bench/qcount/qcount.sh rv64-f16: executed instructions
+#                      per sample of every kernel with a binary16 form (rvv
+#                      f32, f32_fast, rvvfp16) at the three VLENs, rows by
+#                      bench/qcount/rvv_f16_rows.sh, each present in
+#                      ports/README.md's RVV binary16 table (with clang 14
+#                      and riscv64-linux-gnu-gcc 12; other compilers' figures
+#                      are shown), and a changed figure fails (self-test)
 # The three VLENs run side by side.  Skipped, with the reason, where a tool
 # is missing (.ci/run installs them).  It runs in the host lane of
 # tests/check.sh, not beside 40-arm in the emulator lane: that lane is the
@@ -155,6 +162,32 @@ f16_isa() {
     echo "rvvfp16-isa: $pass passed, $fail failed, 0 skipped"
 }
 
+f16_count() {
+    pass=0 fail=0 rows=$dir/qcount-f16.rows
+    fbad() { fail=$((fail + 1)); echo "FAIL rvvfp16-count: $*"; }
+    if ! sh bench/qcount/qcount.sh rv64-f16 $dir > $dir/qcount-f16.txt 2> $dir/qcount-f16.log ||
+       ! sh bench/qcount/rvv_f16_rows.sh $dir/qcount-f16.txt > $rows ||
+       [ "$(grep -c . $rows)" -ne "$(grep -c ', f16, ' src/core/f16_kernels.def)" ]; then
+        fbad "the count did not run or missed a kernel ($dir/qcount-f16.log, $rows)"
+    else
+        sed 's/^/rvvfp16-count: /' $rows
+        # fcompare README: every row present (prints the first miss)
+        fcompare() { while IFS= read -r r; do grep -qF -- "$r" "$1" || { echo "$r"; return 1; }; done < $rows; }
+        gv=$(riscv64-linux-gnu-gcc -dumpversion) clv=$(clang -dumpversion)
+        if [ "${gv%%.*}" = 12 ] && [ "${clv%%.*}" = 14 ]; then
+            if miss=$(fcompare ports/README.md); then pass=$((pass + 1))
+            else fbad "ports/README.md's RVV binary16 table lacks the measured row: $miss"; fi
+            sed 's/^| brdf_hammon | \([0-9.]*\) \/ \([0-9]\)/| brdf_hammon | \1 \/ 9\2/' ports/README.md > $dir/README.f16broken.md
+            if cmp -s ports/README.md $dir/README.f16broken.md; then fbad "self-test: no brdf_hammon row to break"
+            elif fcompare $dir/README.f16broken.md > /dev/null; then fbad "self-test: a changed figure passes the comparison"
+            else pass=$((pass + 1)); fi
+        else
+            echo "rvvfp16-count: riscv64-linux-gnu-gcc $gv, clang $clv: the figures are shown, not compared (ports/README.md: gcc 12, clang 14)"
+        fi
+    fi
+    echo "rvvfp16-count: $pass passed, $fail failed, 0 skipped"
+}
+
 vlen_run() { # vlen_run VLEN: every test but the f32 accuracy
     v=$1
     run_one rvv-$v detect $v
@@ -177,4 +210,5 @@ done
 run_one rvvfp16 f16_isa
 vlen_run 128
 wait
+run_one rvvfp16 f16_count
 cat $dir/accuracy.log $dir/vlen256.log $dir/vlen512.log

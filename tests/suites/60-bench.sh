@@ -120,7 +120,7 @@ fi
 # call per kernel and tier of the list) compiles for both ports: a kernel
 # the list gains must not silently drop the chooser's NEON and Helium rows
 # (and with the binary16 tables, as arm_targets.sh and qcount.sh m55-f16
-# build it)
+# build it; RVV below)
 if command -v aarch64-linux-gnu-gcc > /dev/null 2>&1; then
     for f in ""; do
         aarch64-linux-gnu-gcc -O2 -std=c99 -Wall -Wextra -Werror -Iinclude -DARMCOUNT_PORT=neon $f -fsyntax-only \
@@ -133,6 +133,16 @@ if command -v arm-none-eabi-gcc > /dev/null 2>&1; then
         arm-none-eabi-gcc -mcpu=cortex-m55 -mfloat-abi=hard -mthumb -O2 -std=c99 -Wall -Wextra -Werror -Iinclude \
             -DARMCOUNT_PORT=helium $f -fsyntax-only bench/report/armcount_main.c 2> build/bench-suite.armcount.log && ok ||
             { head -5 build/bench-suite.armcount.log; bad "bench/report/armcount_main.c does not compile for Helium ($f)"; }
+    done
+fi
+# and for RVV as arm_targets.sh and qcount.sh rv64-f16 build it (the port
+# flags the library's build gives src/core/platform.h: the rvv line with its
+# binary16 table rvvfp16)
+if command -v riscv64-linux-gnu-gcc > /dev/null 2>&1; then
+    for f in "" "-DARMCOUNT_F16_ONLY"; do
+        riscv64-linux-gnu-gcc -O2 -std=c99 -Wall -Wextra -Werror -Iinclude -DFACET_PORT_RVV=1 -DFACET_PORT_RVVFP16=1 \
+            -DARMCOUNT_PORT=rvv $f -fsyntax-only bench/report/armcount_main.c 2> build/bench-suite.armcount.log && ok ||
+            { head -5 build/bench-suite.armcount.log; bad "bench/report/armcount_main.c does not compile for RVV ($f)"; }
     done
 fi
 # the report's own part on its own (no mca, no Cortex-M traces): a quick run
