@@ -21,16 +21,20 @@
  *
  * Reciprocal and rsqrt start from RVV's 7-bit estimates (vfrec7,
  * vfrsqrt7: defined bit for bit by the specification's tables, so qemu
- * computes what the hardware does) and take one Newton step:
+ * computes what the hardware does; measured 2^-7.48 and 2^-7.31) and take
+ * one Newton step (relative errors measured exhaustively: every positive
+ * normal binary16 x, resp. every float of the tables' period):
  *   binary16 1/x     r + r (1 - x r), fused: 2^-14 before the step's
- *                    roundings (one of r + r e, 2^-11, dominates)
+ *                    roundings (that of r + r e, 2^-11, dominates):
+ *                    4.93e-4 (2^-10.99; the correctly rounded 1/x: 4.88e-4)
  *   binary16 1/sqrt  y + (y/2) (1 - (x y) y): 1.5 2^-14 plus the rounding
- *                    of x y (halved) and of the result
- *   f32 1/x, 1/sqrt  the same steps in f32: 2^-14 and 1.5 2^-14 plus 2^-24,
- *                    the f32 estimates' budget of facet/detail/f16_body.h
- * tests/f16/test_f16_estimates.c measures each exhaustively (every binary16
- * x; every float of a period of the estimate tables) against the figures
- * it states.  Quotients a rcp(b), roots x rsqrt(x).  The clamps are
+ *                    of x y (halved) and of the result: 5.78e-4 (2^-10.76)
+ *   f32 1/x, 1/sqrt  the same steps in f32: 3.12e-5 (2^-14.97) and 5.91e-5
+ *                    (2^-14.05), within the 2^-14 that facet/detail/
+ *                    f16_body.h budgets for the f32 estimates
+ * tests/f16/test_f16_estimates.c proves each (and the estimates within
+ * 2^-7, the premise of one step) against 4.94e-4, 5.79e-4, 3.13e-5 and
+ * 5.92e-5.  Quotients a rcp(b), roots x rsqrt(x).  The clamps are
  * compare-and-select (a NaN input becomes the low end); vfmin / vfmax see
  * only NaN-free values; NaN inputs are found by self-compares (vmfeq). */
 #ifndef FACET_RVVFP16_H
