@@ -20,6 +20,14 @@
 #                           (clang 14), from LIBDIR/libfacet.a (default
 #                           build/rv64, made by tests/suites/54-rvv.sh);
 #                           linked static, so the trace's pcs are nm's
+#   qcount.sh rv64-f16 [LIBDIR] [VLEN...]  the same cores (-cpu
+#                           rv64,v=true,Zfh=true,vlen=N), every kernel with a
+#                           binary16 form: rvv f32 and f32_fast against the
+#                           rvv line's f16 table rvvfp16, called directly
+#                           (bench/report/armcount_main.c, ARMCOUNT_F16_ONLY;
+#                           lines "rv64-vlenN <kernel> <format> ...";
+#                           ports/README.md's RVV binary16 table, by
+#                           bench/qcount/rvv_f16_rows.sh, suite 54)
 # Prints "<core> <code> <tier> <instructions per sample> <cycles per sample>
 # <left out per sample>" lines; the cycles (m55 only, "-" elsewhere or
 # without llvm-mca-16) are
@@ -136,6 +144,28 @@ rv64)
             -D "$dir/rv64.trace" "$dir/rv64.elf" > /dev/null || exit 1
         count "$dir/rv64.elf" "$dir/rv64.trace" rv64-vlen$v | sed -e 's/ vector / rvv /' -e 's/$/ - -/'
         rm -f "$dir/rv64.trace"
+    done
+    ;;
+rv64-f16)
+    NM=riscv64-linux-gnu-nm
+    lib=${libdir:-build/rv64}/libfacet.a
+    [ -f "$lib" ] || { echo "qcount: $lib missing (run the 54-rvv suite first)"; exit 1; }
+    shift $(($# < 2 ? $# : 2))
+    # the ports the library holds, as its build told src/core/platform.h
+    # (the RISC-V rungs follow the build's flags, not the compiler's target)
+    pf=$(riscv64-linux-gnu-nm "$lib" | awk '$3 == "facet_port_rvv_f32" { print "-DFACET_PORT_RVV=1" }
+                                          $3 == "facet_f16_port_rvvfp16" { print "-DFACET_PORT_RVVFP16=1" }' | sort -u)
+    # shellcheck disable=SC2086
+    riscv64-linux-gnu-gcc -O2 -std=c99 -Iinclude -static $pf -DARMCOUNT_PORT=rvv -DARMCOUNT_F16_ONLY -DN=64 \
+        bench/report/armcount_main.c "$lib" -lm -o "$dir/rv64f16.elf" || exit 1
+    for v in ${*:-128 256 512}; do
+        timeout 300 qemu-riscv64 -cpu rv64,v=true,vext_spec=v1.0,Zfh=true,vlen=$v -singlestep -d exec,nochain \
+            -D "$dir/rv64f16.trace" "$dir/rv64f16.elf" > "$dir/rv64f16.out" || exit 1
+        grep -q '^armcount-f16: rvvfp16$' "$dir/rv64f16.out" || { echo "qcount: the rvv line runs no rvvfp16 table"; exit 1; }
+        grep -v '^armcount' "$dir/rv64f16.out" > "$dir/rv64f16.names"
+        count "$dir/rv64f16.elf" "$dir/rv64f16.trace" rv64-vlen$v "" "" "$dir/rv64f16.names" armcount_begin armcount_end |
+            sed 's/$/ - -/'
+        rm -f "$dir/rv64f16.trace"
     done
     ;;
 esac

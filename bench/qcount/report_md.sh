@@ -7,7 +7,8 @@
 # executed instructions per sample with bench/qcount/qcount.sh (on the M55
 # also llvm-mca-16's modelled cycles on the executed trace; the cycle
 # columns say why where llvm-mca-16 is missing), and on the M55 every
-# kernel's binary16 batch against the f32 tiers (qcount.sh m55-f16).  Each section skipped,
+# kernel's binary16 batch against the f32 tiers (qcount.sh m55-f16; on RVV
+# qcount.sh rv64-f16).  Each section skipped,
 # with the reason, without its tools.
 set -u
 MAKE=${MAKE:-make}
@@ -39,6 +40,16 @@ rvv_section() {
                 printf "| %s | %s | %s | %.2fx | %s | %.2fx | %s | %.2fx | %s |\n", t, s, a, s / a, b, s / b, c, s / c,
                        (s / a >= 3) ? "met" : "missed" }' build/qcount/rv64.txt
     done
+    echo
+    echo "Binary16 (rvvfp16, Zvfh; qemu -cpu rv64,v=true,Zfh=true: the table called directly, as the dispatcher refuses it under qemu-user 7.2) against the rvv f32 tiers, every kernel with an f16 form (bench/qcount/qcount.sh rv64-f16; instructions per sample, each cell VLEN 128 / 256 / 512; an f32-lane op of rvvfp16 is one LMUL 2 instruction). Target (issue 22): brdf_hammon f16 >= 1.7x f32."
+    echo
+    echo "| kernel | f32 | f32_fast | f16 | f16 vs f32 | f16 vs f32_fast |"
+    echo "|---|---|---|---|---|---|"
+    if sh bench/qcount/qcount.sh rv64-f16 build/rv64 128 256 512 2>/dev/null > build/qcount/rv64f16.txt; then
+        sh bench/qcount/rvv_f16_rows.sh build/qcount/rv64f16.txt
+    else
+        echo "| (the count failed: no rvvfp16 table in build/rv64?) | | | | | |"
+    fi
     echo
 }
 rvv_section

@@ -23,13 +23,16 @@
 #           counts alone, and the status says so)
 #   rvv     RV64GCV (build/rv64, the rvv objects from clang 14, as
 #           bench/qcount's RVV table): instructions executed per sample
-#           under qemu-riscv64 -cpu rv64,v=true,vlen=128: MEASURED
-#           instruction counts, not cycles (the speed table's RVV column)
+#           under qemu-riscv64 -cpu rv64,v=true,Zfh=true,vlen=128: MEASURED
+#           instruction counts, not cycles (the speed table's RVV column),
+#           the rvv line's binary16 table rvvfp16 too (format f16, called
+#           directly: the dispatcher refuses it under qemu-user 7.2)
 # for every kernel and every tier the port runs (f32, f32_fast, fx,
 # fx_fast), from one image per target (bench/report/armcount_main.c); and
 # format f16 where the port's line of src/core/ports.def names an f16
 # table of its own (armcount_main.c finds it in the port list: the neon
-# line's neonfp16 on aarch64, the helium line's heliumfp16 on the M55; a
+# line's neonfp16 on aarch64, the helium line's heliumfp16 on the M55, the
+# rvv line's rvvfp16 on RV64GCV; a
 # port whose line runs the scalar f16 table has "no f16 port yet", and
 # picks one up when its line names one).  NEON is modelled twice: by the
 # A57 model for every format (one axis for the chooser; f16 with
@@ -222,16 +225,26 @@ fi
 lib=build/rv64/libfacet.a
 if ! have riscv64-linux-gnu-gcc || ! have qemu-riscv64 || ! have clang; then
     status "rvv skipped: not installed: $(missing riscv64-linux-gnu-gcc qemu-riscv64 clang)"
+    status "rvv-f16 skipped: not installed: $(missing riscv64-linux-gnu-gcc qemu-riscv64 clang)"
 elif ! $MAKE -s BUILD=build/rv64 CC=riscv64-linux-gnu-gcc CFLAGS="-O2 -g" $lib > "$dir/rv64.build.log" 2>&1; then
     status "rvv skipped: the riscv64 cross build of the library failed ($dir/rv64.build.log)"
-elif fresh "$dir/rvv.tsv" $lib bench/report/armcount_main.c bench/report/arm_targets.sh; then
+    status "rvv-f16 skipped: the riscv64 cross build of the library failed ($dir/rv64.build.log)"
+elif fresh "$dir/rvv.tsv" $lib bench/report/armcount_main.c bench/report/arm_targets.sh && [ -s "$dir/rvv.f16" ]; then
     cat "$dir/rvv.tsv" >> "$out/arm_vec.tsv"
     status "rvv ok qemu-riscv64 instruction counts at VLEN 128 (cached)"
+    f16status rvv - "qemu-riscv64 instruction counts at VLEN 128, -cpu rv64,v=true,Zfh=true (cached)"
 else
     NM=riscv64-linux-gnu-nm
-    if riscv64-linux-gnu-gcc -O2 -std=c99 -static -Iinclude -DARMCOUNT_PORT=rvv -DN=$samples \
+    # the ports the library holds, as its build told src/core/platform.h
+    # (the RISC-V rungs follow the build's flags: armcount_main.c finds the
+    # rvv line's f16 table, rvvfp16, only with them); Zfh=true: qemu 7.2
+    # executes the binary16 vector arithmetic of Zvfh with it
+    pf=$($NM $lib | awk '$3 == "facet_port_rvv_f32" { print "-DFACET_PORT_RVV=1" }
+                        $3 == "facet_f16_port_rvvfp16" { print "-DFACET_PORT_RVVFP16=1" }' | sort -u)
+    # shellcheck disable=SC2086
+    if riscv64-linux-gnu-gcc -O2 -std=c99 -static -Iinclude $pf -DARMCOUNT_PORT=rvv -DN=$samples \
             bench/report/armcount_main.c $lib -lm -o "$dir/rvv.elf" 2> "$dir/rvv.log" &&
-       timeout 600 qemu-riscv64 -cpu rv64,v=true,vext_spec=v1.0,vlen=128 -singlestep -d exec,nochain \
+       timeout 600 qemu-riscv64 -cpu rv64,v=true,vext_spec=v1.0,Zfh=true,vlen=128 -singlestep -d exec,nochain \
             -D "$dir/rvv.trace" "$dir/rvv.elf" > "$dir/rvv.labels" 2>> "$dir/rvv.log"; then
         riscv64-linux-gnu-objdump -d "$dir/rvv.elf" > "$dir/rvv.dis"
         grep -v '^armcount' "$dir/rvv.labels" > "$dir/rvv.lab"
@@ -242,11 +255,14 @@ else
             mv "$dir/rvv.tsv.tmp" "$dir/rvv.tsv"
             cat "$dir/rvv.tsv" >> "$out/arm_vec.tsv"
             status "rvv ok qemu-riscv64 instruction counts at VLEN 128"
+            f16status rvv "$dir/rvv.labels" "qemu-riscv64 instruction counts at VLEN 128, -cpu rv64,v=true,Zfh=true"
         else
             status "rvv skipped: no call was traced ($dir/rvv.log)"
+            status "rvv-f16 skipped: no call was traced ($dir/rvv.log)"
         fi
     else
         status "rvv skipped: the counting image failed to build or run ($dir/rvv.log)"
+        status "rvv-f16 skipped: the counting image failed to build or run ($dir/rvv.log)"
     fi
 fi
 exit 0

@@ -237,9 +237,10 @@ static void vector_table(report *r, report_data *D)
         doc_para(r->doc, "No vector-port costs in this build (arm_vec.tsv empty: see the status above).");
 }
 
-/* binary16 against f32 on the Arm ports (issue 22): the f16 table of neon
- * (neonfp16, llvm-mca's Cortex-A55 model: the A57 has no FP16) and helium
- * (heliumfp16, instructions and llvm-mca-16's Cortex-M55 cycles) */
+/* binary16 against f32 on the Arm ports and RVV (issue 22): the f16 table
+ * of neon (neonfp16, llvm-mca's Cortex-A55 model: the A57 has no FP16),
+ * helium (heliumfp16, instructions and llvm-mca-16's Cortex-M55 cycles)
+ * and rvv (rvvfp16, instructions under qemu-riscv64 at VLEN 128) */
 static const char *f16_cell(char *b, size_t n, report_data *D, const char *kn, const char *port, const char *measure,
                             double *ratio)
 {
@@ -255,25 +256,27 @@ static const char *f16_cell(char *b, size_t n, report_data *D, const char *kn, c
 static void f16_arm_table(report *r, report_data *D)
 {
     static const struct { const char *port, *measure; } v[] = {
-        { "neon", "mca-cortex-a55" }, { "helium", "qemu-insn" }, { "helium", "mca-cortex-m55" },
+        { "neon", "mca-cortex-a55" }, { "helium", "qemu-insn" }, { "helium", "mca-cortex-m55" }, { "rvv", "qemu-insn" },
     };
     size_t ki, i;
     int any = 0;
-    doc_para(r->doc, "Binary16 (f16) against f32 on the Arm ports (bench/report/arm_targets.sh, the same traces): "
-             "<b>NEON</b> neonfp16 in cycles per sample MODELLED by llvm-mca's Cortex-A55 model (an ARMv8.2-A "
-             "core with FP16; the A57 model has none), <b>Helium</b> heliumfp16 in executed instructions "
-             "MEASURED under qemu and cycles MODELLED by llvm-mca-16's Cortex-M55 model. Cells: f32 / f32_fast / "
-             "f16 = f16 against f32 / against f32_fast. Target (issue 22): brdf_hammon f16 >= 1.7x f32 on each.");
-    doc_table(r->doc, 5, "kernel", "NEON, A55 model cycles", "Helium, instructions", "Helium, M55 model cycles",
-              "brdf_hammon >= 1.7x f32");
+    doc_para(r->doc, "Binary16 (f16) against f32 on the Arm ports and RVV (bench/report/arm_targets.sh, the same "
+             "traces): <b>NEON</b> neonfp16 in cycles per sample MODELLED by llvm-mca's Cortex-A55 model (an "
+             "ARMv8.2-A core with FP16; the A57 model has none), <b>Helium</b> heliumfp16 in executed instructions "
+             "MEASURED under qemu and cycles MODELLED by llvm-mca-16's Cortex-M55 model, <b>RVV</b> rvvfp16 "
+             "(Zvfh) in executed instructions MEASURED under qemu-riscv64 at VLEN 128 (an f32-lane op of rvvfp16 "
+             "is one LMUL 2 instruction). Cells: f32 / f32_fast / f16 = f16 against f32 / against f32_fast. "
+             "Target (issue 22): brdf_hammon f16 >= 1.7x f32 on each.");
+    doc_table(r->doc, 6, "kernel", "NEON, A55 model cycles", "Helium, instructions", "Helium, M55 model cycles",
+              "RVV VLEN 128, instructions", "brdf_hammon >= 1.7x f32");
     for (ki = 0; ki < facet_kernel_count(); ki++) {
         const char *kn = facet_kernel_at(ki)->name;
-        char b[5][96];
-        const char *cells[5];
-        double ratio[3];
+        char b[6][96];
+        const char *cells[6];
+        double ratio[4];
         int have = 0, met = 1;
         cells[0] = kn;
-        for (i = 0; i < 3; i++) {
+        for (i = 0; i < 4; i++) {
             cells[1 + i] = f16_cell(b[1 + i], sizeof b[1 + i], D, kn, v[i].port, v[i].measure, &ratio[i]);
             if (ratio[i] > 0) {
                 have++;
@@ -283,13 +286,14 @@ static void f16_arm_table(report *r, report_data *D)
         }
         if (!have)
             continue;
-        cells[4] = strcmp(kn, "brdf_hammon") ? "" : met ? "met" : "**missed**";
+        cells[5] = strcmp(kn, "brdf_hammon") ? "" : met ? "met" : "**missed**";
         doc_row(r->doc, cells);
         any = 1;
     }
     doc_table_end(r->doc);
     if (!any)
-        doc_para(r->doc, "No f16 costs on the Arm ports in this build (arm_vec.tsv has no f16 rows: see the status above).");
+        doc_para(r->doc, "No f16 costs on the Arm ports or RVV in this build (arm_vec.tsv has no f16 rows: see the status "
+                 "above).");
 }
 
 void section_speed(report *r)

@@ -9,7 +9,8 @@
  * facet_f16_from_f32 convert (exactly, and rounded to nearest even).
  *
  * Computation: in binary16 lanes (AVX-512 FP16: 32 per zmm register; ARMv8.2
- * FP16 NEON and Helium MVE: 8 per q register; the scalar port, the
+ * FP16 NEON and Helium MVE: 8 per q register; RISC-V Vector with Zvfh: VLEN
+ * / 16 per vector register; the scalar port, the
  * specification, emulates binary16 in portable C: facet/f16_scalar.h), except the few operations binary16 cannot hold,
  * which run in f32 lanes from the exact binary16 inputs: ggx_d's
  * d = 1 - N.H^2 + alpha^2 N.H^2 and its quotient, and brdf_hammon's
@@ -18,7 +19,8 @@
  * contract says which.  One tier: binary16's rounding (2^-11) is the cost
  * the format buys, and the reciprocal and rsqrt estimates are used at
  * about that precision (avx512fp16: vrcpph / vrsqrtph as they are, within
- * 2^-11 + 2^-14 by the SDM; neonfp16: 8-bit estimates and one step).
+ * 2^-11 + 2^-14 by the SDM; neonfp16: 8-bit estimates and one step;
+ * rvvfp16: 7-bit estimates and one step).
  *
  * Domain, for every f16 kernel:
  *   alpha   [FACET_F16_ALPHA_MIN, 1] = [2^-7, 1] (perceptual roughness
@@ -81,9 +83,18 @@
  * plus one step make noh and loh their largest.  heliumfp16 (MVE: no
  * estimate instruction; bit seeds and two Newton steps, facet/heliumfp16.h)
  * over 2,000,000 under qemu-system-arm -M mps3-an547 (Cortex-M55), within
- * every bound (clang 14's objects, 2026-12-07: noh 1.55e-3, loh 9.77e-4, fresnel_schlick 2.13e-3, ggx_d 1.41e-3,
+ * every bound (clang 14's objects, 2026-12-07: noh 1.55e-3, loh 9.77e-4,
+ * fresnel_schlick 2.13e-3, ggx_d 1.41e-3,
  * smith_vis 1.93e-3, smith_vis_hammon 1.53e-3, diffuse_hammon 3.82e-3,
- * brdf_hammon 3.58e-3, lambert 6.28e-4).
+ * brdf_hammon 3.58e-3, lambert 6.28e-4).  rvvfp16 (RISC-V Vector with Zvfh:
+ * vfrec7 / vfrsqrt7 and one Newton step, facet/rvvfp16.h) over 2,000,000
+ * under qemu-riscv64 -cpu rv64,v=true,Zfh=true at VLEN 128, 256 and 512 (the
+ * same figures at each: a lane's arithmetic does not depend on VLEN), within
+ * every bound: noh 1.54e-3, loh 1.08e-3, fresnel_schlick 2.13e-3, ggx_d
+ * 1.44e-3, smith_vis 2.11e-3, smith_vis_hammon 1.61e-3, diffuse_hammon
+ * 3.82e-3, brdf_hammon 3.58e-3, lambert 6.28e-4 (the dispatcher refuses it
+ * there, qemu-user 7.2 having no riscv_hwprobe: tests/suites/54-rvv.sh runs
+ * the table itself, FACET_TEST_F16_FORCE).
  *
  * Speed on the Arm ports (ports/README.md, "Binary16"): f16 against f32
  * 1.8x to 2.4x on Helium (Cortex-M55: qemu instructions, llvm-mca-16
@@ -91,14 +102,18 @@
  * binary16-only kernels; brdf_hammon 1.79x on NEON (target 1.7x: met on the
  * A55 model) but 1.14x / 1.21x on Helium (target missed: its f32-lane part
  * costs what binary16 saves, and on MVE's 8 Q registers the f32 lanes
- * spill).  No RISC-V Zvfh port:
- * nothing here can detect Zvfh at run time (ports/README.md).
+ * spill).  RISC-V Vector with Zvfh (rvvfp16, facet/rvvfp16.h: qemu
+ * instructions per sample, VLEN 128 / 256 / 512): the binary16-only
+ * kernels execute 1.6x to 2.4x fewer than the rvv f32 port, brdf_hammon
+ * 1.42x / 1.40x / 1.36x (target 1.7x: missed; its f32 lanes are LMUL 2
+ * groups).
  *
  * Ways in: facet_<kernel>_f16 (one sample, the scalar port),
  * facet_<kernel>_f16_batch (any count, any alignment, out may be an input:
  * the best f16 port for this CPU), inline facet_<kernel>_f16_<port>
  * (facet/f16_scalar.h on float-held binary16 values, facet/avx512fp16.h on
- * __m512h, facet/neonfp16.h and facet/heliumfp16.h on float16x8_t).  Which kernels have an f16 form, and why the others do not:
+ * __m512h, facet/neonfp16.h and facet/heliumfp16.h on float16x8_t,
+ * facet/rvvfp16.h on vfloat16m1_t).  Which kernels have an f16 form, and why the others do not:
  * src/core/f16_kernels.def (`facet list --formats`). */
 #ifndef FACET_F16_H
 #define FACET_F16_H
@@ -129,7 +144,10 @@ void facet_f32_from_f16_batch(float *out, const facet_f16 *in, size_t n);
  * the OS saving ZMM state) and the active port (facet_set_port) is
  * avx512; "neonfp16" on aarch64 where HWCAP has FPHP and ASIMDHP;
  * "heliumfp16" on Armv8.1-M where MVFR1.MVE is 2 (MVE with floating point:
- * Cortex-M55, M85) and the active port is helium; else "scalar".  facet_f16_port_supported(name): 1 where this CPU
+ * Cortex-M55, M85) and the active port is helium; "rvvfp16" on riscv64 Linux
+ * where AT_HWCAP has V, the riscv_hwprobe system call reports Zvfh
+ * (RISCV_HWPROBE_EXT_ZVFH) and the active port is rvv (refused where the
+ * call is absent: a kernel before 6.4, qemu-user 7.2); else "scalar".  facet_f16_port_supported(name): 1 where this CPU
  * runs it; facet_f16_port_refusal(name): why not (NULL where it does, or
  * for an unknown name). */
 const char *facet_f16_port_name(void);

@@ -1,7 +1,7 @@
 /* cpu.c - the one place CPU features are read: CPUID and XCR0 on x86 (the
  * CPU has the instructions and the OS saves their registers), HWCAP on
  * armv7; aarch64 always has NEON; MVFR1 on Armv8.1-M (Helium); HWCAP on
- * riscv64 Linux (RVV).  One test per port of src/core/ports.def (its cpu
+ * riscv64 Linux (RVV) and the riscv_hwprobe system call (Zvfh).  One test per port of src/core/ports.def (its cpu
  * column), defined under that line's guard (src/core/platform.h); the
  * dispatcher (src/core/dispatch.c) asks them, the bench and the
  * rasterizer ask through facet_port_supported().  Built without any ISA
@@ -17,6 +17,12 @@
 #endif
 #if FACET_ON_ARMV7_LINUX || FACET_ON_RISCV64_LINUX || (FACET_ON_AARCH64 && defined(__linux__))
 #include <sys/auxv.h>
+#endif
+#if FACET_ON_RVVFP16
+#include <errno.h>
+#include <stdint.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 #endif
 
 int facet_cpu_always(void) { return 1; }
@@ -148,3 +154,75 @@ int facet_cpu_rvv(void)
     return (getauxval(AT_HWCAP) >> ('V' - 'A')) & 1ul;
 }
 #endif
+
+#if FACET_ON_RVVFP16
+/* The f16 table of the rvv line (src/core/ports.def): V (AT_HWCAP, above)
+ * and Zvfh, which AT_HWCAP cannot say (it has the single-letter extensions
+ * only) and V does not imply: a core may have V without Zvfh, and the
+ * table would raise SIGILL there.  Linux reports Zvfh only through the
+ * riscv_hwprobe system call (Documentation/arch/riscv/hwprobe.rst; the
+ * call came with Linux 6.4, the Zvfh bit with a later release): one
+ * key-value pair, RISCV_HWPROBE_KEY_IMA_EXT_0 = 4, whose value has
+ * RISCV_HWPROBE_EXT_ZVFH = 1 << 30 set where every online hart has Zvfh
+ * (cpus NULL, cpusetsize 0: all online CPUs; a key the kernel does not
+ * know comes back as -1).  The numbers are the Linux UAPI's
+ * (arch/riscv/include/uapi/asm/hwprobe.h; __NR_riscv_hwprobe = 258,
+ * include/uapi/asm-generic/unistd.h), written out here because the
+ * toolchain's kernel headers (Debian 12: Linux 6.1) predate the call.
+ * Where the call is absent (ENOSYS: a kernel before 6.4, qemu-user 7.2)
+ * Zvfh cannot be detected and the table is refused, with that reason
+ * (facet_cpu_why).  Read once, as avx512fp16's test: the f16 batches ask
+ * on every call. */
+#define FACET_NR_RISCV_HWPROBE 258
+#define FACET_HWPROBE_KEY_IMA_EXT_0 4
+#define FACET_HWPROBE_EXT_ZVFH (1ull << 30)
+
+enum { RVVFP16_UNREAD, RVVFP16_YES, RVVFP16_NO_V, RVVFP16_ENOSYS, RVVFP16_FAILED, RVVFP16_NO_KEY, RVVFP16_NO_ZVFH };
+static int rvvfp16_read_(void)
+{
+    struct { int64_t key; uint64_t value; } pair = { FACET_HWPROBE_KEY_IMA_EXT_0, 0 };
+    if (!facet_cpu_rvv())
+        return RVVFP16_NO_V;
+    if (syscall(FACET_NR_RISCV_HWPROBE, &pair, (size_t)1, (size_t)0, (void *)0, 0u) != 0)
+        return errno == ENOSYS ? RVVFP16_ENOSYS : RVVFP16_FAILED;
+    if (pair.key != FACET_HWPROBE_KEY_IMA_EXT_0)
+        return RVVFP16_NO_KEY;
+    return pair.value & FACET_HWPROBE_EXT_ZVFH ? RVVFP16_YES : RVVFP16_NO_ZVFH;
+}
+static int rvvfp16_state_(void)
+{
+    static int known; /* RVVFP16_UNREAD until read */
+    int k = __atomic_load_n(&known, __ATOMIC_RELAXED);
+    if (k == RVVFP16_UNREAD) {
+        k = rvvfp16_read_();
+        __atomic_store_n(&known, k, __ATOMIC_RELAXED);
+    }
+    return k;
+}
+int facet_cpu_rvvfp16(void) { return rvvfp16_state_() == RVVFP16_YES; }
+#endif
+
+/* what a failed CPU test saw, where it can say more than the table's
+ * `needs` (src/core/f16_port.h): facet_f16_port_refusal's text; NULL
+ * elsewhere */
+const char *facet_cpu_why(int (*test)(void))
+{
+#if FACET_ON_RVVFP16
+    if (test == facet_cpu_rvvfp16)
+        switch (rvvfp16_state_()) {
+        case RVVFP16_NO_V: return "RISC-V V with Zvfh: AT_HWCAP has no V here";
+        case RVVFP16_ENOSYS:
+            return "RISC-V V with Zvfh, which only the riscv_hwprobe system call reports: riscv_hwprobe answers "
+                   "ENOSYS here (a kernel before 6.4, or qemu-user 7.2), so Zvfh cannot be detected";
+        case RVVFP16_FAILED: return "RISC-V V with Zvfh: the riscv_hwprobe system call failed here";
+        case RVVFP16_NO_KEY:
+            return "RISC-V V with Zvfh: this kernel's riscv_hwprobe does not know RISCV_HWPROBE_KEY_IMA_EXT_0";
+        case RVVFP16_NO_ZVFH:
+            return "RISC-V V with Zvfh: riscv_hwprobe does not report Zvfh here (the CPU lacks it, or the kernel "
+                   "predates its bit)";
+        default: return (const char *)0;
+        }
+#endif
+    (void)test;
+    return (const char *)0;
+}

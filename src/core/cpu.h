@@ -12,4 +12,9 @@
 #include "ports.def"
 #undef FACET_PORT
 
+/* what a failed test (one of the above) saw, as a refusal says it, where
+ * it knows more than the table's `needs` (rvvfp16: why riscv_hwprobe gave
+ * no Zvfh); NULL elsewhere */
+const char *facet_cpu_why(int (*test)(void));
+
 #endif

@@ -313,7 +313,11 @@ int facet_f16_port_supported(const char *name)
 const char *facet_f16_port_refusal(const char *name)
 {
     const port_entry *p = f16_find(name);
-    return !p || p->f16_supported() ? NULL : p->f16->needs;
+    const char *why;
+    if (!p || p->f16_supported())
+        return NULL;
+    why = facet_cpu_why(p->f16_supported);
+    return why ? why : p->f16->needs;
 }
 
 #define F16_PARAM_(q) const uint16_t *x##q

@@ -16,7 +16,7 @@
 /* out[i] = facet_<name>_f16(x0[i], ...), any count, out may be an input */
 typedef struct facet_f16_port {
     const char *name;
-    int lanes;
+    int lanes; /* 0: vector-length agnostic (rvvfp16: VLEN / 16) */
 #define FACET_F16(name, NAME, n, form, why) \
     FACET_IF_F16(form, void (*name)(uint16_t *out, FACET_EACH_INPUT(n, FACET_F16_PARAM_), size_t count);)
 #include "f16_kernels.def"

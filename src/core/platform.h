@@ -26,6 +26,11 @@
 #define FACET_ON_RISCV64_LINUX 1
 #if defined(FACET_PORT_RVV)
 #define FACET_ON_RVV 1 /* and ports/rvv/port.mk's RVV_CC built the port */
+#if defined(FACET_PORT_RVVFP16)
+#define FACET_ON_RVVFP16 1 /* and ports/rvvfp16/port.mk its binary16 table */
+#else
+#define FACET_ON_RVV_NO_F16 1
+#endif
 #endif
 #endif
 
@@ -52,6 +57,12 @@
 #endif
 #ifndef FACET_ON_RVV
 #define FACET_ON_RVV 0
+#endif
+#ifndef FACET_ON_RVVFP16
+#define FACET_ON_RVVFP16 0
+#endif
+#ifndef FACET_ON_RVV_NO_F16
+#define FACET_ON_RVV_NO_F16 0
 #endif
 /* every build */
 #define FACET_ON_ANY 1

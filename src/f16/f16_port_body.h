@@ -2,15 +2,21 @@
  * (src/core/f16_port.h), from its inline kernels facet_<kernel>_f16_<port>.
  * A port's f16 file includes it once, after its inline header, with:
  *   F16_PORT             the port's name token (ports.def's f16 column)
- *   F16_W                its lanes
+ *   F16_W                its lanes (0: vector-length agnostic, see F16_STEP)
+ *   F16_STEP             lanes per vector at run time, an expression (default
+ *                        F16_W; rvvfp16: VLMAX)
  *   F16_NEEDS            what the CPU needs for it (a string, "" for none)
  *   F16_LOAD(p), F16_STORE(p, v)          a whole vector of binary16 bits
- *   F16_LOAD_N(p, r), F16_STORE_N(p, v, r) the tail: r < F16_W values,
+ *   F16_LOAD_N(p, r), F16_STORE_N(p, v, r) the tail: r < F16_STEP values,
  *                        nothing read or written past p + r
  * Names generated here from src/core/f16_kernels.def.  Every batch is one
  * loop: whole vectors, then one tail; all of a block's inputs are loaded
  * before its output is stored, so out may be an input. */
 #include "../core/f16_port.h"
+
+#ifndef F16_STEP
+#define F16_STEP F16_W
+#endif
 
 #define F16_CAT_(a, b, c) a##b##c
 #define F16_CAT(a, b, c) F16_CAT_(a, b, c)
@@ -27,8 +33,8 @@
     FACET_IF_F16(form,                                                                          \
     static void F16_FN(name)(uint16_t *out, FACET_EACH_INPUT(n, F16_PARAM_), size_t count)      \
     {                                                                                           \
-        size_t i = 0;                                                                           \
-        for (; i + F16_W <= count; i += F16_W)                                                  \
+        size_t i = 0, w_ = F16_STEP;                                                            \
+        for (; i + w_ <= count; i += w_)                                                        \
             F16_STORE(out + i, F16_KERNEL(name)(FACET_EACH_INPUT(n, F16_LOAD_AT_)));            \
         if (i < count)                                                                          \
             F16_STORE_N(out + i, F16_KERNEL(name)(FACET_EACH_INPUT(n, F16_LOAD_N_AT_)), count - i); \

@@ -4,7 +4,8 @@
  * enforces FACET_ERR_<NAME>_F16 (the error measure of facet/f16.h), that no
  * result is Inf or NaN, and that values above 65504 give 65504; prints the
  * measured table (max error, log2, argmax inputs).
- * FACET_TEST_QUICK: fewer samples (emulators). */
+ * FACET_TEST_QUICK: fewer samples (emulators); FACET_TEST_F16_FORCE: a
+ * table the dispatcher refuses, run all the same (f16_test.h). */
 #include <stdio.h>
 #include <stdlib.h>
 #include "../lib/harness.h"
@@ -15,6 +16,7 @@ int main(int argc, char **argv)
     long n = argc > 1 ? atol(argv[1]) : getenv("FACET_TEST_QUICK") ? 30000 : 400000;
     size_t ki, j;
     th_name = "test_f16_accuracy";
+    f16t_force_check();
     printf("%-18s %-11s %10s %7s  %s\n", "kernel", "port", "max err", "log2", "at (inputs; got, want)");
     for (ki = 0; ki < facet_f16_kernel_count(); ki++) {
         const facet_f16_kernel *h = facet_f16_kernel_at(ki);
@@ -55,7 +57,7 @@ int main(int argc, char **argv)
                     printf("%-18s %-11s not run: %s\n", h->name, pname, why ? why : "not in this build");
                     continue;
                 }
-                h->f16_batch(out, (const facet_f16 *const *)in, (size_t)n);
+                f16t_batch(h, j, out, (const facet_f16 *const *)in, (size_t)n);
             } else {
                 for (s = 0; s < n; s++) {
                     facet_f16 x[FACET_MAX_INPUTS];

@@ -1,7 +1,13 @@
 /* test_f16_estimates.c - the reciprocal and rsqrt of the f16 ports that
- * build them from bit-level seeds (facet/heliumfp16.h: MVE has no estimate
- * instruction), checked exhaustively against the errors their header
- * states, on the port's own ops:
+ * refine them themselves, checked exhaustively against the errors their
+ * header states, on the port's own ops.  rvvfp16 (facet/rvvfp16.h, built
+ * for rv64gcv_zfh as test_f16_estimates_rvv: tests/ports/rvv.mk): vfrec7 /
+ * vfrsqrt7 and one Newton step, every positive normal binary16 x (1/x:
+ * those whose 1/x is normal) and every float of the estimate tables'
+ * period, the raw estimates within 2^-7 and the refined ones within the
+ * figures the header states, errors computed in double.
+ * heliumfp16 (facet/heliumfp16.h: MVE has no estimate instruction: bit-level
+ * seeds):
  *   binary16 rcp    every binary16 x in [2^-14, 2^14] (1/x normal):
  *                   |r x - 1| (exact in double) <= HFP16_RCP
  *   binary16 rsqrt  every positive normal binary16 x: |y sqrt(x) - 1| <=
@@ -124,11 +130,137 @@ int main(void)
     f32_lanes();
     return th_done();
 }
+#elif defined(__riscv_vector) && defined(__riscv_zfh)
+#include <string.h>
+#include "facet/rvvfp16.h"
+
+/* the errors facet/rvvfp16.h states (measured here, rounded up): the raw
+ * estimates (the premise of one Newton step: at most 2^-7), and after the
+ * step */
+#define RVV_EST7 0x1p-7
+#define RVVFP16_RCP 4.94e-4   /* 2^-10.99; the correctly rounded 1/x: 4.88e-4 */
+#define RVVFP16_RSQRT 5.79e-4 /* 2^-10.76 */
+#define RVVFP16_W_RCP 3.13e-5 /* 2^-14.97 */
+#define RVVFP16_W_RSQRT 5.92e-5 /* 2^-14.05: below f16_body.h's 2^-14 budget */
+
+typedef struct { double max, at; } rvv_err;
+static void rvv_note(rvv_err *e, double err, double x)
+{
+    if (err > e->max) {
+        e->max = err;
+        e->at = x;
+    }
+}
+static void rvv_print(const char *what, rvv_err e, const char *over)
+{
+    printf("%-24s max rel. error %.4g (2^%.2f) at x = %.9g, over %s\n", what, e.max, log2(e.max), e.at, over);
+}
+
+/* binary16: every x from bits lo to hi - 1, the raw estimates and the port's
+ * rcp and rsqrt, each strip with its own vl (vsetvl: an explicit vtype) */
+static void binary16(void)
+{
+    static uint16_t xb[0x7c00], r7[0x7c00], y7[0x7c00], rb[0x7c00], yb[0x7c00];
+    rvv_err e_r7 = { 0, 0 }, e_y7 = { 0, 0 }, e_r = { 0, 0 }, e_y = { 0, 0 };
+    size_t i, n = 0x7c00u - 0x0400u, vl;
+    for (i = 0; i < n; i++)
+        xb[i] = (uint16_t)(0x0400u + i); /* every positive normal, 2^-14 .. 65504 */
+    for (i = 0; i < n; i += vl) {
+        facet_rvvfp16_v x;
+        vl = facet_rvvfp16_vl(n - i);
+        x = facet_rvvfp16_load(xb + i, vl);
+        facet_rvvfp16_store(r7 + i, vfrec7_v_f16m1(x, vl), vl);
+        facet_rvvfp16_store(y7 + i, vfrsqrt7_v_f16m1(x, vl), vl);
+        vl = facet_rvvfp16_vl(n - i);
+        x = facet_rvvfp16_load(xb + i, vl);
+        facet_rvvfp16_store(rb + i, facet_rvvfp16_h_rcp(x), vl);
+        vl = facet_rvvfp16_vl(n - i);
+        x = facet_rvvfp16_load(xb + i, vl);
+        facet_rvvfp16_store(yb + i, facet_rvvfp16_h_rsqrt(x), vl);
+    }
+    for (i = 0; i < n; i++) {
+        double x = facet_f32_from_f16(xb[i]), s = sqrt(x);
+        if (xb[i] <= 0x7400u) { /* x <= 2^14: 1/x normal */
+            rvv_note(&e_r7, fabs((double)facet_f32_from_f16(r7[i]) * x - 1.0), x);
+            rvv_note(&e_r, fabs((double)facet_f32_from_f16(rb[i]) * x - 1.0), x);
+        }
+        rvv_note(&e_y7, fabs((double)facet_f32_from_f16(y7[i]) * s - 1.0), x);
+        rvv_note(&e_y, fabs((double)facet_f32_from_f16(yb[i]) * s - 1.0), x);
+    }
+    rvv_print("binary16 vfrec7:", e_r7, "[2^-14, 2^14]");
+    rvv_print("binary16 vfrsqrt7:", e_y7, "[2^-14, 65504]");
+    rvv_print("binary16 rcp:", e_r, "[2^-14, 2^14]");
+    rvv_print("binary16 rsqrt:", e_y, "[2^-14, 65504]");
+    CHECK(e_r7.max <= RVV_EST7 && e_y7.max <= RVV_EST7, "binary16 estimates: %.4g, %.4g above 2^-7", e_r7.max,
+          e_y7.max);
+    CHECK(e_r.max <= RVVFP16_RCP, "binary16 rcp: error %.4g above the stated %.4g", e_r.max, RVVFP16_RCP);
+    CHECK(e_y.max <= RVVFP16_RSQRT, "binary16 rsqrt: error %.4g above the stated %.4g", e_y.max, RVVFP16_RSQRT);
+    CHECK(e_r.max > 1e-9 && e_y.max > 1e-9, "the binary16 measure finds no error at all");
+}
+
+/* f32 (FACET_W): every float from bits lo to hi - 1 (the tables' period:
+ * vfrec7 reads the significand's top 7 bits, the exponent only to form the
+ * result's, so [1, 2) is every normal x whose 1/x is normal; vfrsqrt7 the
+ * exponent's parity and 6 bits: [1, 4)), errors in double (r x exact, y
+ * sqrt(x) to 2^-52) */
+static void f32_range(uint32_t lo, uint32_t hi, int rsqrt, rvv_err *raw, rvv_err *ref)
+{
+    enum { B = 1 << 16 };
+    static float xs[B], r7[B], rr[B];
+    uint32_t base, j;
+    size_t i, n, vl;
+    for (base = lo; base < hi; base += B) {
+        n = hi - base < B ? hi - base : B;
+        for (j = 0; j < n; j++) {
+            uint32_t b = base + j;
+            memcpy(&xs[j], &b, sizeof b);
+        }
+        for (i = 0; i < n; i += vl) {
+            facet_rvvfp16_w x;
+            vl = vsetvl_e32m2(n - i);
+            x = vle32_v_f32m2(xs + i, vl);
+            vse32_v_f32m2(r7 + i, rsqrt ? vfrsqrt7_v_f32m2(x, vl) : vfrec7_v_f32m2(x, vl), vl);
+            vl = vsetvl_e32m2(n - i);
+            x = vle32_v_f32m2(xs + i, vl);
+            vse32_v_f32m2(rr + i, rsqrt ? facet_rvvfp16_h_w_rsqrt(x) : facet_rvvfp16_h_w_rcp(x), vl);
+        }
+        for (j = 0; j < n; j++) {
+            double x = xs[j], m = rsqrt ? sqrt(x) : x;
+            rvv_note(raw, fabs((double)r7[j] * m - 1.0), x);
+            rvv_note(ref, fabs((double)rr[j] * m - 1.0), x);
+        }
+    }
+}
+
+static void f32_lanes(void)
+{
+    rvv_err r7 = { 0, 0 }, r = { 0, 0 }, y7 = { 0, 0 }, y = { 0, 0 };
+    f32_range(0x3f800000u, 0x40000000u, 0, &r7, &r);
+    f32_range(0x3f800000u, 0x40800000u, 1, &y7, &y);
+    rvv_print("f32 vfrec7:", r7, "[1, 2)");
+    rvv_print("f32 vfrsqrt7:", y7, "[1, 4)");
+    rvv_print("f32 rcp:", r, "[1, 2)");
+    rvv_print("f32 rsqrt:", y, "[1, 4)");
+    CHECK(r7.max <= RVV_EST7 && y7.max <= RVV_EST7, "f32 estimates: %.4g, %.4g above 2^-7", r7.max, y7.max);
+    CHECK(r.max <= RVVFP16_W_RCP, "f32 rcp: error %.4g above the stated %.4g", r.max, RVVFP16_W_RCP);
+    CHECK(y.max <= RVVFP16_W_RSQRT, "f32 rsqrt: error %.4g above the stated %.4g", y.max, RVVFP16_W_RSQRT);
+    CHECK(r.max > 1e-9 && y.max > 1e-9, "the f32 measure finds no error at all");
+}
+
+int main(void)
+{
+    th_name = "test_f16_estimates";
+    printf("rvvfp16 at VLEN %u\n", (unsigned)(vsetvlmax_e8m1() * 8));
+    binary16();
+    f32_lanes();
+    return th_done();
+}
 #else
 int main(void)
 {
     th_name = "test_f16_estimates";
-    SKIP("no f16 port with seeded estimates under this build's flags (heliumfp16: MVE floating point)");
+    SKIP("no f16 port with its own estimates under this build's flags (heliumfp16: MVE floating point; rvvfp16: "
+         "rv64gcv_zfh, the RVV build's test_f16_estimates_rvv)");
     return th_done();
 }
 #endif

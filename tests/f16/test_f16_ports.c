@@ -9,7 +9,9 @@
  *   tails    every count 0 .. 100 at offsets 0 .. 3: the same bits as the
  *            whole batch, nothing written past the count; out may be an input
  *   choice   the refusal of a port this CPU cannot run names what it needs,
- *            and the f16 batches then run the scalar port */
+ *            and the f16 batches then run the scalar port
+ * FACET_TEST_F16_FORCE: a table the dispatcher refuses, run all the same
+ * (f16_test.h); the choice checks still ask the dispatcher. */
 #include <stdio.h>
 #include <stdlib.h>
 #include "../lib/harness.h"
@@ -37,7 +39,7 @@ static facet_f16 one(const facet_f16_kernel *h, size_t j, const facet_f16 *x)
         in[i][0] = x[i];
         p[i] = in[i];
     }
-    h->f16_batch(&o, p, 1);
+    f16t_batch(h, j, &o, p, 1);
     return o;
 }
 
@@ -91,7 +93,7 @@ static void bad_input(const facet_f16_kernel *h, const facet_kernel *k, size_t j
 }
 
 #define N_ 104
-static void tails(const facet_f16_kernel *h, const facet_kernel *k, const char *pname)
+static void tails(const facet_f16_kernel *h, const facet_kernel *k, size_t j, const char *pname)
 {
     facet_f16 in[FACET_MAX_INPUTS][N_ + 8], ref[N_ + 8], out[N_ + 8], alias[N_ + 8];
     const facet_f16 *p[FACET_MAX_INPUTS];
@@ -107,21 +109,21 @@ static void tails(const facet_f16_kernel *h, const facet_kernel *k, const char *
     }
     for (i = 0; i < h->n_inputs; i++)
         p[i] = in[i];
-    h->f16_batch(ref, p, N_ + 8);
+    f16t_batch(h, j, ref, p, N_ + 8);
     for (off = 0; off < 4; off++)
         for (n = 0; n <= 100; n++) {
             for (i = 0; i < h->n_inputs; i++)
                 p[i] = in[i] + off;
             for (s = 0; s < N_ + 8; s++)
                 out[s] = 0xabcd;
-            h->f16_batch(out + off, p, n);
+            f16t_batch(h, j, out + off, p, n);
             for (s = 0; s < N_ + 8; s++)
                 if (out[s] != (s >= off && s < off + n ? ref[s] : 0xabcd))
                     bad++;
             /* out is the first input */
             memcpy(alias, in[0], sizeof alias);
             p[0] = alias + off;
-            h->f16_batch(alias + off, p, n);
+            f16t_batch(h, j, alias + off, p, n);
             for (s = off; s < off + n; s++)
                 if (alias[s] != ref[s])
                     bad_alias++;
@@ -134,6 +136,7 @@ int main(void)
 {
     size_t ki, j;
     th_name = "test_f16_ports";
+    f16t_force_check();
     list_checks();
     for (j = 0; j <= F16T_N_PORTS; j++) {
         const char *pname = j < F16T_N_PORTS ? f16t_ports[j].f16 : "per-sample";
@@ -149,7 +152,7 @@ int main(void)
                 continue;
             bad_input(h, k, j, pname);
             if (j < F16T_N_PORTS)
-                tails(h, k, pname);
+                tails(h, k, j, pname);
         }
     }
     /* the choice */

@@ -14,3 +14,14 @@ $(BUILD)/tests/test_tails_rvv: tests/f32/test_tails.c tests/lib/harness.h $(HEAD
 	$(CC) $(CFLAGS) -o $@ $@.o $(BUILD)/libfacet.a -lm
 endif
 endif
+# The rvvfp16 port's own tests, compiled by RVV_CC for rv64gcv_zfh where
+# ports/rvvfp16/port.mk builds the port: test_f16_estimates.c (vfrec7 /
+# vfrsqrt7 and the port's Newton steps, exhaustively: its rvvfp16 branch).
+# Run only where the CPU has V and binary16 vector arithmetic (qemu -cpu
+# rv64,v=true,Zfh=true).
+ifeq ($(RVVFP16_OK),1)
+$(BUILD)/tests/test_f16_estimates_rvv: tests/f16/test_f16_estimates.c tests/lib/harness.h $(HEADERS) $(BUILD)/libfacet.a
+	@mkdir -p $(dir $@)
+	$(RVV_CC) $(RVVFP16_CCFLAGS) $(BASEFLAGS) -D_DEFAULT_SOURCE -c $< -o $@.o
+	$(CC) $(CFLAGS) -o $@ $@.o $(BUILD)/libfacet.a -lm
+endif

@@ -24,7 +24,7 @@ isa() {
     facet/avx2.h) [ -n "$x86" ] && echo "-mavx2 -mfma" || echo skip ;;
     facet/avx512.h) [ -n "$x86" ] && echo "-mavx512f -mavx2 -mfma" || echo skip ;;
     facet/avx512fp16.h) [ -n "$x86" ] && echo "-mavx512fp16 -mavx512bw -mavx512vl -mavx512f" || echo skip ;;
-    facet/neon.h | facet/neonfp16.h | facet/helium.h | facet/heliumfp16.h | facet/rvv.h) echo skip ;;
+    facet/neon.h | facet/neonfp16.h | facet/helium.h | facet/heliumfp16.h | facet/rvv.h | facet/rvvfp16.h) echo skip ;;
     *) echo "" ;;
     esac
 }
