@@ -74,7 +74,7 @@ typedef vbool32_t facet_rvv_mask;
  * gives vl = VLMAX) and clang as its VLMAX sentinel, so one vsetvli serves
  * a whole run of ops (vsetvlmax() in each op was one vsetvli per op: clang
  * 14 does not merge them) */
-#define FACET_RVV_VL_ ((size_t)-1)
+#define FACET_RVV_VL_ FACET_CAST(size_t, -1)
 
 FACET_INLINE facet_rvv_v facet_rvv_set(float x) { return FACET_RVV_F_(vfmv_v_f)(x, FACET_RVV_VL_); }
 FACET_INLINE facet_rvv_v facet_rvv_add(facet_rvv_v a, facet_rvv_v b) { return FACET_RVV_F_(vfadd_vv)(a, b, FACET_RVV_VL_); }

@@ -28,9 +28,10 @@
 #   rvvfp16-isa        the port's object has binary16 vector arithmetic and
 #                      no scalar binary16 instruction beyond Zfhmin (which
 #                      Zvfh implies; Zfh it does not), and the check finds
-#                      one in a broken copy; facet/rvvfp16.h alone compiles
-#                      as strict C99 and C++11 / C++17 (clang, -pedantic
-#                      -Werror, -Wold-style-cast)
+#                      one in a broken copy; facet/rvv.h and facet/rvvfp16.h
+#                      (suite 25 compiles every other installed header)
+#                      compile as strict C99 and C++11 / C++17 (clang,
+#                      -pedantic -Werror, -Wold-style-cast)
 #   test_f16_ports, test_f16_accuracy (FACET_TEST_QUICK=1), test_f16_estimates_rvv
 #                      with FACET_TEST_F16_FORCE=rvvfp16 (tests/f16/f16_test.h:
 #                      the table called directly, as the dispatcher refuses
@@ -150,14 +151,14 @@ f16_isa() {
        [ -n "$(beyond_zfhmin $dir/f16_isa_probe.o)" ]; then pass=$((pass + 1))
     else fail=$((fail + 1)); echo "FAIL rvvfp16-isa: the check finds no scalar Zfh arithmetic in the broken copy"; fi
     # the header alone, strict C99 and C++
-    printf '#include <facet/rvvfp16.h>\nint facet_header_probe_(void);\nint facet_header_probe_(void) { return 0; }\n' > $dir/rvvfp16_h.c
+    printf '#include <facet/rvv.h>\n#include <facet/rvvfp16.h>\nint facet_header_probe_(void);\nint facet_header_probe_(void) { return 0; }\n' > $dir/rvvfp16_h.c
     cp $dir/rvvfp16_h.c $dir/rvvfp16_h.cc
     for c in "clang -std=c99 $dir/rvvfp16_h.c" "clang++ -std=c++11 -Wold-style-cast $dir/rvvfp16_h.cc" \
              "clang++ -std=c++17 -Wold-style-cast $dir/rvvfp16_h.cc"; do
         # shellcheck disable=SC2086
         if o=$($c --target=riscv64-linux-gnu -march=rv64gcv_zfh -pedantic -Wall -Wextra -Werror -Iinclude -c -o $dir/rvvfp16_h.o 2>&1); then
             pass=$((pass + 1))
-        else fail=$((fail + 1)); echo "FAIL rvvfp16-isa: facet/rvvfp16.h does not compile ($c): $(printf '%s' "$o" | head -n 3 | tr '\n' ' ')"; fi
+        else fail=$((fail + 1)); echo "FAIL rvvfp16-isa: facet/rvv.h and facet/rvvfp16.h do not compile ($c): $(printf '%s' "$o" | head -n 3 | tr '\n' ' ')"; fi
     done
     echo "rvvfp16-isa: $pass passed, $fail failed, 0 skipped"
 }
