@@ -57,7 +57,8 @@ done
 # C++ users build with -Wold-style-cast: every header is clean under it (a
 # conversion in a header is FACET_CAST, facet/common.h), on x86 with g++
 # and, for the Arm port headers, with arm-none-eabi-g++ (Helium on M55,
-# NEON on an A53 in A32) where it is installed
+# NEON on an A53 in A32) where it is installed, and clang++ for aarch64
+# (neonfp16)
 for h in $headers; do
     f=$(isa $h)
     [ "$f" = skip ] && continue
@@ -70,6 +71,14 @@ if have arm-none-eabi-g++; then
     done
     try c++17-old-style-cast facet/neon.h arm-none-eabi-g++ -std=c++17 -Wall -Wextra -Wold-style-cast -Werror \
         -mcpu=cortex-a53 -mfpu=neon-fp-armv8 -mfloat-abi=hard -marm
+fi
+# the aarch64 binary16 header (no aarch64 g++ here): clang++ for aarch64
+# with the cross libc's headers
+if have clang++ && [ -d /usr/aarch64-linux-gnu/include ]; then
+    for std in c++11 c++17; do
+        try $std-old-style-cast facet/neonfp16.h clang++ --target=aarch64-linux-gnu -march=armv8.2-a+fp16 \
+            -isystem /usr/aarch64-linux-gnu/include -std=$std -pedantic -Wall -Wextra -Wold-style-cast -Werror
+    done
 fi
 # the Helium headers (f32 and binary16) with the Cortex-M55's compilers:
 # arm-none-eabi-gcc and clang as strict C99, arm-none-eabi-g++ as C++11 and
