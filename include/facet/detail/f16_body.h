@@ -147,7 +147,7 @@ FACET_INLINE V_ X16_POW5_Y_(V_ c)
 
 /* Schlick with f90: the convex combination f0 (1 - y^5) + f90 y^5 (y = 1 - c,
  * as f32_body.h: f90 < f0 does not cancel), 1 - y^5 = c Q(c) (positive
- * terms, X16_POW5_Q_ below with f0 for its constant), f0 Q(c) formed
+ * terms, X16_POW5_Q_ above with f0 for its constant), f0 Q(c) formed
  * before the product with c (a subnormal c or f0 rounds once, last) */
 FACET_INLINE V_ FACET_K(fresnel_schlick_f90)(V_ f0, V_ f90, V_ voh)
 {
@@ -263,7 +263,7 @@ FACET_INLINE V_ FACET_K(g_kelemen)(V_ nol, V_ nov, V_ voh)
 
 /* Schlick's G1 for Beckmann: n / (n (1 - k) + k), k = alpha sqrt(2/pi)
  * (<= 0.798, >= 2^-7.3: terms >= 0, the divisor normal; sqrt(2/pi) rounds
- * to binary16 within 2^-14.7 of itself) */
+ * to binary16 within 2^-14.5 of itself) */
 FACET_INLINE V_ FACET_K(smith_g1_schlick_beckmann)(V_ nov, V_ alpha)
 {
     V_ n = X16_COS_(nov);
