@@ -154,7 +154,7 @@ FACET_INLINE __m256 facet_avx2_getmant(__m256 x)
 
 #define FACET_V __m256
 #define FACET_PORT_NAME avx2
-#define FACET_BODY "facet/detail/f32_body.h"
+#define FACET_BODY_SAMPLES 0
 #include "facet/detail/f32_tiers.h"
 
 #endif
@@ -166,7 +166,7 @@ FACET_INLINE __m256 facet_avx2_getmant(__m256 x)
 
 #define FACET_V __m256
 #define FACET_PORT_NAME avx2
-#define FACET_BODY "facet/detail/f32_sample_body.h"
+#define FACET_BODY_SAMPLES 1
 #include "facet/detail/f32_tiers.h"
 
 #endif

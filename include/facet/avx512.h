@@ -137,7 +137,7 @@ FACET_INLINE __m512 facet_avx512_getmant(__m512 x)
 
 #define FACET_V __m512
 #define FACET_PORT_NAME avx512
-#define FACET_BODY "facet/detail/f32_body.h"
+#define FACET_BODY_SAMPLES 0
 #include "facet/detail/f32_tiers.h"
 
 #endif
@@ -149,7 +149,7 @@ FACET_INLINE __m512 facet_avx512_getmant(__m512 x)
 
 #define FACET_V __m512
 #define FACET_PORT_NAME avx512
-#define FACET_BODY "facet/detail/f32_sample_body.h"
+#define FACET_BODY_SAMPLES 1
 #include "facet/detail/f32_tiers.h"
 
 #endif

@@ -13,7 +13,8 @@
  * / 16 per vector register; the scalar port, the
  * specification, emulates binary16 in portable C: facet/f16_scalar.h), except the few operations binary16 cannot hold,
  * which run in f32 lanes from the exact binary16 inputs: ggx_d's
- * d = 1 - N.H^2 + alpha^2 N.H^2 and its quotient, and brdf_hammon's
+ * d = 1 - N.H^2 + alpha^2 N.H^2 and its quotient, ggx_aniso_d's K and D
+ * (ax^2 ay^2 down to 2^-28; D as K^-2), and brdf_hammon's
  * specular term D Vis F (the peak 2 + 2 L.V - (N.L + N.V)^2 cancels; y^5
  * raises a rounding five times; D Vis F spans 2^-18 .. 2^24); the kernel's
  * contract says which.  One tier: binary16's rounding (2^-11) is the cost
@@ -31,8 +32,11 @@
  *   N.L, N.V [FACET_F16_COS_MIN, 1] = [2^-7, 1] (89.55 degrees): N.L N.V >=
  *           2^-14 stays normal, Vis <= 2^12, and N.L + N.V is exact in f32
  *           (18 bits) for the f32 peak.  A rasterizer multiplies by N.L:
- *           the clamp only changes light at N.L < 0.0078.
- *   L.V     [-1, 1]; f0, albedo, cosines of Fresnel, N.H: [0, 1].
+ *           the clamp only changes light at N.L < 0.0078.  The same floor
+ *           for smith_g1, smith_g1_hammon, smith_g1_schlick_beckmann,
+ *           g_implicit and g_neumann, whose f32 forms take N.V (N.L) from 0.
+ *   L.V     [-1, 1], and T.H, B.H (ggx_aniso_d); alpha_x, alpha_y as alpha;
+ *           f0, f90, albedo, cosines of Fresnel, N.H, L.H, V.H: [0, 1].
  * Outside it: clamped (below the low end, -Inf and NaN to the low end, +Inf
  * to the high end).  NaN rule: a NaN in any input (every NaN class: quiet,
  * signalling, either sign, any payload) gives +0 (bits 0x0000).  Results
@@ -72,6 +76,15 @@
  * brdf_hammon runs at 0.40x-0.43x.  Issue 22's targets for brdf_hammon (2.5x f32, 0.6x the
  * transcription: at most about 78 and 118 such uops) are not met: the
  * f32-lane specular term alone is 114.
+ * The kernels given an f16 form with issue 22 item 1, one run of the same
+ * bench (2026-12-07, f16 / f32 precise): fresnel_schlick_f90 1.92,
+ * ggx_aniso_d 0.82 (all of D in f32 lanes, five inputs widened: slower
+ * than the f32 kernel; it buys binary16 in and out), smith_g1 3.92,
+ * smith_g2 3.71, smith_g2_uncorrelated 3.06, smith_g1_hammon 2.79,
+ * smith_g2_hammon 2.03, g_implicit 2.04, g_neumann 2.02, g_cook_torrance
+ * 2.20, g_kelemen 2.26, smith_g1_schlick_beckmann 2.63,
+ * smith_vis_joint_approx 2.09, diffuse_burley 1.51, diffuse_oren_nayar 2.17,
+ * diffuse_hammon_hybrid 2.36, diffuse_hammon_cheap 2.29.
  *
  * The bounds are the largest measured on any port: scalar and avx512fp16
  * over 2,000,000 samples per kernel (test_f16_accuracy 2000000), the
@@ -95,10 +108,29 @@
  * 3.82e-3, brdf_hammon 3.58e-3, lambert 6.28e-4 (the dispatcher refuses it
  * there, qemu-user 7.2 having no riscv_hwprobe: tests/suites/54-rvv.sh runs
  * the table itself, FACET_TEST_F16_FORCE).
+ * The kernels given an f16 form
+ * with issue 22 item 1 (fresnel_schlick_f90 to diffuse_hammon_cheap below)
+ * were measured by the same runs (2026-12-07; neonfp16 over 1,000,000):
+ * the worst-estimate avx512fp16 run gives the bounds of ggx_aniso_d,
+ * smith_g1, smith_g2, smith_g2_hammon, g_kelemen, smith_g1_schlick_beckmann,
+ * diffuse_oren_nayar, diffuse_hammon_hybrid and diffuse_hammon_cheap;
+ * neonfp16 those of smith_g2_uncorrelated, smith_g1_hammon, g_cook_torrance
+ * and smith_vis_joint_approx; every port has the same maximum for
+ * fresnel_schlick_f90, g_implicit (its one rounding: u) and g_neumann (0),
+ * and every port but neonfp16 (2.76e-3) for diffuse_burley.  heliumfp16
+ * (clang 14's objects): fresnel_schlick_f90 2.15e-3, ggx_aniso_d 5.00e-4,
+ * smith_g1 1.84e-3, smith_g2 2.30e-3, smith_g2_uncorrelated 2.80e-3,
+ * smith_g1_hammon 1.24e-3, smith_g2_hammon 2.09e-3, g_implicit 4.88e-4,
+ * g_neumann 0, g_cook_torrance 1.48e-3, g_kelemen 1.51e-3,
+ * smith_g1_schlick_beckmann 1.45e-3, smith_vis_joint_approx 1.53e-3,
+ * diffuse_burley 3.09e-3, diffuse_oren_nayar 2.56e-3, diffuse_hammon_hybrid
+ * 3.15e-3, diffuse_hammon_cheap 3.08e-3.
  *
  * Speed on the Arm ports (ports/README.md, "Binary16"): f16 against f32
- * 1.8x to 2.4x on Helium (Cortex-M55: qemu instructions, llvm-mca-16
- * cycles) and 2.3x to 3.6x on NEON (llvm-mca's Cortex-A55 model) for the
+ * 1.7x to 2.3x in instructions, 1.8x to 2.5x in cycles on Helium
+ * (Cortex-M55: qemu instructions, llvm-mca-16 cycles; ggx_aniso_d, all
+ * f32 lanes, 1.20x) and 2.3x to 3.6x on NEON (llvm-mca's Cortex-A55 model;
+ * the nine kernels its table counts) for the
  * binary16-only kernels; brdf_hammon 1.79x on NEON (target 1.7x: met on the
  * A55 model) but 1.14x / 1.21x on Helium (target missed: its f32-lane part
  * costs what binary16 saves, and on MVE's 8 Q registers the f32 lanes
@@ -199,6 +231,85 @@ facet_f16 facet_brdf_hammon_f16(facet_f16 nol, facet_f16 nov, facet_f16 lov, fac
 #define FACET_ERR_LAMBERT_F16 6.3e-4
 facet_f16 facet_lambert_f16(facet_f16 albedo);
 
+/* ---- the rest of the menu, in src/core/f16_kernels.def order ----------------
+ * Each bound is the measured maximum over the ports (below), rounded up. */
+
+/* Schlick with f90: f0 (1 - y^5) + f90 y^5, y = 1 - V.H (f90 < f0 does not
+ * cancel); 1 - y^5 = c Q(c) by Horner in positive terms, y^5 as
+ * fresnel_schlick's; binary16 throughout. */
+#define FACET_ERR_FRESNEL_SCHLICK_F90_F16 2.15e-3
+facet_f16 facet_fresnel_schlick_f90_f16(facet_f16 f0, facet_f16 f90, facet_f16 voh);
+/* Anisotropic GGX 1 / (pi ax ay k^2), k = (T.H/ax)^2 + (B.H/ay)^2 + N.H^2
+ * floored at 1/2 (facet.h), <= 4 / (pi ax ay) < 2^15; T.H, B.H in [-1, 1],
+ * alpha_x, alpha_y in [2^-7, 1].  In f32 lanes (5 conversions, 14
+ * operations, a reciprocal estimate), narrowed once: ax^2 ay^2 reaches
+ * 2^-28, below binary16's normals, and D goes as K^-2 (f16_body.h). */
+#define FACET_ERR_GGX_ANISO_D_F16 6.09e-4
+facet_f16 facet_ggx_aniso_d_f16(facet_f16 noh, facet_f16 toh, facet_f16 boh, facet_f16 alpha_x,
+                                facet_f16 alpha_y);
+/* Exact Smith G1 for GGX, 2 N.V / (N.V + sqrt(alpha^2 (1 - N.V^2) + N.V^2)),
+ * N.V in [2^-7, 1] as every f16 cosine; binary16 throughout (1 - N.V^2 in
+ * one fnma, a root and a quotient from the estimates). */
+#define FACET_ERR_SMITH_G1_F16 2.31e-3
+facet_f16 facet_smith_g1_f16(facet_f16 nov, facet_f16 alpha);
+/* Exact height-correlated Smith G2 (= 4 N.L N.V smith_vis); binary16
+ * throughout, two roots and a quotient. */
+#define FACET_ERR_SMITH_G2_F16 2.88e-3
+facet_f16 facet_smith_g2_f16(facet_f16 nol, facet_f16 nov, facet_f16 alpha);
+/* G1(L) G1(V); binary16 throughout, one quotient, each root with one
+ * Newton correction (3 operations: the two roots' errors multiply here). */
+#define FACET_ERR_SMITH_G2_UNCORRELATED_F16 2.85e-3
+facet_f16 facet_smith_g2_uncorrelated_f16(facet_f16 nol, facet_f16 nov, facet_f16 alpha);
+/* Hammon's G1 2 N.V / (N.V (2 - alpha) + alpha); binary16 throughout. */
+#define FACET_ERR_SMITH_G1_HAMMON_F16 1.61e-3
+facet_f16 facet_smith_g1_hammon_f16(facet_f16 nov, facet_f16 alpha);
+/* Hammon's G2 2 N.L N.V / lerp(2 N.L N.V, N.L + N.V, alpha) (smith_vis_hammon's
+ * divisor); binary16 throughout. */
+#define FACET_ERR_SMITH_G2_HAMMON_F16 2.28e-3
+facet_f16 facet_smith_g2_hammon_f16(facet_f16 nol, facet_f16 nov, facet_f16 alpha);
+/* N.L N.V: one rounding. */
+#define FACET_ERR_G_IMPLICIT_F16 4.89e-4
+facet_f16 facet_g_implicit_f16(facet_f16 nol, facet_f16 nov);
+/* Neumann, min(N.L, N.V): exact, measured 0; the tests enforce 2^-30. */
+#define FACET_ERR_G_NEUMANN_F16 9.313e-10 /* 2^-30; exact, measured 0 */
+facet_f16 facet_g_neumann_f16(facet_f16 nol, facet_f16 nov);
+/* Cook-Torrance min(1, 2 N.H min(N.L, N.V) / V.H), N.H, V.H in [0, 1]
+ * (subnormals included; V.H = 0 gives 1); binary16 throughout, N.H and V.H
+ * scaled by 2^15 and 2^14 first (exact), one quotient. */
+#define FACET_ERR_G_COOK_TORRANCE_F16 1.6e-3
+facet_f16 facet_g_cook_torrance_f16(facet_f16 nol, facet_f16 nov, facet_f16 noh, facet_f16 voh);
+/* Kelemen min(1, N.L N.V / V.H^2) (V.H = 0 gives 1); binary16 throughout. */
+#define FACET_ERR_G_KELEMEN_F16 1.75e-3
+facet_f16 facet_g_kelemen_f16(facet_f16 nol, facet_f16 nov, facet_f16 voh);
+/* Schlick's G1 for Beckmann N.V / (N.V (1 - k) + k), k = alpha sqrt(2/pi);
+ * binary16 throughout. */
+#define FACET_ERR_SMITH_G1_SCHLICK_BECKMANN_F16 1.82e-3
+facet_f16 facet_smith_g1_schlick_beckmann_f16(facet_f16 nov, facet_f16 alpha);
+/* The engines' joint visibility (facet.h; Hammon's, in Karis's form), <= 2^11;
+ * binary16 throughout. */
+#define FACET_ERR_SMITH_VIS_JOINT_APPROX_F16 1.84e-3
+facet_f16 facet_smith_vis_joint_approx_f16(facet_f16 nol, facet_f16 nov, facet_f16 alpha);
+/* Burley's diffuse (facet.h), L.H in [0, 1]: each factor as the positive
+ * terms (1 - y^5 / 2) + 2 sqrt(alpha) L.H^2 y^5, the root with one Newton
+ * correction; binary16 throughout. */
+#define FACET_ERR_DIFFUSE_BURLEY_F16 3.09e-3
+facet_f16 facet_diffuse_burley_f16(facet_f16 nol, facet_f16 nov, facet_f16 loh, facet_f16 alpha,
+                                   facet_f16 albedo);
+/* Oren-Nayar (facet.h), its constants rescaled so that binary16 holds them
+ * (f16_body.h); binary16 throughout, one quotient. */
+#define FACET_ERR_DIFFUSE_OREN_NAYAR_F16 2.83e-3
+facet_f16 facet_diffuse_oren_nayar_f16(facet_f16 nol, facet_f16 nov, facet_f16 lov, facet_f16 alpha,
+                                       facet_f16 albedo);
+/* Hammon's hybrid (facet.h) on diffuse_hammon's binary16 body; each smooth
+ * factor as 1/2 + (N / 2) Q(N) (positive terms). */
+#define FACET_ERR_DIFFUSE_HAMMON_HYBRID_F16 3.17e-3
+facet_f16 facet_diffuse_hammon_hybrid_f16(facet_f16 nol, facet_f16 nov, facet_f16 lov, facet_f16 alpha,
+                                          facet_f16 albedo);
+/* Hammon's cheap variant (smooth = 1) on diffuse_hammon's binary16 body. */
+#define FACET_ERR_DIFFUSE_HAMMON_CHEAP_F16 3.13e-3
+facet_f16 facet_diffuse_hammon_cheap_f16(facet_f16 nol, facet_f16 nov, facet_f16 lov, facet_f16 alpha,
+                                         facet_f16 albedo);
+
 /* the batches: out[i] = facet_<kernel>_f16(x0[i], ...) */
 void facet_noh_from_dots_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov,
                                    const facet_f16 *lov, size_t n);
@@ -216,6 +327,41 @@ void facet_brdf_hammon_f16_batch(facet_f16 *out, const facet_f16 *nol, const fac
                                  const facet_f16 *lov, const facet_f16 *alpha, const facet_f16 *f0,
                                  const facet_f16 *albedo, size_t n);
 void facet_lambert_f16_batch(facet_f16 *out, const facet_f16 *albedo, size_t n);
+void facet_fresnel_schlick_f90_f16_batch(facet_f16 *out, const facet_f16 *f0, const facet_f16 *f90,
+                                         const facet_f16 *voh, size_t n);
+void facet_ggx_aniso_d_f16_batch(facet_f16 *out, const facet_f16 *noh, const facet_f16 *toh,
+                                 const facet_f16 *boh, const facet_f16 *alpha_x, const facet_f16 *alpha_y,
+                                 size_t n);
+void facet_smith_g1_f16_batch(facet_f16 *out, const facet_f16 *nov, const facet_f16 *alpha, size_t n);
+void facet_smith_g2_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov,
+                              const facet_f16 *alpha, size_t n);
+void facet_smith_g2_uncorrelated_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov,
+                                           const facet_f16 *alpha, size_t n);
+void facet_smith_g1_hammon_f16_batch(facet_f16 *out, const facet_f16 *nov, const facet_f16 *alpha, size_t n);
+void facet_smith_g2_hammon_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov,
+                                     const facet_f16 *alpha, size_t n);
+void facet_g_implicit_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov, size_t n);
+void facet_g_neumann_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov, size_t n);
+void facet_g_cook_torrance_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov,
+                                     const facet_f16 *noh, const facet_f16 *voh, size_t n);
+void facet_g_kelemen_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov,
+                               const facet_f16 *voh, size_t n);
+void facet_smith_g1_schlick_beckmann_f16_batch(facet_f16 *out, const facet_f16 *nov, const facet_f16 *alpha,
+                                               size_t n);
+void facet_smith_vis_joint_approx_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov,
+                                            const facet_f16 *alpha, size_t n);
+void facet_diffuse_burley_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov,
+                                    const facet_f16 *loh, const facet_f16 *alpha, const facet_f16 *albedo,
+                                    size_t n);
+void facet_diffuse_oren_nayar_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov,
+                                        const facet_f16 *lov, const facet_f16 *alpha, const facet_f16 *albedo,
+                                        size_t n);
+void facet_diffuse_hammon_hybrid_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov,
+                                           const facet_f16 *lov, const facet_f16 *alpha,
+                                           const facet_f16 *albedo, size_t n);
+void facet_diffuse_hammon_cheap_f16_batch(facet_f16 *out, const facet_f16 *nol, const facet_f16 *nov,
+                                          const facet_f16 *lov, const facet_f16 *alpha,
+                                          const facet_f16 *albedo, size_t n);
 
 /* The f16 kernel table, in src/core/f16_kernels.def order (every kernel of
  * facet_kernel_at's list; f16 NULL and why set where it has no f16 form). */

@@ -151,7 +151,7 @@ FACET_INLINE float32x4_t facet_helium_getmant(float32x4_t x)
 
 #define FACET_V float32x4_t
 #define FACET_PORT_NAME helium
-#define FACET_BODY "facet/detail/f32_body.h"
+#define FACET_BODY_SAMPLES 0
 #include "facet/detail/f32_tiers.h"
 
 #endif
@@ -162,7 +162,7 @@ FACET_INLINE float32x4_t facet_helium_getmant(float32x4_t x)
 
 #define FACET_V float32x4_t
 #define FACET_PORT_NAME helium
-#define FACET_BODY "facet/detail/f32_sample_body.h"
+#define FACET_BODY_SAMPLES 1
 #include "facet/detail/f32_tiers.h"
 
 #endif

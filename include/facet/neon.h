@@ -148,7 +148,7 @@ FACET_INLINE float32x4_t facet_neon_getmant(float32x4_t x)
 
 #define FACET_V float32x4_t
 #define FACET_PORT_NAME neon
-#define FACET_BODY "facet/detail/f32_body.h"
+#define FACET_BODY_SAMPLES 0
 #include "facet/detail/f32_tiers.h"
 
 #endif
@@ -160,7 +160,7 @@ FACET_INLINE float32x4_t facet_neon_getmant(float32x4_t x)
 
 #define FACET_V float32x4_t
 #define FACET_PORT_NAME neon
-#define FACET_BODY "facet/detail/f32_sample_body.h"
+#define FACET_BODY_SAMPLES 1
 #include "facet/detail/f32_tiers.h"
 
 #endif

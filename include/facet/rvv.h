@@ -206,7 +206,7 @@ FACET_INLINE void facet_rvv_store(float *p, facet_rvv_v v, size_t vl) { FACET_RV
 
 #define FACET_V facet_rvv_v
 #define FACET_PORT_NAME rvv
-#define FACET_BODY "facet/detail/f32_body.h"
+#define FACET_BODY_SAMPLES 0
 #include "facet/detail/f32_tiers.h"
 
 #endif
@@ -217,7 +217,7 @@ FACET_INLINE void facet_rvv_store(float *p, facet_rvv_v v, size_t vl) { FACET_RV
 
 #define FACET_V facet_rvv_v
 #define FACET_PORT_NAME rvv
-#define FACET_BODY "facet/detail/f32_sample_body.h"
+#define FACET_BODY_SAMPLES 1
 #include "facet/detail/f32_tiers.h"
 
 #endif

@@ -238,7 +238,7 @@ FACET_INLINE float facet_scalar_getmant(float x)
 
 #define FACET_V float
 #define FACET_PORT_NAME scalar
-#define FACET_BODY "facet/detail/f32_body.h"
+#define FACET_BODY_SAMPLES 0
 #include "facet/detail/f32_tiers.h"
 
 #endif
@@ -253,7 +253,7 @@ FACET_INLINE float facet_scalar_getmant(float x)
 
 #define FACET_V float
 #define FACET_PORT_NAME scalar
-#define FACET_BODY "facet/detail/f32_sample_body.h"
+#define FACET_BODY_SAMPLES 1
 #include "facet/detail/f32_tiers.h"
 
 #endif

@@ -135,7 +135,7 @@ FACET_INLINE __m128 facet_sse2_getmant(__m128 x)
 
 #define FACET_V __m128
 #define FACET_PORT_NAME sse2
-#define FACET_BODY "facet/detail/f32_body.h"
+#define FACET_BODY_SAMPLES 0
 #include "facet/detail/f32_tiers.h"
 
 #endif
@@ -147,7 +147,7 @@ FACET_INLINE __m128 facet_sse2_getmant(__m128 x)
 
 #define FACET_V __m128
 #define FACET_PORT_NAME sse2
-#define FACET_BODY "facet/detail/f32_sample_body.h"
+#define FACET_BODY_SAMPLES 1
 #include "facet/detail/f32_tiers.h"
 
 #endif

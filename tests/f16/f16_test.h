@@ -110,8 +110,8 @@ static inline void f16t_batch(const facet_f16_kernel *h, size_t j, facet_f16 *ou
 static inline void f16t_domain(const char *name, double *lo, double *hi)
 {
     *hi = 1.0;
-    if (!strcmp(name, "lov")) *lo = -1.0;
-    else if (!strcmp(name, "alpha")) *lo = FACET_F16_ALPHA_MIN;
+    if (!strcmp(name, "lov") || !strcmp(name, "toh") || !strcmp(name, "boh")) *lo = -1.0;
+    else if (!strncmp(name, "alpha", 5)) *lo = FACET_F16_ALPHA_MIN; /* alpha, alpha_x, alpha_y */
     else if (!strcmp(name, "nol") || !strcmp(name, "nov")) *lo = FACET_F16_COS_MIN;
     else *lo = 0.0;
 }
@@ -142,7 +142,7 @@ static inline void f16t_inputs(smp_rng *r, const facet_kernel *k, facet_f16 *in)
     smp_inputs(r, k, f);
     for (i = 0; i < k->n_inputs; i++) {
         const char *n = k->inputs[i];
-        if ((smp_next(r) & 3) == 0 && (!strcmp(n, "nol") || !strcmp(n, "nov") || !strcmp(n, "alpha")))
+        if ((smp_next(r) & 3) == 0 && (!strcmp(n, "nol") || !strcmp(n, "nov") || !strncmp(n, "alpha", 5)))
             f[i] = (float)smp_log2u(r, -7.5, -5);
         in[i] = facet_f16_from_f32(f[i]);
     }

@@ -62,6 +62,11 @@
 #define X16_LOV_ FACET_K(x_lov)
 #define X16_POW5_Q_ FACET_K(x_pow5_q)
 #define X16_DIFFUSE_ FACET_K(x_diffuse)
+#define X16_DIFFUSE_S_ FACET_K(x_diffuse_s)
+#define X16_HALF_INV_NH_ FACET_K(x_half_inv_nh)
+#define X16_POW5_Y_ FACET_K(x_pow5_y)
+#define X16_SMITH_W_ FACET_K(x_smith_w)
+#define X16_SQRT_N_ FACET_K(x_sqrt_n)
 
 /* The NaN rule (as f32_body.h): a NaN in any input gives +0 for that
  * lane; the arithmetic runs on the clamped inputs (NaN clamps to the low
@@ -118,6 +123,39 @@ FACET_INLINE V_ FACET_K(fresnel_schlick)(V_ f0, V_ cos)
     return NAN0_(FMA_(SUB_(C_(1.0f), f), y5, f), f0, cos);
 }
 
+/* k Q(x), Q(x) = (1 - (1 - x)^5) / x = 1 + y + y^2 + y^3 + y^4 (y = 1 - x)
+ * by Horner (positive terms), k folded into the coefficients (one rounding
+ * fewer than a product after it; k a constant or a vector) */
+FACET_INLINE V_ X16_POW5_Q_(V_ x, V_ k)
+{
+    V_ y = SUB_(C_(1.0f), x);
+    V_ p = FMA_(y, k, k);
+    p = FMA_(p, y, k);
+    p = FMA_(p, y, k);
+    return FMA_(p, y, k);
+}
+
+/* (1 - c)^5 as fresnel_schlick forms it: 1 - c = yh + yl (Fast2Sum, exact),
+ * y^5 ~ yh^4 (yh + 5 yl); 4 roundings */
+FACET_INLINE V_ X16_POW5_Y_(V_ c)
+{
+    V_ yh = SUB_(C_(1.0f), c);
+    V_ yl = SUB_(SUB_(C_(1.0f), yh), c);
+    V_ y2 = MUL_(yh, yh);
+    return MUL_(MUL_(y2, y2), FMA_(C_(5.0f), yl, yh));
+}
+
+/* Schlick with f90: the convex combination f0 (1 - y^5) + f90 y^5 (y = 1 - c,
+ * as f32_body.h: f90 < f0 does not cancel), 1 - y^5 = c Q(c) (positive
+ * terms, X16_POW5_Q_ above with f0 for its constant), f0 Q(c) formed
+ * before the product with c (a subnormal c or f0 rounds once, last) */
+FACET_INLINE V_ FACET_K(fresnel_schlick_f90)(V_ f0, V_ f90, V_ voh)
+{
+    V_ c = X16_UNIT_(voh);
+    V_ q = MUL_(X16_POW5_Q_(c, X16_UNIT_(f0)), c);
+    return NAN0_(FMA_(X16_UNIT_(f90), X16_POW5_Y_(c), q), f0, f90, voh);
+}
+
 /* ---- GGX D -----------------------------------------------------------------
  * D = (alpha / (sqrt(pi) d))^2, d = (1 - n^2) + (n alpha)^2.  D goes as
  * d^-2, and d's binary16 roundings (about 3 u) would double to 6 u, so d and
@@ -134,6 +172,28 @@ FACET_INLINE V_ FACET_K(ggx_d)(V_ noh, V_ alpha)
     return NAN0_(MUL_(k, k), noh, alpha);
 }
 
+/* Anisotropic GGX, f32_body.h's form D = ax^3 ay^3 / (pi K^2),
+ * K = T.H^2 ay^2 + B.H^2 ax^2 + N.H^2 ax^2 ay^2 (terms >= 0, no 1 - N.H^2:
+ * the peak does not cancel), floored at ax^2 ay^2 / 2: in f32 lanes, from
+ * the exact binary16 inputs.  Range forces it: ax^2 ay^2 reaches 2^-28,
+ * K with it (binary16's normals end at 2^-14).  The binary16 alternative,
+ * k = K / (ax^2 ay^2) = (T.H / ax)^2 + (B.H / ay)^2 + N.H^2, takes two
+ * quotients' errors (2 u each) into squares and D = 1 / (pi ax ay k^2)
+ * doubles k's error again: about 10 u by this count (derived, not
+ * measured), past 2^-8.  In f32 the squares are exact, K has 3 roundings
+ * of 2^-24, D takes the f32 reciprocal estimate twice (2^-13 on
+ * avx512fp16) and one narrowing: about 1.3 u.  D <= 4 / (pi ax ay) < 2^15. */
+FACET_INLINE V_ FACET_K(ggx_aniso_d)(V_ noh, V_ toh, V_ boh, V_ alpha_x, V_ alpha_y)
+{
+    W_ n = WIDEN_(X16_UNIT_(noh)), t = WIDEN_(X16_LOV_(toh)), b = WIDEN_(X16_LOV_(boh));
+    W_ ax = WIDEN_(X16_ALPHA_(alpha_x)), ay = WIDEN_(X16_ALPHA_(alpha_y));
+    W_ ax2 = WMUL_(ax, ax), ay2 = WMUL_(ay, ay), a2 = WMUL_(ax2, ay2);
+    W_ k = WFMA_(WMUL_(t, t), ay2, WFMA_(WMUL_(b, b), ax2, WMUL_(WMUL_(n, n), a2)));
+    W_ r = WRCP_(WMAX_(k, WMUL_(WC_(0.5f), a2)));
+    W_ d = WMUL_(WMUL_(WMUL_(a2, WMUL_(ax, ay)), WC_(0.318309886f)), WMUL_(r, r));
+    return NAN0_(NARROW_(d), noh, toh, boh, alpha_x, alpha_y);
+}
+
 /* ---- Smith visibility -------------------------------------------------------
  * Hammon's: Vis = 0.5 / lerp(2 nl nv, nl + nv, alpha) = 0.25 / mh,
  * mh = nl nv + alpha (s/2 - nl nv) (both terms >= 0; nl nv >= 2^-14, a
@@ -144,6 +204,83 @@ FACET_INLINE V_ FACET_K(smith_vis_hammon)(V_ nol, V_ nov, V_ alpha)
     V_ p = MUL_(nl, nv);
     V_ mh = FMA_(a, SUB_(MUL_(C_(0.5f), ADD_(nl, nv)), p), p);
     return NAN0_(DIV_(C_(0.25f), mh), nol, nov, alpha);
+}
+
+/* Hammon's G2 = 2 nl nv / lerp(2 nl nv, nl + nv, alpha) = p / mh, p = nl nv,
+ * mh as smith_vis_hammon's (p >= 2^-14 normal, mh >= p) */
+FACET_INLINE V_ FACET_K(smith_g2_hammon)(V_ nol, V_ nov, V_ alpha)
+{
+    V_ nl = X16_COS_(nol), nv = X16_COS_(nov), a = X16_ALPHA_(alpha);
+    V_ p = MUL_(nl, nv);
+    V_ mh = FMA_(a, SUB_(MUL_(C_(0.5f), ADD_(nl, nv)), p), p);
+    return NAN0_(MIN_(DIV_(p, mh), C_(1.0f)), nol, nov, alpha);
+}
+
+/* ---- the rest of the G menu ---------------------------------------------------
+ * Implicit: nl nv, one rounding (nl, nv >= 2^-7: >= 2^-14, normal). */
+FACET_INLINE V_ FACET_K(g_implicit)(V_ nol, V_ nov)
+{
+    return NAN0_(MUL_(X16_COS_(nol), X16_COS_(nov)), nol, nov);
+}
+
+/* Neumann: nl nv / max(nl, nv) = min(nl, nv), exactly. */
+FACET_INLINE V_ FACET_K(g_neumann)(V_ nol, V_ nov)
+{
+    return NAN0_(MIN_(X16_COS_(nol), X16_COS_(nov)), nol, nov);
+}
+
+/* Cook-Torrance: min(1, m r), r = 2 N.H / V.H, m = min(N.L, N.V) >= 2^-7.
+ * N.H and V.H span binary16's subnormals, so both are scaled first, exactly:
+ * 2^15 N.H <= 32768 and 2^14 V.H, 0 or >= 2^-10 (a normal: the
+ * reciprocal sees [2^-10, 2^14]); r = 2^15 N.H / (2^14 V.H) overflows to
+ * +Inf only where the result is 1, and where the result is at least 2^-14
+ * r >= 2^-14 is normal (m <= 1).  V.H = 0 gives 1 (the cap of an
+ * infinite ratio, and 0/0 at N.H = 0 as f32_body.h): z = max(1 - 2^10
+ * (2^14 V.H), 0) is 1 there and 0 for every other binary16 V.H, added
+ * under the cap (no compare-and-select in the op layer).  3 roundings
+ * (the estimate, r, the fma). */
+FACET_INLINE V_ FACET_K(g_cook_torrance)(V_ nol, V_ nov, V_ noh, V_ voh)
+{
+    V_ m = MIN_(X16_COS_(nol), X16_COS_(nov));
+    V_ h = MUL_(X16_UNIT_(noh), C_(32768.0f));
+    V_ v = MUL_(X16_UNIT_(voh), C_(16384.0f));
+    V_ r = MUL_(h, RCP_(MAX_(v, C_(9.765625e-04f))));
+    V_ z = MAX_(FNMA_(v, C_(1024.0f), C_(1.0f)), C_(0.0f));
+    return NAN0_(MIN_(FMA_(m, r, z), C_(1.0f)), nol, nov, noh, voh);
+}
+
+/* Kelemen: min(1, nl nv / V.H^2), p = nl nv >= 2^-14.  The result is below
+ * 1 only where V.H^2 > p >= 2^-14, so V.H^2 is floored at 2^-14 (a normal,
+ * for the reciprocal): below it p / 2^-14 >= 1 and the cap gives 1 (within
+ * the estimate's error), V.H = 0 included.  3 roundings and the estimate. */
+FACET_INLINE V_ FACET_K(g_kelemen)(V_ nol, V_ nov, V_ voh)
+{
+    V_ p = MUL_(X16_COS_(nol), X16_COS_(nov));
+    V_ vh = X16_UNIT_(voh);
+    V_ q = MAX_(MUL_(vh, vh), C_(6.103515625e-05f));
+    return NAN0_(MIN_(DIV_(p, q), C_(1.0f)), nol, nov, voh);
+}
+
+/* Schlick's G1 for Beckmann: n / (n (1 - k) + k), k = alpha sqrt(2/pi)
+ * (<= 0.798, >= 2^-7.3: terms >= 0, the divisor normal; sqrt(2/pi) rounds
+ * to binary16 within 2^-14.5 of itself) */
+FACET_INLINE V_ FACET_K(smith_g1_schlick_beckmann)(V_ nov, V_ alpha)
+{
+    V_ n = X16_COS_(nov);
+    V_ k = MUL_(X16_ALPHA_(alpha), C_(0.797884561f));
+    V_ den = FMA_(n, SUB_(C_(1.0f), k), k);
+    return NAN0_(MIN_(DIV_(n, den), C_(1.0f)), nov, alpha);
+}
+
+/* The engines' joint form 0.5 / (nl (nv (1 - a) + a) + nv (nl (1 - a) + a))
+ * (Hammon's visibility written as Karis writes it): terms >= 0, the two
+ * products added unfused as in f32_body.h; divisor >= 2^-12 */
+FACET_INLINE V_ FACET_K(smith_vis_joint_approx)(V_ nol, V_ nov, V_ alpha)
+{
+    V_ nl = X16_COS_(nol), nv = X16_COS_(nov), a = X16_ALPHA_(alpha);
+    V_ b = SUB_(C_(1.0f), a);
+    V_ den = ADD_(MUL_(nl, FMA_(nv, b, a)), MUL_(nv, FMA_(nl, b, a)));
+    return NAN0_(DIV_(C_(0.5f), den), nol, nov, alpha);
 }
 
 /* The exact height-correlated one: 0.5 / (nv sqrt(w(nl)) + nl sqrt(w(nv))),
@@ -159,31 +296,94 @@ FACET_INLINE V_ FACET_K(smith_vis)(V_ nol, V_ nov, V_ alpha)
     return NAN0_(DIV_(C_(0.5f), den), nol, nov, alpha);
 }
 
+/* sqrt(x) for a positive normal x, within about u: s = x rsqrt(x) carries
+ * the estimate's error (up to 2^-11 + 2^-14 on avx512fp16, more on
+ * neonfp16's one step) and one rounding; one Newton correction
+ * s + (x - s^2) rsqrt(x) / 2 (x - s^2 exact in the fnma before its rounding,
+ * small against s) leaves the correction's own rounding.  Three operations
+ * more than SQRT_, where a kernel would otherwise take a root's error twice. */
+FACET_INLINE V_ X16_SQRT_N_(V_ x)
+{
+    V_ r = RSQRT_(x);
+    V_ s = MUL_(x, r);
+    return FMA_(FNMA_(s, s, x), MUL_(C_(0.5f), r), s);
+}
+
+/* The radicand of the exact Smith terms below, alpha^2 (1 - n^2) + n^2 with
+ * 1 - n^2 in one fnma (exact before its rounding: every binary16 port
+ * fuses): both terms >= 0, n^2 >= 2^-14 normal; 3 roundings at most in
+ * either term.  (smith_vis above keeps its (1 - n)(1 + n), measured.) */
+FACET_INLINE V_ X16_SMITH_W_(V_ n, V_ a2)
+{
+    return FMA_(a2, FNMA_(n, n, C_(1.0f)), MUL_(n, n));
+}
+
+/* G1 = 2n / (n + sqrt(w(n))): a sum of positive terms and a quotient
+ * (the root x rsqrt(x) of a normal, the divisor >= 2^-6) */
+FACET_INLINE V_ FACET_K(smith_g1)(V_ nov, V_ alpha)
+{
+    V_ n = X16_COS_(nov), a = X16_ALPHA_(alpha);
+    V_ r = SQRT_(X16_SMITH_W_(n, MUL_(a, a)));
+    return NAN0_(MIN_(DIV_(ADD_(n, n), ADD_(n, r)), C_(1.0f)), nov, alpha);
+}
+
+/* G2 = 2 nl nv / (nv sqrt(w(nl)) + nl sqrt(w(nv))) (= 4 nl nv Vis), the
+ * denominator >= 2 nl nv >= 2^-13 */
+FACET_INLINE V_ FACET_K(smith_g2)(V_ nol, V_ nov, V_ alpha)
+{
+    V_ nl = X16_COS_(nol), nv = X16_COS_(nov), a = X16_ALPHA_(alpha);
+    V_ a2 = MUL_(a, a);
+    V_ den = ADD_(MUL_(nv, SQRT_(X16_SMITH_W_(nl, a2))), MUL_(nl, SQRT_(X16_SMITH_W_(nv, a2))));
+    V_ p = MUL_(nl, nv);
+    return NAN0_(MIN_(DIV_(ADD_(p, p), den), C_(1.0f)), nol, nov, alpha);
+}
+
+/* G1(L) G1(V) = 4 nl nv / ((nl + sqrt(w(nl))) (nv + sqrt(w(nv)))): one
+ * quotient, its divisor >= 4 nl nv >= 2^-12 */
+FACET_INLINE V_ FACET_K(smith_g2_uncorrelated)(V_ nol, V_ nov, V_ alpha)
+{
+    V_ nl = X16_COS_(nol), nv = X16_COS_(nov), a = X16_ALPHA_(alpha);
+    V_ a2 = MUL_(a, a);
+    V_ dl = ADD_(nl, X16_SQRT_N_(X16_SMITH_W_(nl, a2)));
+    V_ dv = ADD_(nv, X16_SQRT_N_(X16_SMITH_W_(nv, a2)));
+    V_ p = MUL_(nl, nv);
+    return NAN0_(MIN_(DIV_(MUL_(C_(4.0f), p), MUL_(dl, dv)), C_(1.0f)), nol, nov, alpha);
+}
+
+/* Hammon's G1 ~ 2n / (n (2 - alpha) + alpha): positive terms, divisor >= 2^-7 */
+FACET_INLINE V_ FACET_K(smith_g1_hammon)(V_ nov, V_ alpha)
+{
+    V_ n = X16_COS_(nov), a = X16_ALPHA_(alpha);
+    V_ den = FMA_(n, SUB_(C_(2.0f), a), a);
+    return NAN0_(MIN_(DIV_(ADD_(n, n), den), C_(1.0f)), nov, alpha);
+}
+
 /* ---- Hammon's diffuse --------------------------------------------------------
- * As f32_body.h: Q(x) = 1 + y + y^2 + y^3 + y^4 (y = 1 - x) by Horner (positive
- * terms), smooth / pi = (1.05 / pi) nl nv Q(nl) Q(nv), rough from
+ * As f32_body.h: Q(x) (X16_POW5_Q_ above), smooth / pi = (1.05 / pi) nl nv Q(nl) Q(nv), rough from
  * t = max(1 + L.V, s^2 / 2) and h = 0.5 / N.H = 1 / (s rsqrt(t / 2)) >= 1/2
  * (three roundings: the rsqrt, the product, the reciprocal),
  * single = ((1 - alpha) smooth + alpha rough) / pi, multi = 0.1159 alpha,
  * diffuse = albedo (single + albedo multi): every sum of positive terms. */
-/* k Q(x), the constant folded into the Horner coefficients (one rounding
- * fewer than a product after it) */
-FACET_INLINE V_ X16_POW5_Q_(V_ x, V_ k)
+/* h = 0.5 / N.H from t and s */
+FACET_INLINE V_ X16_HALF_INV_NH_(V_ t, V_ s)
 {
-    V_ y = SUB_(C_(1.0f), x);
-    V_ p = FMA_(y, k, k);
-    p = FMA_(p, y, k);
-    p = FMA_(p, y, k);
-    return FMA_(p, y, k);
+    return MAX_(RCP_(MUL_(s, RSQRT_(MUL_(C_(0.5f), t)))), C_(0.5f));
 }
 
-FACET_INLINE V_ X16_DIFFUSE_(V_ nl, V_ nv, V_ t, V_ s, V_ a, V_ alb)
+/* the diffuse from h, t and smooth / pi (Hammon's and his variants') */
+FACET_INLINE V_ X16_DIFFUSE_S_(V_ h, V_ t, V_ a, V_ alb, V_ smooth)
 {
-    V_ h = MAX_(RCP_(MUL_(s, RSQRT_(MUL_(C_(0.5f), t)))), C_(0.5f));
-    V_ smooth = MUL_(MUL_(nl, nv), MUL_(X16_POW5_Q_(nl, C_(1.0f)), X16_POW5_Q_(nv, C_(0.334225380f))));
     V_ ar = MUL_(MUL_(a, t), FNMA_(C_(0.0318309886f), t, C_(0.143239449f)));
     V_ single = FMA_(ar, h, FMA_(SUB_(C_(1.0f), a), smooth, ar));
     return MUL_(alb, FMA_(alb, MUL_(C_(0.1159f), a), single));
+}
+
+/* (h first, then smooth: the order the Helium table's counts were taken in) */
+FACET_INLINE V_ X16_DIFFUSE_(V_ nl, V_ nv, V_ t, V_ s, V_ a, V_ alb)
+{
+    V_ h = X16_HALF_INV_NH_(t, s);
+    V_ smooth = MUL_(MUL_(nl, nv), MUL_(X16_POW5_Q_(nl, C_(1.0f)), X16_POW5_Q_(nv, C_(0.334225380f))));
+    return X16_DIFFUSE_S_(h, t, a, alb, smooth);
 }
 
 FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
@@ -192,6 +392,72 @@ FACET_INLINE V_ FACET_K(diffuse_hammon)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ alb
     V_ s = ADD_(nl, nv);
     V_ t = MAX_(ADD_(C_(1.0f), X16_LOV_(lov)), MUL_(C_(0.5f), MUL_(s, s)));
     V_ d = X16_DIFFUSE_(nl, nv, t, s, X16_ALPHA_(alpha), X16_UNIT_(albedo));
+    return NAN0_(d, nol, nov, lov, alpha, albedo);
+}
+
+/* Hammon's variants (f32_body.h's X_DIFFUSE_VARIANT_: diffuse_hammon's
+ * rough, single and multi with another smooth term), on diffuse_hammon's
+ * binary16 body.  The hybrid's smooth (1 - y_l^5 / 2)(1 - y_v^5 / 2) takes
+ * each factor as 1/2 + (n / 2) Q(n) (1 - y^5 = n Q(n)): two positive terms,
+ * where 1 - y^5 / 2 from a rounded y^5 would carry y^5's four roundings at
+ * full weight next to N.L = 0; 1/pi folded into the second's constants. */
+FACET_INLINE V_ FACET_K(diffuse_hammon_hybrid)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
+{
+    V_ nl = X16_COS_(nol), nv = X16_COS_(nov);
+    V_ s = ADD_(nl, nv);
+    V_ t = MAX_(ADD_(C_(1.0f), X16_LOV_(lov)), MUL_(C_(0.5f), MUL_(s, s)));
+    V_ fl = FMA_(nl, X16_POW5_Q_(nl, C_(0.5f)), C_(0.5f));
+    V_ fv = FMA_(nv, X16_POW5_Q_(nv, C_(0.159154943f)), C_(0.159154943f)); /* 0.5 / pi */
+    V_ d = X16_DIFFUSE_S_(X16_HALF_INV_NH_(t, s), t, X16_ALPHA_(alpha), X16_UNIT_(albedo), MUL_(fl, fv));
+    return NAN0_(d, nol, nov, lov, alpha, albedo);
+}
+
+/* Hammon's cheaper variant: smooth = 1 (Lambert), 1/pi as a constant */
+FACET_INLINE V_ FACET_K(diffuse_hammon_cheap)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
+{
+    V_ nl = X16_COS_(nol), nv = X16_COS_(nov);
+    V_ s = ADD_(nl, nv);
+    V_ t = MAX_(ADD_(C_(1.0f), X16_LOV_(lov)), MUL_(C_(0.5f), MUL_(s, s)));
+    V_ d = X16_DIFFUSE_S_(X16_HALF_INV_NH_(t, s), t, X16_ALPHA_(alpha), X16_UNIT_(albedo),
+                            C_(0.318309886f));
+    return NAN0_(d, nol, nov, lov, alpha, albedo);
+}
+
+/* Burley's diffuse: albedo / pi fl fv, each factor
+ * 1 + (f_d90 - 1) y^5 = (1 - y^5 / 2) + g y^5,  g = 2 sqrt(alpha) L.H^2 >= 0
+ * (f_d90 - 1 = g - 1/2 would cancel): two positive terms, the first as the
+ * hybrid's, y^5 as fresnel_schlick's. */
+FACET_INLINE V_ FACET_K(diffuse_burley)(V_ nol, V_ nov, V_ loh, V_ alpha, V_ albedo)
+{
+    V_ nl = X16_COS_(nol), nv = X16_COS_(nov), lh = X16_UNIT_(loh);
+    V_ g = MUL_(MUL_(lh, lh), MUL_(C_(2.0f), X16_SQRT_N_(X16_ALPHA_(alpha))));
+    V_ fl = FMA_(g, X16_POW5_Y_(nl), FMA_(nl, X16_POW5_Q_(nl, C_(0.5f)), C_(0.5f)));
+    V_ fv = FMA_(MUL_(g, C_(0.318309886f)), X16_POW5_Y_(nv),
+                 FMA_(nv, X16_POW5_Q_(nv, C_(0.159154943f)), C_(0.159154943f))); /* / pi */
+    V_ d = MUL_(X16_UNIT_(albedo), MUL_(fl, fv));
+    return NAN0_(d, nol, nov, loh, alpha, albedo);
+}
+
+/* Oren-Nayar (f32_body.h: A + B max(0, L.V - N.L N.V) / max(N.L, N.V), with
+ * sigma^2 = alpha^2 / 4), its constants rescaled for binary16 (0.33, 0.09 and
+ * 0.45 round there by up to 0.9 u): with Q = alpha^2 (>= 2^-14, normal),
+ *   A = h1 / u1,  u1 = 1 + Q / 1.32,  h1 = 1 + Q / 2.64,
+ *   B = 1.25 Q / u2,  u2 = 1 + Q / 0.36,
+ *   pi f / albedo = (h1 w + 1.25 Q u1 x) / (u1 w),  w = u2 m,
+ * x = max(L.V - N.L N.V, 0) (one fnma), m = max(N.L, N.V) >= 2^-7:
+ * positive terms, one quotient, 1/pi folded into the numerator's constants.
+ * 1/1.32 and 1/0.36 round within 0.7 u of themselves, which moves A and B
+ * by 0.1 u and 0.3 u; 1/pi's binary16 is 0.32 u high (as lambert's). */
+FACET_INLINE V_ FACET_K(diffuse_oren_nayar)(V_ nol, V_ nov, V_ lov, V_ alpha, V_ albedo)
+{
+    V_ nl = X16_COS_(nol), nv = X16_COS_(nov), a = X16_ALPHA_(alpha);
+    V_ q = MUL_(a, a);
+    V_ x = MAX_(FNMA_(nl, nv, X16_LOV_(lov)), C_(0.0f));
+    V_ u1 = FMA_(C_(0.757575758f), q, C_(1.0f));
+    V_ h1 = FMA_(C_(0.120571927f), q, C_(0.318309886f)); /* h1 / pi */
+    V_ w = MUL_(FMA_(C_(2.77777778f), q, C_(1.0f)), MAX_(nl, nv));
+    V_ num = FMA_(MUL_(MUL_(C_(0.397887358f), q), u1), x, MUL_(h1, w)); /* / pi */
+    V_ d = MUL_(X16_UNIT_(albedo), DIV_(num, MUL_(u1, w)));
     return NAN0_(d, nol, nov, lov, alpha, albedo);
 }
 
@@ -293,6 +559,11 @@ FACET_INLINE V_ FACET_K(lambert)(V_ albedo)
 #undef X16_LOV_
 #undef X16_POW5_Q_
 #undef X16_DIFFUSE_
+#undef X16_DIFFUSE_S_
+#undef X16_HALF_INV_NH_
+#undef X16_POW5_Y_
+#undef X16_SMITH_W_
+#undef X16_SQRT_N_
 #undef NAN0_
 #undef NAN0_SEL_
 #undef NAN0_1_
