@@ -105,9 +105,17 @@
  * same figures at each: a lane's arithmetic does not depend on VLEN), within
  * every bound: noh 1.54e-3, loh 1.08e-3, fresnel_schlick 2.13e-3, ggx_d
  * 1.44e-3, smith_vis 2.11e-3, smith_vis_hammon 1.61e-3, diffuse_hammon
- * 3.82e-3, brdf_hammon 3.58e-3, lambert 6.28e-4 (the dispatcher refuses it
- * there, qemu-user 7.2 having no riscv_hwprobe: tests/suites/54-rvv.sh runs
- * the table itself, FACET_TEST_F16_FORCE).
+ * 3.82e-3, brdf_hammon 3.58e-3, lambert 6.28e-4, and for the kernels given
+ * an f16 form with issue 22 item 1 (VLEN 128): fresnel_schlick_f90 2.15e-3,
+ * ggx_aniso_d 5.37e-4, smith_g1 1.86e-3, smith_g2 2.21e-3,
+ * smith_g2_uncorrelated 2.80e-3, smith_g1_hammon 1.24e-3, smith_g2_hammon
+ * 2.09e-3, g_implicit 4.88e-4, g_neumann 0, g_cook_torrance 1.33e-3,
+ * g_kelemen 1.51e-3, smith_g1_schlick_beckmann 1.45e-3,
+ * smith_vis_joint_approx 1.52e-3, diffuse_burley 3.09e-3,
+ * diffuse_oren_nayar 2.56e-3, diffuse_hammon_hybrid 2.96e-3,
+ * diffuse_hammon_cheap 3.08e-3 (the dispatcher refuses it there, qemu-user
+ * 7.2 having no riscv_hwprobe: tests/suites/54-rvv.sh runs the table
+ * itself, FACET_TEST_F16_FORCE).
  * The kernels given an f16 form
  * with issue 22 item 1 (fresnel_schlick_f90 to diffuse_hammon_cheap below)
  * were measured by the same runs (2026-12-07; neonfp16 over 1,000,000):
@@ -129,16 +137,16 @@
  * Speed on the Arm ports (ports/README.md, "Binary16"): f16 against f32
  * 1.7x to 2.3x in instructions, 1.8x to 2.5x in cycles on Helium
  * (Cortex-M55: qemu instructions, llvm-mca-16 cycles; ggx_aniso_d, all
- * f32 lanes, 1.20x) and 2.3x to 3.6x on NEON (llvm-mca's Cortex-A55 model;
- * the nine kernels its table counts) for the
+ * f32 lanes, 1.20x) and 2.2x to 3.6x on NEON (llvm-mca's Cortex-A55 model;
+ * ggx_aniso_d 2.09x) for the
  * binary16-only kernels; brdf_hammon 1.79x on NEON (target 1.7x: met on the
  * A55 model) but 1.14x / 1.21x on Helium (target missed: its f32-lane part
  * costs what binary16 saves, and on MVE's 8 Q registers the f32 lanes
  * spill).  RISC-V Vector with Zvfh (rvvfp16, facet/rvvfp16.h: qemu
  * instructions per sample, VLEN 128 / 256 / 512): the binary16-only
  * kernels execute 1.6x to 2.4x fewer than the rvv f32 port, brdf_hammon
- * 1.42x / 1.40x / 1.36x (target 1.7x: missed; its f32 lanes are LMUL 2
- * groups).
+ * 1.42x / 1.40x / 1.36x (short of the 1.7x asked of NEON and Helium: its
+ * f32 lanes are LMUL 2 groups).
  *
  * Ways in: facet_<kernel>_f16 (one sample, the scalar port),
  * facet_<kernel>_f16_batch (any count, any alignment, out may be an input:
