@@ -54,6 +54,7 @@ const browser_path = process.env.FACET_CHROMIUM || '/usr/bin/chromium';
         headless: true,
         userDataDir: profile,
         protocolTimeout: 0, // no time limit on a protocol call: the watchdog is the only one
+        timeout: 0, // nor on the browser's start (puppeteer's default is 30 s: a loaded machine exceeds it)
         args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
                '--disable-background-networking', '--disable-component-update', '--disable-sync',
                '--disable-default-apps', '--hide-scrollbars', '--window-size=1280,4000'],
