@@ -45,6 +45,13 @@ BENCH_REPORT_OBJ  := $(patsubst %,$(BUILD)/bench/report/%.o,report data doc doc_
                      sec_choose sec_clock sec_pareto sec_image sec_furnace sec_model sec_pictures sec_samplers \
                      sec_arm sec_wcet sec_rtl sec_raster sec_targets sec_speed sec_kernels symbols pictures png image_error geom)
 BENCH_OBJ := $(BUILD)/bench/facet_bench.o $(BENCH_HARNESS_OBJ) $(BENCH_REPORT_OBJ) $(BENCH_RASTER_OBJ)
+# x86-64: the binary16 shader-style peer (bench/f16/peer_f16_shader.c, its
+# rule in bench/f16.mk: -march=sapphirerapids -ffast-math) joins the speed
+# rounds beside the avx512fp16 table, called only where the CPU runs that
+ifneq ($(filter x86_64%,$(BENCH_TARGET)),)
+BENCH_OBJ += $(BUILD)/bench/f16/peer_f16_shader.o
+$(BUILD)/bench/harness/speed_bench.o: BENCH_FLAGS += -DBENCH_F16_PEER
+endif
 
 TEST_BIN    += $(BUILD)/tests/test_bench
 EXTRA_TESTS += $(BUILD)/facet-bench

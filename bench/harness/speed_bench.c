@@ -18,7 +18,11 @@
  * through the dispatcher with that port active (set outside the timed call);
  * its error in facet/f16.h's measure at those binary16 inputs, clamped to
  * the f16 domain; no peak set (the peak set's alpha lies below the f16
- * floor 2^-7). */
+ * floor 2^-7).  Beside it, where this build has it (BENCH_F16_PEER: x86-64,
+ * bench/f16.mk), the binary16 shader-style transcription
+ * (bench/f16/peer_f16_shader.c, port "shader_f16_fm", tier "peer", width
+ * the same port) on the same binary16 inputs, judged by the same measure
+ * (an Inf result is an infinite error). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -32,6 +36,9 @@
 #include "peers.h"
 #include "facet_bench.h"
 #include "speed.h"
+#ifdef BENCH_F16_PEER
+#include "f16/f16_peer.h"
+#endif
 
 
 #define MAX_ROUNDS SPEED_MAX_ROUNDS
@@ -60,6 +67,7 @@ typedef struct entry {
     peer_term_fn peer;          /* peer: the loop */
     const facet_f16_kernel *h;  /* f16: the kernel, run through the dispatcher with port `via` active */
     const char *via;
+    void (*hpeer)(uint16_t *out, const uint16_t *const *in, size_t n); /* the binary16 peer */
     double t[MAX_ROUNDS];
     double min, median, err, err_peak;
 } entry;
@@ -79,6 +87,8 @@ static void run(entry *e, size_t ki, float *out, const float *const *in, size_t 
         calls_[ki](e->tab, out, in, n);
     else if (e->h)
         e->h->f16_batch(hout_, (const facet_f16 *const *)hin_, n);
+    else if (e->hpeer)
+        e->hpeer(hout_, (const uint16_t *const *)hin_, n);
     else
         e->peer(out, in, n);
 }
@@ -87,11 +97,15 @@ static double max_err(entry *e, size_t ki, float *out, const float *const *in, c
 {
     size_t i;
     double m = 0;
-    if (e->h) { /* f16: facet/f16.h's measure at the binary16 inputs */
+    if (e->h || e->hpeer) { /* f16: facet/f16.h's measure at the binary16 inputs */
         const facet_kernel *k = facet_kernel_at(ki);
         int j;
-        facet_set_port(e->via);
-        e->h->f16_batch(hout_, (const facet_f16 *const *)hin_, n);
+        if (e->h) {
+            facet_set_port(e->via);
+            e->h->f16_batch(hout_, (const facet_f16 *const *)hin_, n);
+        } else {
+            e->hpeer(hout_, (const uint16_t *const *)hin_, n);
+        }
         for (i = 0; i < n; i++) {
             double dv[FACET_MAX_INPUTS], got = facet_f32_from_f16(hout_[i]), d;
             for (j = 0; j < k->n_inputs; j++)
@@ -210,6 +224,7 @@ int speed_run(const char *only, int rounds, size_t n, speed_sink sink, void *ctx
             e[ne + 1].tab = ports[p].fast;
             e[ne].peer = e[ne + 1].peer = NULL;
             e[ne].h = e[ne + 1].h = NULL;
+            e[ne].hpeer = e[ne + 1].hpeer = NULL;
             ne += 2;
             /* the port's own f16 table, if its line has one and this CPU runs it */
             {
@@ -223,8 +238,25 @@ int speed_run(const char *only, int rounds, size_t n, speed_sink sink, void *ctx
                     e[ne].tab = NULL;
                     e[ne].peer = NULL;
                     e[ne].h = h;
+                    e[ne].hpeer = NULL;
                     e[ne].via = ports[p].name;
                     ne++;
+#ifdef BENCH_F16_PEER
+                    /* the binary16 transcription, where it runs: the same
+                     * CPU feature as the avx512fp16 table */
+                    for (j = 0; f16_peer_shader[j].name && ne < MAX_ENTRIES; j++)
+                        if (!strcmp(hn, "avx512fp16") && !strcmp(f16_peer_shader[j].name, k->name)) {
+                            e[ne].port = "shader_f16_fm";
+                            e[ne].width = ports[p].name;
+                            e[ne].tier = "peer";
+                            e[ne].tab = NULL;
+                            e[ne].peer = NULL;
+                            e[ne].h = NULL;
+                            e[ne].hpeer = f16_peer_shader[j].fn;
+                            e[ne].via = ports[p].name;
+                            ne++;
+                        }
+#endif
                 }
             }
         }
@@ -238,6 +270,7 @@ int speed_run(const char *only, int rounds, size_t n, speed_sink sink, void *ctx
             e[ne].tab = NULL;
             e[ne].peer = fn;
             e[ne].h = NULL;
+            e[ne].hpeer = NULL;
             ne++;
         }
         /* the active port matters to the f16 entries alone: set when it
@@ -247,7 +280,7 @@ int speed_run(const char *only, int rounds, size_t n, speed_sink sink, void *ctx
         via = NULL;
         for (i = 0; i < ne; i++) {
             e[i].err = max_err(&e[i], ki, out, (const float *const *)in, want, n);
-            e[i].err_peak = two_cos && !e[i].h ? max_err(&e[i], ki, out, (const float *const *)pin, pwant, n) : NAN;
+            e[i].err_peak = two_cos && !e[i].h && !e[i].hpeer ? max_err(&e[i], ki, out, (const float *const *)pin, pwant, n) : NAN;
             if (e[i].h)
                 facet_set_port(via = e[i].via);
             run(&e[i], ki, out, (const float *const *)in, n); /* warm-up */

@@ -18,6 +18,8 @@
  * fast tier is another formulation (its Budget line differs) */
 #define T_BRDF_FAST_F32 1.3
 #define T_FAST_F32 1.15
+#define T_BRDF_F16_F32 2.5  /* issue 22: f16 brdf_hammon against f32 precise, AVX-512 FP16 */
+#define T_BRDF_F16_PEER 0.6 /* and against the binary16 transcription */
 
 typedef struct budget {
     int ok, f32, fast; /* total operations of each tier (clamps + NaN + peak + term) */
@@ -144,29 +146,45 @@ static void f16_table(report *r, report_data *D)
              "active, set outside the timed call) is one more entry of each kernel's rounds, on the same inputs "
              "rounded to binary16 (2 bytes a value in and out, where f32 moves 4). Ratios of minima: above 1 the "
              "f16 batch is faster. Max err f16: facet/f16.h's measure (relative to max(|value|, 2^-14)) at those "
-             "binary16 inputs clamped to the f16 domain, against the bound FACET_ERR_<NAME>_F16.");
-    doc_table(r->doc, 8, "kernel", "f16 table (width)", "f16 min (med)", "f32 min (med)", "f32_fast min (med)",
-              "f32 / f16", "f32_fast / f16", "max err f16 (bound)");
+             "binary16 inputs clamped to the f16 domain, against the bound FACET_ERR_<NAME>_F16. <b>f16 fm "
+             "peer</b> = shader_f16_fm: the shader-style transcription in _Float16 (bench/f16/peer_f16_shader.c, "
+             "-O3 -march=sapphirerapids -mprefer-vector-width=512 -ffast-math: 32 binary16 lanes, no exact peak, "
+             "no NaN rule, no saturation) on the same binary16 inputs, in the same rounds, its error in the same "
+             "measure (inf: it returns Inf on some of them; build/facet-f16-bench counts how many). Targets "
+             "(issue 22): brdf_hammon f16 >= 2.5x f32 and >= 0.6x the f16 fm peer.");
+    doc_table(r->doc, 10, "kernel", "f16 table (width)", "f16 min (med)", "f32 min (med)", "f32_fast min (med)",
+              "f16 fm peer min (med)", "f32 / f16", "f32_fast / f16", "f16 fm peer / f16",
+              "max err f16 (bound) / f16 fm peer");
     for (ki = 0; ki < facet_kernel_count(); ki++) {
         const char *kn = facet_kernel_at(ki)->name;
         const facet_f16_kernel *h = facet_f16_kernel_find(kn);
         for (i = 0; i < D->n_speed; i++) {
-            const data_speed *x = &D->speed[i], *f, *ff;
-            char b[8][96], e[32];
-            const char *cells[8];
+            const data_speed *x = &D->speed[i], *f, *ff, *pe;
+            char b[10][96], e[32], ep[32];
+            const char *cells[10];
+            int brdf = !strcmp(kn, "brdf_hammon");
             if (strcmp(x->kernel, kn) || strcmp(x->tier, "f16"))
                 continue;
             f = data_speed_of(D, kn, x->width, "f32");
             ff = data_speed_of(D, kn, x->width, "f32_fast");
+            pe = data_speed_of(D, kn, "shader_f16_fm", "peer");
+            if (pe && strcmp(pe->width, x->width))
+                pe = NULL;
             cells[0] = kn;
             cells[1] = report_fmt(b[1], sizeof b[1], "%s (%s)", x->port, x->width);
             cells[2] = ticks_cell(b[2], sizeof b[2], x);
             cells[3] = ticks_cell(b[3], sizeof b[3], f);
             cells[4] = ticks_cell(b[4], sizeof b[4], ff);
-            cells[5] = ratio_cell(b[5], sizeof b[5], f, x, 0);
-            cells[6] = ratio_cell(b[6], sizeof b[6], ff, x, 0);
+            cells[5] = ticks_cell(b[5], sizeof b[5], pe);
+            cells[6] = ratio_cell(b[6], sizeof b[6], f, x, brdf ? T_BRDF_F16_F32 : 0);
+            cells[7] = ratio_cell(b[7], sizeof b[7], ff, x, 0);
+            cells[8] = ratio_cell(b[8], sizeof b[8], pe, x, brdf ? T_BRDF_F16_PEER : 0);
             report_g3(e, x->err);
-            cells[7] = h ? report_fmt(b[7], sizeof b[7], "%s (%.3g)", e, h->err_f16) : e;
+            report_g3(ep, pe ? pe->err : -1);
+            if (h)
+                cells[9] = report_fmt(b[9], sizeof b[9], "%s (%.3g) / %s", e, h->err_f16, pe ? ep : "-");
+            else
+                cells[9] = report_fmt(b[9], sizeof b[9], "%s / %s", e, pe ? ep : "-");
             doc_row(r->doc, cells);
             rows++;
         }
