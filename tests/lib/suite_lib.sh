@@ -38,3 +38,32 @@ run_one() {
         echo "ERROR $label: $* exited with status $rc"
     fi
 }
+
+# doc_rows_miss DOC ROWS: prints the first line of the file ROWS that does
+# not occur in DOC (status 1), or nothing (status 0)
+doc_rows_miss() {
+    while IFS= read -r r; do grep -qF -- "$r" "$1" || { printf '%s\n' "$r"; return 1; }; done < "$2"
+}
+
+# doc_rows LABEL TABLE ROWS BREAK ROW BROKEN: the measured table rows in
+# the file ROWS must each occur in ports/README.md's TABLE, and must not all
+# occur in a copy (written to BROKEN) whose ROW row has a figure changed by
+# the sed expression BREAK (so the comparison can fail).  Prints
+# "FAIL LABEL: ..." for each failure and returns their count (0, 1 or 2 of
+# the 2 checks).
+doc_rows() {
+    doc_rows_fails=0
+    if ! doc_rows_m=$(doc_rows_miss ports/README.md "$3"); then
+        doc_rows_fails=$((doc_rows_fails + 1))
+        echo "FAIL $1: ports/README.md's $2 lacks the measured row: $doc_rows_m"
+    fi
+    sed "$4" ports/README.md > "$6"
+    if cmp -s ports/README.md "$6"; then
+        doc_rows_fails=$((doc_rows_fails + 1))
+        echo "FAIL $1: self-test: no $5 row to break"
+    elif doc_rows_miss "$6" "$3" > /dev/null; then
+        doc_rows_fails=$((doc_rows_fails + 1))
+        echo "FAIL $1: self-test: a changed figure passes the comparison"
+    fi
+    return $doc_rows_fails
+}
