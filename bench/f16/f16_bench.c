@@ -45,7 +45,7 @@ int main(int argc, char **argv)
     for (ki = 0; ki < facet_f16_kernel_count(); ki++) {
         const facet_f16_kernel *h = facet_f16_kernel_at(ki);
         const facet_kernel *k = facet_kernel_find(h->name);
-        const f16_peer_entry *pe = NULL;
+        const f16_peer_entry *pe = f16_peer_find(h->name);
         const float *fp[FACET_MAX_INPUTS];
         const facet_f16 *hp[FACET_MAX_INPUTS];
         double t[4][ROUNDS_], med[4];
@@ -54,9 +54,6 @@ int main(int argc, char **argv)
         long s;
         if (!h->f16 || !k)
             continue;
-        for (i = 0; f16_peer_shader[i].name; i++)
-            if (!strcmp(f16_peer_shader[i].name, h->name))
-                pe = &f16_peer_shader[i];
         r.s = 42;
         for (s = 0; s < N_; s++) {
             facet_f16 x[FACET_MAX_INPUTS];
@@ -100,13 +97,10 @@ int main(int argc, char **argv)
     for (ki = 0; ki < facet_f16_kernel_count(); ki++) {
         const facet_f16_kernel *h = facet_f16_kernel_at(ki);
         const facet_kernel *k = facet_kernel_find(h->name);
-        const f16_peer_entry *pe = NULL;
+        const f16_peer_entry *pe = f16_peer_find(h->name);
         int i, v;
         if (!h->f16 || !k)
             continue;
-        for (i = 0; f16_peer_shader[i].name; i++)
-            if (!strcmp(f16_peer_shader[i].name, h->name))
-                pe = &f16_peer_shader[i];
         for (v = 0; v < 2; v++) {
             smp_rng r;
             long s, inf = 0, over = 0, total = 200000;

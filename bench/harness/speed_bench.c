@@ -244,18 +244,20 @@ int speed_run(const char *only, int rounds, size_t n, speed_sink sink, void *ctx
 #ifdef BENCH_F16_PEER
                     /* the binary16 transcription, where it runs: the same
                      * CPU feature as the avx512fp16 table */
-                    for (j = 0; f16_peer_shader[j].name && ne < MAX_ENTRIES; j++)
-                        if (!strcmp(hn, "avx512fp16") && !strcmp(f16_peer_shader[j].name, k->name)) {
+                    {
+                        const f16_peer_entry *pe = f16_peer_find(k->name);
+                        if (pe && !strcmp(hn, "avx512fp16") && ne < MAX_ENTRIES) {
                             e[ne].port = "shader_f16_fm";
                             e[ne].width = ports[p].name;
                             e[ne].tier = "peer";
                             e[ne].tab = NULL;
                             e[ne].peer = NULL;
                             e[ne].h = NULL;
-                            e[ne].hpeer = f16_peer_shader[j].fn;
+                            e[ne].hpeer = pe->fn;
                             e[ne].via = ports[p].name;
                             ne++;
                         }
+                    }
 #endif
                 }
             }
